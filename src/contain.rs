@@ -1,0 +1,194 @@
+//! Paper A §II.B–§II.E: is the point s definitely outside the polygon P?
+
+use crate::polygon::VertexSeq;
+use crate::predicates as pr;
+use crate::quad::quad_min_le_d;
+use crate::vect2::Vect2;
+
+/// Paper A §II.B: vertex i of P*_BUFF. A vertex with p_y ≥ s_y − BUFF and
+/// |p_x − s_x| ≤ BUFF moves to p − (2·BUFF, 0); any other stays.
+///
+/// The OCR'd text lost both minus signs ("s_y BUFF", "p(i) (2BUFF, 0)"). Moving left by
+/// 2·BUFF puts the vertex at x ≤ s_x − BUFF < s_x, off the upward ray, as §II.D needs.
+#[inline(always)]
+pub fn perturb(p: Vect2, s: Vect2, buff: f64) -> Vect2 {
+    if pr::perturbs(p, s, buff) {
+        Vect2::new(p.x - 2.0 * buff, p.y)
+    } else {
+        p
+    }
+}
+
+/// Paper A §II.B: the perturbed polygon P*_BUFF, computed vertex by vertex on access.
+#[derive(Clone, Copy, Debug)]
+pub struct Perturbed<P> {
+    pub poly: P,
+    pub s: Vect2,
+    pub buff: f64,
+}
+
+impl<P: VertexSeq> VertexSeq for Perturbed<P> {
+    #[inline(always)]
+    fn count(&self) -> usize {
+        self.poly.count()
+    }
+    #[inline(always)]
+    fn vertex(&self, i: usize) -> Vect2 {
+        perturb(self.poly.vertex(i), self.s, self.buff)
+    }
+}
+
+/// Paper A §II.C near_edge: is s closer than BUFF to some point of the segment p_i p_j?
+///
+/// ‖p_i + r(p_j − p_i) − s‖² = (p_j − p_i)²·r² + 2(p_i − s)·(p_j − p_i)·r + (p_i − s)²,
+/// a quadratic in r handed to quad_min_le_D with D = BUFF².
+#[inline]
+pub fn near_edge(pi: Vect2, pj: Vect2, s: Vect2, buff: f64) -> bool {
+    if pr::within_buff(pi, s, buff) || pr::within_buff(pj, s, buff) {
+        return true;
+    }
+    if pr::distinct(pi, pj) {
+        let e = pj - pi;
+        let w = pi - s;
+        return quad_min_le_d(e.sq(), 2.0 * w.dot(e), w.sq(), buff * buff);
+    }
+    false
+}
+
+/// Paper A §II.D: does edge p_i→p_j cross the upward ray {(s_x, s_y + z) : z ≥ 0}?
+///
+/// The printed rules read "p_ix ≥ s_x and p_ix ≥ s_x" (the j was lost): an edge whose
+/// ends are both at or right of s_x, or both left of it, does not cross. Otherwise the
+/// ends straddle x = s_x (so p_jx ≠ p_ix) and the crossing height z ≥ 0 is
+/// (p_jx − p_ix)·((s − p_i)·(p_j − p_i)⊥) ≥ 0.
+#[inline(always)]
+pub fn edge_crosses_ray(pi: Vect2, pj: Vect2, s: Vect2) -> bool {
+    let ri = pr::at_or_right_of(pi, s);
+    let rj = pr::at_or_right_of(pj, s);
+    ri != rj && pr::ray_crosses(pi, pj, s)
+}
+
+/// Paper A §II.D num_cross: how many edges of P cross the upward ray from s.
+/// P is assumed perturbed (no vertex on the ray), as the paper requires.
+#[inline]
+pub fn num_cross<P: VertexSeq + ?Sized>(p: &P, s: Vect2) -> usize {
+    let n = p.count();
+    let mut count = 0;
+    for i in 0..n {
+        if edge_crosses_ray(p.vertex(i), p.vertex(p.next(i)), s) {
+            count += 1;
+        }
+    }
+    count
+}
+
+/// Paper A §II.E definitely_outside: s is farther than BUFF from every edge of P and of
+/// P*_BUFF, and the ray from s crosses P*_BUFF an even number of times.
+///
+/// One pass does steps 2–4: an edge of P*_BUFF whose two ends were not perturbed is the
+/// same edge of P, so its near_edge test is not repeated.
+#[inline]
+pub fn definitely_outside<P: VertexSeq + ?Sized>(p: &P, s: Vect2, buff: f64) -> bool {
+    let n = p.count();
+    if n == 0 {
+        return true;
+    }
+    let mut crossings = 0usize;
+    let first = p.vertex(0);
+    let first_star = perturb(first, s, buff);
+    let mut a = first;
+    let mut a_star = first_star;
+    for i in 0..n {
+        let (b, b_star) = if i + 1 == n {
+            (first, first_star)
+        } else {
+            let b = p.vertex(i + 1);
+            (b, perturb(b, s, buff))
+        };
+        if near_edge(a, b, s, buff) {
+            return false;
+        }
+        if (a_star != a || b_star != b) && near_edge(a_star, b_star, s, buff) {
+            return false;
+        }
+        if edge_crosses_ray(a_star, b_star, s) {
+            crossings += 1;
+        }
+        a = b;
+        a_star = b_star;
+    }
+    crossings % 2 == 0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::contain::Perturbed;
+
+    fn v(x: f64, y: f64) -> Vect2 {
+        Vect2::new(x, y)
+    }
+    const SQUARE: [Vect2; 4] = [
+        Vect2::new(0.0, 0.0),
+        Vect2::new(4.0, 0.0),
+        Vect2::new(4.0, 4.0),
+        Vect2::new(0.0, 4.0),
+    ];
+
+    #[test]
+    fn perturb_moves_only_vertices_near_the_ray() {
+        let s = v(1.0, 1.0);
+        // |0 − 1| ≤ 1 and 4 ≥ 1 − 1: moved to (0 − 2, 4).
+        assert_eq!(perturb(v(0.0, 4.0), s, 1.0), v(-2.0, 4.0));
+        // Exactly at both thresholds (|x − s_x| = BUFF, y = s_y − BUFF): moved.
+        assert_eq!(perturb(v(2.0, 0.0), s, 1.0), v(0.0, 0.0));
+        // Below s_y − BUFF: stays.
+        assert_eq!(perturb(v(1.0, -0.5), s, 1.0), v(1.0, -0.5));
+        // Farther than BUFF in x: stays.
+        assert_eq!(perturb(v(2.5, 9.0), s, 1.0), v(2.5, 9.0));
+    }
+
+    #[test]
+    fn near_edge_is_strict_at_exactly_buff() {
+        // s = (2, 1) is exactly 1 from the edge (0,0)-(4,0): not nearer than BUFF = 1.
+        assert!(!near_edge(v(0.0, 0.0), v(4.0, 0.0), v(2.0, 1.0), 1.0));
+        assert!(near_edge(v(0.0, 0.0), v(4.0, 0.0), v(2.0, 0.75), 1.0));
+        // Beyond the end: distance to (4,0) from (4.5, 0.5) is √0.5 ≈ 0.707.
+        assert!(near_edge(v(0.0, 0.0), v(4.0, 0.0), v(4.5, 0.5), 0.75));
+        assert!(!near_edge(v(0.0, 0.0), v(4.0, 0.0), v(4.5, 0.5), 0.5));
+        // Degenerate segment p_i = p_j: only the end test applies.
+        assert!(!near_edge(v(1.0, 1.0), v(1.0, 1.0), v(1.0, 2.0), 1.0));
+        assert!(near_edge(v(1.0, 1.0), v(1.0, 1.0), v(1.0, 1.5), 1.0));
+    }
+
+    #[test]
+    fn ray_through_a_vertex_before_and_after_perturbation() {
+        // Triangle with apex (2, 4) straight above s = (2, 1): the ray passes exactly
+        // through the apex. Unperturbed: (0,0)→(4,0) straddles x = 2 but lies below s
+        // (4·((2,1)·(0,−4)) = −16 < 0); (4,0)→(2,4) has both ends at x ≥ 2: no; (2,4)→(0,0)
+        // straddles and −2·((0,−3)·(−4,2)) = 12 ≥ 0: one crossing. Perturbed (BUFF 0.1) the
+        // apex moves to (1.8, 4), strictly left of the ray; now (4,0)→(1.8,4) crosses
+        // (−2.2·((−2,1)·(4,2.2)) = 12.76 ≥ 0) and (1.8,4)→(0,0) does not: again one.
+        let tri = [v(0.0, 0.0), v(4.0, 0.0), v(2.0, 4.0)];
+        let s = v(2.0, 1.0);
+        assert_eq!(num_cross(&tri[..], s), 1);
+        let star = Perturbed { poly: &tri[..], s, buff: 0.1 };
+        assert_eq!(star.vertex(2), v(1.8, 4.0));
+        assert_eq!(num_cross(&star, s), 1);
+        assert!(!definitely_outside(&tri[..], s, 0.1)); // inside: odd count
+        // A point above the apex: zero crossings, outside.
+        assert!(definitely_outside(&tri[..], v(2.0, 5.0), 0.1));
+    }
+
+    #[test]
+    fn definitely_outside_square() {
+        let sq = &SQUARE[..];
+        assert!(!definitely_outside(sq, v(2.0, 2.0), 0.1)); // inside
+        assert!(definitely_outside(sq, v(6.0, 2.0), 0.1)); // outside
+        assert!(definitely_outside(sq, v(2.0, -1.0), 0.1)); // below: ray crosses twice
+        assert!(!definitely_outside(sq, v(4.05, 2.0), 0.1)); // within BUFF of the right edge
+        // The point exactly BUFF = 0.5 from the right edge (exact in binary).
+        assert!(definitely_outside(sq, v(4.5, 2.0), 0.5));
+        assert!(!definitely_outside(sq, v(4.25, 2.0), 0.5));
+    }
+}

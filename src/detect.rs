@@ -1,0 +1,530 @@
+//! Paper A §II.H (statically shaped polygons), §II.I (warping polygons) and §III (3D).
+
+use crate::contain::definitely_outside;
+use crate::polygon::{Moved, VertexSeq};
+use crate::predicates as pr;
+use crate::proximity::segments_close;
+use crate::vect2::{sqrt, Vect2};
+
+// ===================================================================== §II.H
+
+/// Paper A §II.H detect_same_2D: does s + t·v come within BUFF of the statically shaped
+/// polygon P + t·V (all v_i equal) for some t ∈ [0, T]?
+///
+/// 1. s not definitely outside P → true; 2. s + T·v not definitely outside P + T·V →
+/// true; 3. some edge with segments_close(s, s + T·(v − v_i), p_i, p_j, BUFF) → true.
+#[inline]
+pub fn detect_same_2d<P, V>(t: f64, s: Vect2, v: Vect2, p: &P, vels: &V, buff: f64) -> bool
+where
+    P: VertexSeq + ?Sized,
+    V: VertexSeq + ?Sized,
+{
+    let n = p.count();
+    if n == 0 {
+        return false;
+    }
+    if !definitely_outside(p, s, buff) {
+        return true;
+    }
+    let at_t = Moved { p, v: vels, t };
+    if !definitely_outside(&at_t, s.at(v, t), buff) {
+        return true;
+    }
+    for i in 0..n {
+        let rel_end = s.at(v - vels.vertex(i), t);
+        if segments_close(s, rel_end, p.vertex(i), p.vertex(p.next(i)), buff) {
+            return true;
+        }
+    }
+    false
+}
+
+// ===================================================================== §II.I
+
+/// The sign σ (or ε) = ±1 of paper A §II.I.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Sign {
+    Neg,
+    Pos,
+}
+
+impl Sign {
+    /// Both signs, −1 then +1.
+    pub const BOTH: [Sign; 2] = [Sign::Neg, Sign::Pos];
+
+    /// −1.0 or 1.0.
+    #[inline(always)]
+    pub fn value(self) -> f64 {
+        match self {
+            Sign::Neg => -1.0,
+            Sign::Pos => 1.0,
+        }
+    }
+
+    /// The other sign.
+    #[inline(always)]
+    pub fn flip(self) -> Sign {
+        match self {
+            Sign::Neg => Sign::Pos,
+            Sign::Pos => Sign::Neg,
+        }
+    }
+}
+
+/// A closed time interval [lb, ub]; empty when lb > ub.
+///
+/// The paper writes the empty interval as (T, 0). That is not empty when T = 0, which
+/// detect_3D produces when the slab window is a single instant, so the engine uses
+/// (+∞, −∞) instead: it loses every max/min comparison, as (T, 0) does for T > 0.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Interval {
+    pub lb: f64,
+    pub ub: f64,
+}
+
+impl Interval {
+    /// The empty interval.
+    pub const EMPTY: Interval = Interval { lb: f64::INFINITY, ub: f64::NEG_INFINITY };
+
+    /// [lb, ub].
+    #[inline(always)]
+    pub const fn new(lb: f64, ub: f64) -> Interval {
+        Interval { lb, ub }
+    }
+
+    /// Does the interval contain no time?
+    #[inline(always)]
+    pub fn is_empty(&self) -> bool {
+        !pr::intervals_meet(self.lb, self.ub)
+    }
+}
+
+/// Roots r1 ≤ r2 of A·t² + B·t + C (A ≠ 0, disc = B² − 4AC > 0), computed without
+/// cancellation: q = −(B + sgn(B)·√disc)/2, roots q/A and C/q.
+#[inline(always)]
+fn roots(a: f64, b: f64, c: f64, disc: f64) -> (f64, f64) {
+    let sq = sqrt(disc);
+    let q = if b >= 0.0 { -0.5 * (b + sq) } else { -0.5 * (b - sq) };
+    let x1 = q / a;
+    let x2 = c / q;
+    if x1 <= x2 {
+        (x1, x2)
+    } else {
+        (x2, x1)
+    }
+}
+
+/// Paper A §II.I dot_nn_lin (omitted in the paper, derived here): one of the two
+/// intervals whose union is {t ∈ [0, T] : (ww + t·vv)·(aa + t·bb) ≥ 0}.
+///
+/// Derivation. f(t) = (ww + t·vv)·(aa + t·bb) = A·t² + B·t + C with A = vv·bb,
+/// B = ww·bb + vv·aa, C = ww·aa. Its non-negative set in ℝ is, by the sign of A:
+/// - A = 0, B = 0: all of ℝ when C ≥ 0, else nothing → σ = +1 gets [0, T] or ∅.
+/// - A = 0, B > 0: t ≥ −C/B → σ = +1 gets [max(0, −C/B), T].
+/// - A = 0, B < 0: t ≤ −C/B → σ = −1 gets [0, min(T, −C/B)].
+/// - A > 0, disc = B² − 4AC ≤ 0: all of ℝ → σ = +1 gets [0, T].
+/// - A > 0, disc > 0: outside the roots r1 < r2 → σ = −1 gets [0, min(T, r1)],
+///   σ = +1 gets [max(0, r2), T].
+/// - A < 0, disc < 0: nothing.
+/// - A < 0, disc = 0: the double root r = −B/(2A) → σ = +1 gets [max(0,r), min(T,r)].
+/// - A < 0, disc > 0: between the roots → σ = +1 gets [max(0, r1), min(T, r2)].
+///
+/// The sign not named in a case gets ∅. A is compared with zero exactly: treating a
+/// small A as zero (as PolyCARP does below 1e-8) replaces a parabola by a line and loses
+/// real roots on long lookaheads.
+#[inline]
+pub fn dot_nn_lin(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2, sigma: Sign) -> Interval {
+    let a = vv.dot(bb);
+    let b = ww.dot(bb) + vv.dot(aa);
+    let c = ww.dot(aa);
+    match pr::sign(a) {
+        0 => match (pr::sign(b), sigma) {
+            (0, Sign::Pos) if pr::nonnegative(c) => Interval::new(0.0, t),
+            (1, Sign::Pos) => Interval::new((-c / b).max(0.0), t),
+            (-1, Sign::Neg) => Interval::new(0.0, (-c / b).min(t)),
+            _ => Interval::EMPTY,
+        },
+        1 => {
+            let (disc, ds) = pr::discriminant(a, b, c);
+            if ds <= 0 {
+                match sigma {
+                    Sign::Pos => Interval::new(0.0, t),
+                    Sign::Neg => Interval::EMPTY,
+                }
+            } else {
+                let (r1, r2) = roots(a, b, c, disc);
+                match sigma {
+                    Sign::Neg => Interval::new(0.0, r1.min(t)),
+                    Sign::Pos => Interval::new(r2.max(0.0), t),
+                }
+            }
+        }
+        _ => {
+            if sigma == Sign::Neg {
+                return Interval::EMPTY;
+            }
+            let (disc, ds) = pr::discriminant(a, b, c);
+            match ds {
+                0 => {
+                    let r = -b / (2.0 * a);
+                    Interval::new(r.max(0.0), r.min(t))
+                }
+                1 => {
+                    let (r1, r2) = roots(a, b, c, disc);
+                    Interval::new(r1.max(0.0), r2.min(t))
+                }
+                _ => Interval::EMPTY,
+            }
+        }
+    }
+}
+
+/// Paper A §II.I dot_nn: dot_nn_lin(T, F·aa + σ2·ww, F·bb + σ2·vv, aa, bb, σ1).
+///
+/// (F·aa + σ2·ww + t(F·bb + σ2·vv))·(aa + t·bb) = F·‖aa + t·bb‖² + σ2·(ww + t·vv)·(aa + t·bb),
+/// so σ2 = +1 selects X ≥ −F·g² and σ2 = −1 selects X ≤ F·g²: together |X| ≤ F·g².
+#[inline]
+#[allow(clippy::too_many_arguments)]
+pub fn dot_nn(
+    t: f64,
+    ww: Vect2,
+    vv: Vect2,
+    aa: Vect2,
+    bb: Vect2,
+    sigma1: Sign,
+    sigma2: Sign,
+    f: f64,
+) -> Interval {
+    let s2 = sigma2.value();
+    dot_nn_lin(t, aa.scale(f) + ww.scale(s2), bb.scale(f) + vv.scale(s2), aa, bb, sigma1)
+}
+
+/// Both dot_nn intervals of one side σ2: their union is where σ2·X ≥ −F·g².
+#[inline(always)]
+fn side(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2, sigma2: Sign, f: f64) -> [Interval; 2] {
+    [
+        dot_nn(t, ww, vv, aa, bb, Sign::Neg, sigma2, f),
+        dot_nn(t, ww, vv, aa, bb, Sign::Pos, sigma2, f),
+    ]
+}
+
+/// Paper A §II.I edge_detect_simp: is there a t ∈ [0, T] with
+/// |(ww + t·vv)·(aa + t·bb)| ≤ (1 + F)·‖aa + t·bb‖² and
+/// |(ww + t·vv)·(aa⊥ + t·bb⊥)| ≤ F·‖aa⊥ + t·bb⊥‖²?
+///
+/// The paper loops over six signs ε1, ε2, ε3, σ1, σ2, σ3; the combinations with ε2 = −1
+/// (σ2 = −1) repeat those with ε2 = +1 (σ2 = +1) with the two intervals swapped, so only
+/// ε2 = σ2 = +1 is enumerated: 2⁴ interval intersections over 8 dot_nn intervals.
+#[inline]
+pub fn edge_detect_simp(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2, f: f64) -> bool {
+    let (aap, bbp) = (aa.perp(), bb.perp());
+    // The perpendicular conditions first: they fail for most edges.
+    let p_pos = side(t, ww, vv, aap, bbp, Sign::Pos, f);
+    if p_pos[0].is_empty() && p_pos[1].is_empty() {
+        return false;
+    }
+    let p_neg = side(t, ww, vv, aap, bbp, Sign::Neg, f);
+    if p_neg[0].is_empty() && p_neg[1].is_empty() {
+        return false;
+    }
+    let f1 = 1.0 + f;
+    let a_pos = side(t, ww, vv, aa, bb, Sign::Pos, f1);
+    if a_pos[0].is_empty() && a_pos[1].is_empty() {
+        return false;
+    }
+    let a_neg = side(t, ww, vv, aa, bb, Sign::Neg, f1);
+    for i1 in &p_pos {
+        for i2 in &p_neg {
+            let lb12 = i1.lb.max(i2.lb);
+            let ub12 = i1.ub.min(i2.ub);
+            if !pr::intervals_meet(lb12, ub12) {
+                continue;
+            }
+            for i3 in &a_pos {
+                for i4 in &a_neg {
+                    let lb = lb12.max(i3.lb).max(i4.lb);
+                    let ub = ub12.min(i3.ub).min(i4.ub);
+                    if pr::intervals_meet(lb, ub) {
+                        return true;
+                    }
+                }
+            }
+        }
+    }
+    false
+}
+
+/// Paper A §II.I eq (2) edge_detect: does s + t·v meet the moving segment
+/// (p_i + t·v_i, p_j + t·v_j) for some t ∈ [0, T] (within the F slack)?
+///
+/// edge_detect_simp(T, s − (½p_j + ½p_i), v − (½v_j + ½v_i), ½p_j − ½p_i, ½v_j − ½v_i, F):
+/// positions relative to the edge's midpoint, against the half-edge vector.
+#[inline]
+#[allow(clippy::too_many_arguments)]
+pub fn edge_detect(
+    t: f64,
+    s: Vect2,
+    v: Vect2,
+    pi: Vect2,
+    pj: Vect2,
+    vi: Vect2,
+    vj: Vect2,
+    f: f64,
+) -> bool {
+    let ww = s - (pj.scale(0.5) + pi.scale(0.5));
+    let vv = v - (vj.scale(0.5) + vi.scale(0.5));
+    let aa = pj.scale(0.5) - pi.scale(0.5);
+    let bb = vj.scale(0.5) - vi.scale(0.5);
+    edge_detect_simp(t, ww, vv, aa, bb, f)
+}
+
+/// Paper A §II.I detect_diff_2D: s not definitely outside P, or some moving edge met by
+/// s + t·v within [0, T] (edge_detect).
+#[inline]
+#[allow(clippy::too_many_arguments)]
+pub fn detect_diff_2d<P, V>(t: f64, s: Vect2, v: Vect2, p: &P, vels: &V, f: f64, buff: f64) -> bool
+where
+    P: VertexSeq + ?Sized,
+    V: VertexSeq + ?Sized,
+{
+    let n = p.count();
+    if n == 0 {
+        return false;
+    }
+    if !definitely_outside(p, s, buff) {
+        return true;
+    }
+    for i in 0..n {
+        let j = p.next(i);
+        if edge_detect(t, s, v, p.vertex(i), p.vertex(j), vels.vertex(i), vels.vertex(j), f) {
+            return true;
+        }
+    }
+    false
+}
+
+// ===================================================================== §III
+
+/// Paper A §III step 1: the exact window [a, b] ⊆ [0, T] in which the height s_z + t·v_z
+/// lies in [pmin + t·vsp, pmax + t·vsp]; `None` when there is no such time.
+///
+/// With w = v_z − vsp, z0 = s_z − pmin, z1 = pmax − s_z the conditions are z0 + t·w ≥ 0
+/// and z1 − t·w ≥ 0: for w = 0 both must hold at once; for w > 0,
+/// t ∈ [−z0/w, z1/w]; for w < 0, t ∈ [z1/w, −z0/w].
+#[inline]
+pub fn slab_window(t: f64, sz: f64, vz: f64, pmin: f64, pmax: f64, vsp: f64) -> Option<(f64, f64)> {
+    let w = vz - vsp;
+    let z0 = sz - pmin;
+    let z1 = pmax - sz;
+    let (a, b) = match pr::sign(w) {
+        0 => {
+            if pr::nonnegative(z0) && pr::nonnegative(z1) {
+                (0.0, t)
+            } else {
+                return None;
+            }
+        }
+        1 => ((-z0 / w).max(0.0), (z1 / w).min(t)),
+        _ => ((z1 / w).max(0.0), (-z0 / w).min(t)),
+    };
+    if pr::window_nonempty(a, b) {
+        Some((a, b))
+    } else {
+        None
+    }
+}
+
+/// Are all vertex velocities equal (a statically shaped polygon, §II.F)?
+#[inline]
+pub fn statically_shaped<V: VertexSeq + ?Sized>(vels: &V) -> bool {
+    let n = vels.count();
+    if n == 0 {
+        return true;
+    }
+    let v0 = vels.vertex(0);
+    (1..n).all(|i| pr::same_velocity(vels.vertex(i), v0))
+}
+
+/// Paper A §III detect_3D: 2D detection (detect_same_2D when all vertex velocities are
+/// equal, detect_diff_2D otherwise) from s + a·v and P + a·V over the lookahead b − a,
+/// where [a, b] is the slab window of [`slab_window`].
+///
+/// When a = 0 the inputs are used unshifted, so no rounding is added.
+#[inline]
+#[allow(clippy::too_many_arguments)]
+pub fn detect_3d<P, V>(
+    t: f64,
+    s: Vect2,
+    v: Vect2,
+    sz: f64,
+    vz: f64,
+    p: &P,
+    vels: &V,
+    pmin: f64,
+    pmax: f64,
+    vsp: f64,
+    buff: f64,
+    f: f64,
+) -> bool
+where
+    P: VertexSeq + ?Sized,
+    V: VertexSeq + ?Sized,
+{
+    let Some((a, b)) = slab_window(t, sz, vz, pmin, pmax, vsp) else {
+        return false;
+    };
+    let same = statically_shaped(vels);
+    if a == 0.0 {
+        if same {
+            detect_same_2d(b, s, v, p, vels, buff)
+        } else {
+            detect_diff_2d(b, s, v, p, vels, f, buff)
+        }
+    } else {
+        let pa = Moved { p, v: vels, t: a };
+        let sa = s.at(v, a);
+        if same {
+            detect_same_2d(b - a, sa, v, &pa, vels, buff)
+        } else {
+            detect_diff_2d(b - a, sa, v, &pa, vels, f, buff)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    fn v(x: f64, y: f64) -> Vect2 {
+        Vect2::new(x, y)
+    }
+
+    /// The union of the two dot_nn_lin intervals, sampled, equals {t : f(t) ≥ 0}.
+    fn check_union(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2) {
+        let lo = dot_nn_lin(t, ww, vv, aa, bb, Sign::Neg);
+        let hi = dot_nn_lin(t, ww, vv, aa, bb, Sign::Pos);
+        for k in 0..=64 {
+            let tk = t * k as f64 / 64.0;
+            let fk = (ww + vv.scale(tk)).dot(aa + bb.scale(tk));
+            let inside = |i: &Interval| i.lb <= tk && tk <= i.ub;
+            // Skip samples within rounding of a root.
+            if fk.abs() < 1e-9 {
+                continue;
+            }
+            assert_eq!(fk >= 0.0, inside(&lo) || inside(&hi), "t = {tk}, f = {fk}, {lo:?} {hi:?}");
+        }
+    }
+
+    #[test]
+    fn dot_nn_lin_cases() {
+        // A = 0, B = 0: f = C.
+        check_union(2.0, v(1.0, 0.0), v(0.0, 0.0), v(1.0, 0.0), v(0.0, 0.0)); // C = 1
+        assert!(dot_nn_lin(2.0, v(-1.0, 0.0), v(0.0, 0.0), v(1.0, 0.0), v(0.0, 0.0), Sign::Pos).is_empty());
+        // A = 0, B > 0: f = t − 1 ≥ 0 on [1, 2].
+        let i = dot_nn_lin(2.0, v(-1.0, 0.0), v(1.0, 0.0), v(1.0, 0.0), v(0.0, 0.0), Sign::Pos);
+        assert_eq!(i, Interval::new(1.0, 2.0));
+        // A = 0, B < 0: f = 1 − t ≥ 0 on [0, 1].
+        let i = dot_nn_lin(2.0, v(1.0, 0.0), v(-1.0, 0.0), v(1.0, 0.0), v(0.0, 0.0), Sign::Neg);
+        assert_eq!(i, Interval::new(0.0, 1.0));
+        // A > 0, two roots: (t − 1)(t − 3) = t² − 4t + 3 with ww = (−1,0), vv = (1,0),
+        // aa = (−3,0), bb = (1,0): f = (t − 1)(t − 3).
+        let (ww, vv, aa, bb) = (v(-1.0, 0.0), v(1.0, 0.0), v(-3.0, 0.0), v(1.0, 0.0));
+        assert_eq!(dot_nn_lin(4.0, ww, vv, aa, bb, Sign::Neg), Interval::new(0.0, 1.0));
+        assert_eq!(dot_nn_lin(4.0, ww, vv, aa, bb, Sign::Pos), Interval::new(3.0, 4.0));
+        check_union(4.0, ww, vv, aa, bb);
+        // A < 0: −(t − 1)(t − 3) ≥ 0 between the roots.
+        let aa2 = v(3.0, 0.0);
+        let bb2 = v(-1.0, 0.0);
+        assert_eq!(dot_nn_lin(4.0, ww, vv, aa2, bb2, Sign::Pos), Interval::new(1.0, 3.0));
+        assert!(dot_nn_lin(4.0, ww, vv, aa2, bb2, Sign::Neg).is_empty());
+        // A < 0, double root: −(t − 2)², ww = (−2,0), vv = (1,0), aa = (2,0), bb = (−1,0).
+        let i = dot_nn_lin(4.0, v(-2.0, 0.0), v(1.0, 0.0), v(2.0, 0.0), v(-1.0, 0.0), Sign::Pos);
+        assert_eq!(i, Interval::new(2.0, 2.0));
+        // A > 0, double root: (t − 2)² ≥ 0 everywhere.
+        let i = dot_nn_lin(4.0, v(-2.0, 0.0), v(1.0, 0.0), v(-2.0, 0.0), v(1.0, 0.0), Sign::Pos);
+        assert_eq!(i, Interval::new(0.0, 4.0));
+    }
+
+    #[test]
+    fn tiny_leading_coefficient_is_not_zero() {
+        // f(t) = 1e-9·(t − 1)(t − 1000): A = 1e-9 (PolyCARP would call it a line,
+        // B·t + C = −1.001e-6·t + 1e-6, losing the root at 1000). Over T = 2000, f ≥ 0 on
+        // [0, 1] ∪ [1000, 2000].
+        let (ww, vv, aa, bb) = (v(-1.0, 0.0), v(1.0, 0.0), v(-1000e-9, 0.0), v(1e-9, 0.0));
+        let lo = dot_nn_lin(2000.0, ww, vv, aa, bb, Sign::Neg);
+        let hi = dot_nn_lin(2000.0, ww, vv, aa, bb, Sign::Pos);
+        assert!((lo.ub - 1.0).abs() < 1e-12 && lo.lb == 0.0);
+        assert!((hi.lb - 1000.0).abs() < 1e-9 && hi.ub == 2000.0);
+    }
+
+    /// Paper A Figure 2: a warping edge met twice. A(t) = (−2, 0) fixed, B(t) = (2, 2 − 2t),
+    /// s(t) = (t, 7/4 − 7t/4). cross(B − A, s − A) = 2t² − 5t + 3 = 2(t − 1)(t − 3/2):
+    /// the point is on the segment at t = 1 (s = (1, 0), B = (2, 0)) and at t = 3/2
+    /// (s = (3/2, −7/8) on the segment to B = (2, −1)), on the other side in between.
+    #[test]
+    fn warping_edge_met_twice() {
+        let (a, va) = (v(-2.0, 0.0), v(0.0, 0.0));
+        let (b, vb) = (v(2.0, 2.0), v(0.0, -2.0));
+        let (s, vs) = (v(0.0, 1.75), v(1.0, -1.75));
+        let f = 1e-4;
+        assert!(edge_detect(1.2, s, vs, a, b, va, vb, f));
+        assert!(!edge_detect(0.9, s, vs, a, b, va, vb, f));
+        // From t0 = 1.1 (between the crossings) only the second crossing can be found.
+        let t0 = 1.1;
+        let (s1, a1, b1) = (s.at(vs, t0), a.at(va, t0), b.at(vb, t0));
+        assert!(!edge_detect(0.3, s1, vs, a1, b1, va, vb, f));
+        assert!(edge_detect(0.5, s1, vs, a1, b1, va, vb, f));
+        // Either crossing alone is found in a window around it.
+        assert!(edge_detect(0.2, s.at(vs, 0.9), vs, a.at(va, 0.9), b.at(vb, 0.9), va, vb, f));
+    }
+
+    #[test]
+    fn detect_diff_and_same_agree_on_a_translating_square() {
+        // A unit-speed square moving right; a point moving up through its path.
+        let sq = [v(0.0, 0.0), v(2.0, 0.0), v(2.0, 2.0), v(0.0, 2.0)];
+        let vel_same = [v(1.0, 0.0); 4];
+        let s = v(5.0, -3.0);
+        let vs = v(0.0, 1.0);
+        // At t = 4 the square spans x ∈ [4, 6], y ∈ [0, 2] and s = (5, 1): inside.
+        for (t, expect) in [(10.0, true), (2.5, false)] {
+            assert_eq!(detect_same_2d(t, s, vs, &sq[..], &vel_same[..], 0.01), expect, "T={t}");
+            assert_eq!(detect_diff_2d(t, s, vs, &sq[..], &vel_same[..], 1e-4, 0.01), expect, "T={t}");
+        }
+    }
+
+    #[test]
+    fn slab_window_cases() {
+        // Level flight inside the slab: whole lookahead.
+        assert_eq!(slab_window(10.0, 5.0, 0.0, 0.0, 10.0, 0.0), Some((0.0, 10.0)));
+        // Above the slab, level: never.
+        assert_eq!(slab_window(10.0, 15.0, 0.0, 0.0, 10.0, 0.0), None);
+        // Climbing from −4 at 2 per unit: enters at 2, leaves at 7.
+        assert_eq!(slab_window(10.0, -4.0, 2.0, 0.0, 10.0, 0.0), Some((2.0, 7.0)));
+        // Descending from 14 at −2: enters at 2, leaves at 7; lookahead 5 clips it.
+        assert_eq!(slab_window(5.0, 14.0, -2.0, 0.0, 10.0, 0.0), Some((2.0, 5.0)));
+        // The slab rises with the point: relative speed 0.
+        assert_eq!(slab_window(5.0, 1.0, 3.0, 0.0, 10.0, 3.0), Some((0.0, 5.0)));
+        // Touching only at t = T exactly: a one-instant window.
+        assert_eq!(slab_window(2.0, -4.0, 2.0, 0.0, 10.0, 0.0), Some((2.0, 2.0)));
+        assert_eq!(slab_window(1.5, -4.0, 2.0, 0.0, 10.0, 0.0), None);
+    }
+
+    #[test]
+    fn detect_3d_needs_both_horizontal_and_vertical_overlap() {
+        let sq = [v(0.0, 0.0), v(2.0, 0.0), v(2.0, 2.0), v(0.0, 2.0)];
+        let still = [v(0.0, 0.0); 4];
+        // Horizontally the point (from (−3, 1), speed 1 in x) is over the square for
+        // t ∈ [3, 5]. Vertically it descends from 20 at −2 into the slab [0, 10] at t = 5.
+        let s = v(-3.0, 1.0);
+        let vs = v(1.0, 0.0);
+        assert!(detect_3d(10.0, s, vs, 20.0, -2.0, &sq[..], &still[..], 0.0, 10.0, 0.0, 0.01, 1e-4));
+        // Descending slower (−1): enters the slab at t = 10, long after leaving the square.
+        assert!(!detect_3d(10.0, s, vs, 20.0, -1.0, &sq[..], &still[..], 0.0, 10.0, 0.0, 0.01, 1e-4));
+        // A one-instant slab window (T = 5, descending at −2) at the moment the point is at
+        // the square's right edge x = 2: within BUFF of it, so detected (a boundary case
+        // the paper's (T, 0) sentinel would mishandle only when b − a = 0 is empty).
+        assert!(detect_3d(5.0, s, vs, 20.0, -2.0, &sq[..], &still[..], 0.0, 10.0, 0.0, 0.01, 1e-4));
+        // Warping polygon: the right side moves away, the point still enters.
+        let warp = [v(0.0, 0.0), v(0.5, 0.0), v(0.5, 0.0), v(0.0, 0.0)];
+        assert!(detect_3d(10.0, s, vs, 20.0, -2.0, &sq[..], &warp[..], 0.0, 10.0, 0.0, 0.01, 1e-4));
+    }
+}

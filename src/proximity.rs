@@ -1,0 +1,63 @@
+//! Paper A §II.G: do two segments come within BUFF of each other?
+
+use crate::contain::near_edge;
+use crate::quad::quad_min_box_le_d;
+use crate::vect2::Vect2;
+
+/// Paper A §II.G segments_close: is segment c d closer than BUFF to segment e f?
+///
+/// Steps 1–2 test the four ends with near_edge; step 4 asks quad_min_box_le_D whether
+/// ‖(c + r·u) − (e + t·w)‖² = u²r² + w²t² − 2(u·w)rt + 2(q·u)r − 2(q·w)t + q² is below
+/// BUFF² for some r, t ∈ [0, 1], with q = c − e, u = d − c, w = f − e.
+#[inline]
+pub fn segments_close(c: Vect2, d: Vect2, e: Vect2, f: Vect2, buff: f64) -> bool {
+    if near_edge(e, f, c, buff) || near_edge(e, f, d, buff) {
+        return true;
+    }
+    if near_edge(c, d, e, buff) || near_edge(c, d, f, buff) {
+        return true;
+    }
+    let q = c - e;
+    let u = d - c;
+    let w = f - e;
+    quad_min_box_le_d(
+        u.sq(),
+        w.sq(),
+        -2.0 * u.dot(w),
+        2.0 * q.dot(u),
+        -2.0 * q.dot(w),
+        q.sq(),
+        buff * buff,
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    fn v(x: f64, y: f64) -> Vect2 {
+        Vect2::new(x, y)
+    }
+
+    #[test]
+    fn crossing_segments_are_close() {
+        // The diagonals of the square [0,2]²: they cross at (1,1); no end is near the
+        // other segment (distance √2 > 0.5), so only step 4's interior minimum (0) decides.
+        assert!(segments_close(v(0.0, 0.0), v(2.0, 2.0), v(0.0, 2.0), v(2.0, 0.0), 0.5));
+    }
+
+    #[test]
+    fn parallel_segments_at_exactly_buff_are_not_close() {
+        // y = 0 and y = 1 over x ∈ [0, 4]: distance exactly 1 = BUFF (strict test: false);
+        // disc = c² − 4ab = 64 − 64 = 0 here.
+        assert!(!segments_close(v(0.0, 0.0), v(4.0, 0.0), v(0.0, 1.0), v(4.0, 1.0), 1.0));
+        assert!(segments_close(v(0.0, 0.0), v(4.0, 0.0), v(0.0, 1.0), v(4.0, 1.0), 1.0 + 1.0 / 1024.0));
+    }
+
+    #[test]
+    fn far_segments_are_not_close() {
+        assert!(!segments_close(v(0.0, 0.0), v(1.0, 0.0), v(3.0, 3.0), v(4.0, 5.0), 1.0));
+        // A T-junction gap of 0.25: close for BUFF 0.5, not for BUFF 0.25.
+        assert!(segments_close(v(0.0, 0.0), v(4.0, 0.0), v(2.0, 0.25), v(2.0, 3.0), 0.5));
+        assert!(!segments_close(v(0.0, 0.0), v(4.0, 0.0), v(2.0, 0.25), v(2.0, 3.0), 0.25));
+    }
+}

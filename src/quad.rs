@@ -1,0 +1,100 @@
+//! Paper A §I: does a quadratic dip below a threshold D on the unit interval / unit box?
+
+use crate::predicates as pr;
+
+/// Paper A §I: quad(a, b, c)(t) = a·t² + b·t + c.
+#[inline(always)]
+pub fn quad(a: f64, b: f64, c: f64, t: f64) -> f64 {
+    (a * t + b) * t + c
+}
+
+/// Paper A §I: quad2D(a, b, c, d, e, f)(r, t) = a·r² + b·t² + c·r·t + d·r + e·t + f.
+#[inline(always)]
+pub fn quad2d(a: f64, b: f64, c: f64, d: f64, e: f64, f: f64, r: f64, t: f64) -> f64 {
+    a * r * r + b * t * t + c * r * t + d * r + e * t + f
+}
+
+/// Paper A §I quad_min_le_D: is there a t ∈ [0, 1] with a·t² + b·t + c < D?
+///
+/// Step 1 tests the ends (quad(0) = c, quad(1) = a + b + c); step 2 the vertex
+/// t* = −b/(2a) when a > 0 and t* ∈ [0, 1], whose value c − b²/(4a) is below D exactly
+/// when b² − 4a(c − D) > 0 (the printed "b² 4a(c D) > 0" lost its minus signs).
+#[inline]
+pub fn quad_min_le_d(a: f64, b: f64, c: f64, d: f64) -> bool {
+    pr::value_below(c, d) || pr::value_below(a + b + c, d) || pr::interior_min_below(a, b, c, d)
+}
+
+/// Paper A §I quad_min_box_le_D: are there r, t ∈ [0, 1] with quad2D(a,…,f)(r, t) < D?
+///
+/// Steps 1–4 restrict to the four sides of the box (t = 1, t = 0, r = 1, r = 0); steps
+/// 5–6 test the critical point r = mx/disc, t = my/disc with disc = c² − 4ab,
+/// mx = 2bd − ce, my = 2ae − cd (solving ∂/∂r = 2ar + ct + d = 0 and
+/// ∂/∂t = 2bt + cr + e = 0). The printed "0 < my·disc < disc²" is read as the closed
+/// test, as for mx: the box is closed.
+#[inline]
+pub fn quad_min_box_le_d(a: f64, b: f64, c: f64, d: f64, e: f64, f: f64, dd: f64) -> bool {
+    quad_min_le_d(a, c + d, quad(b, e, f, 1.0), dd)
+        || quad_min_le_d(a, d, f, dd)
+        || quad_min_le_d(b, c + e, quad(a, d, f, 1.0), dd)
+        || quad_min_le_d(b, e, f, dd)
+        || pr::box_interior_min_below(a, b, c, d, e, f, dd)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn parabola_with_known_minimum() {
+        // (t − 1/2)² + 1 = t² − t + 5/4: minimum 1 at t = 1/2, ends 5/4.
+        assert!(!quad_min_le_d(1.0, -1.0, 1.25, 1.0)); // min is 1, not < 1
+        assert!(quad_min_le_d(1.0, -1.0, 1.25, 1.0 + 1.0 / 1024.0));
+        assert!(!quad_min_le_d(1.0, -1.0, 1.25, 0.5));
+        // Ends decide: the line 2 − t dips below 1.5 only near t = 1.
+        assert!(quad_min_le_d(0.0, -1.0, 2.0, 1.5));
+        assert!(!quad_min_le_d(0.0, -1.0, 2.0, 1.0)); // value 1 at t = 1, not < 1
+    }
+
+    #[test]
+    fn vertex_outside_unit_interval_is_ignored() {
+        // (t − 2)² = t² − 4t + 4: vertex at t = 2; on [0, 1] the minimum is 1 at t = 1.
+        assert!(!quad_min_le_d(1.0, -4.0, 4.0, 1.0));
+        assert!(quad_min_le_d(1.0, -4.0, 4.0, 1.0 + 1.0 / 64.0));
+        // (t + 1)²: vertex at −1, minimum on [0,1] is 1 at t = 0.
+        assert!(!quad_min_le_d(1.0, 2.0, 1.0, 1.0));
+    }
+
+    #[test]
+    fn discriminant_exactly_zero_is_not_below() {
+        // 4t² − 4t + 1 = (2t − 1)²: b² − 4a(c − 0) = 16 − 16 = 0, minimum exactly 0.
+        assert!(!quad_min_le_d(4.0, -4.0, 1.0, 0.0));
+        assert!(quad_min_le_d(4.0, -4.0, 1.0, 1.0 / 256.0));
+    }
+
+    #[test]
+    fn downward_parabola_only_ends_matter() {
+        // −t² + t + 1: max 1.25 at 1/2, ends 1.
+        assert!(!quad_min_le_d(-1.0, 1.0, 1.0, 1.0));
+        assert!(quad_min_le_d(-1.0, 1.0, 1.0, 1.0 + 1.0 / 128.0));
+    }
+
+    #[test]
+    fn box_interior_minimum() {
+        // (r − 1/2)² + (t − 1/2)² = r² + t² − r − t + 1/2: minimum 0 at the centre,
+        // 1/4 on the sides' midpoints. D = 1/8 is reached only in the interior.
+        let (a, b, c, d, e, f) = (1.0, 1.0, 0.0, -1.0, -1.0, 0.5);
+        assert!(quad_min_box_le_d(a, b, c, d, e, f, 0.125));
+        assert!(!quad_min_le_d(a, c + d, quad(b, e, f, 1.0), 0.125));
+        assert!(!quad_min_le_d(a, d, f, 0.125));
+        assert!(!quad_min_box_le_d(a, b, c, d, e, f, 0.0)); // minimum exactly 0
+    }
+
+    #[test]
+    fn box_parallel_direction_disc_zero() {
+        // (r − t)² = r² + t² − 2rt: disc = 4 − 4 = 0 (parallel segments); minimum 0 on
+        // the diagonal, reached on the sides (r = t = 0).
+        assert!(quad_min_box_le_d(1.0, 1.0, -2.0, 0.0, 0.0, 0.0, 1e-300));
+        // (r − t)² + 1: never below 1.
+        assert!(!quad_min_box_le_d(1.0, 1.0, -2.0, 0.0, 0.0, 1.0, 1.0));
+    }
+}

@@ -1,0 +1,103 @@
+//! Paper A §II.J: is the polygon well formed?
+
+use crate::polygon::VertexSeq;
+use crate::predicates as pr;
+use crate::proximity::segments_close;
+
+/// Are edges i→i+1 and k→k+1 adjacent (sharing a vertex) in an n-gon?
+#[inline(always)]
+fn adjacent(i: usize, k: usize, n: usize) -> bool {
+    i == k || (i + 1) % n == k || (k + 1) % n == i
+}
+
+/// Paper A §II.J well_formed(P, BUFF) with the corner angle κ given as cos κ.
+///
+/// False when: (1) two vertices are closer than 2·BUFF; (2) two non-adjacent edges are
+/// segments_close; (3) consecutive edges g, h make a corner sharper than κ,
+/// g·h < −cos κ·‖g‖·‖h‖; (4) the polygon turns right (or goes straight) at its extremal
+/// vertex. The printed extremal-vertex rule ("p_jx ≥ p_ix and p_jy > p_iy for every
+/// other j") has no solution for most polygons; the lexicographic minimum (least x,
+/// then least y) is meant: it is a vertex of the convex hull, where a counterclockwise
+/// polygon turns left. Step 4's printed "(p_i − p_(i−1)*)·(p_(i+1)* − p_i)⊥ ≤ 0" uses
+/// the right perpendicular: the cross product of the incoming and outgoing edges.
+pub fn well_formed<P: VertexSeq + ?Sized>(p: &P, buff: f64, cos_kappa: f64) -> bool {
+    let n = p.count();
+    if n < 3 {
+        return false;
+    }
+    for i in 0..n {
+        for j in (i + 1)..n {
+            if pr::vertices_too_close(p.vertex(i), p.vertex(j), buff) {
+                return false;
+            }
+        }
+    }
+    for i in 0..n {
+        for k in (i + 1)..n {
+            if adjacent(i, k, n) {
+                continue;
+            }
+            let (a, b) = (p.vertex(i), p.vertex(p.next(i)));
+            let (c, d) = (p.vertex(k), p.vertex(p.next(k)));
+            if segments_close(a, b, c, d, buff) {
+                return false;
+            }
+        }
+    }
+    for i in 0..n {
+        let j = p.next(i);
+        let k = p.next(j);
+        let g = p.vertex(j) - p.vertex(i);
+        let h = p.vertex(k) - p.vertex(j);
+        if pr::corner_too_sharp(g, h, cos_kappa) {
+            return false;
+        }
+    }
+    let mut m = 0;
+    for i in 1..n {
+        if pr::lex_less(p.vertex(i), p.vertex(m)) {
+            m = i;
+        }
+    }
+    let prev = p.vertex(if m == 0 { n - 1 } else { m - 1 });
+    !pr::turns_right_or_straight(prev, p.vertex(m), p.vertex(p.next(m)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::vect2::Vect2;
+    fn v(x: f64, y: f64) -> Vect2 {
+        Vect2::new(x, y)
+    }
+    const COS_10_DEG: f64 = 0.984_807_753_012_208;
+
+    #[test]
+    fn square_is_well_formed_clockwise_is_not() {
+        let ccw = [v(0.0, 0.0), v(4.0, 0.0), v(4.0, 4.0), v(0.0, 4.0)];
+        assert!(well_formed(&ccw[..], 0.1, COS_10_DEG));
+        let cw = [v(0.0, 0.0), v(0.0, 4.0), v(4.0, 4.0), v(4.0, 0.0)];
+        assert!(!well_formed(&cw[..], 0.1, COS_10_DEG));
+    }
+
+    #[test]
+    fn bow_tie_and_close_vertices_are_not() {
+        // Edges (0,0)-(4,0) ... the bow tie (0,0),(4,4),(4,0),(0,4) has crossing
+        // non-adjacent edges (0,0)-(4,4) and (4,0)-(0,4).
+        let bow = [v(0.0, 0.0), v(4.0, 4.0), v(4.0, 0.0), v(0.0, 4.0)];
+        assert!(!well_formed(&bow[..], 0.1, COS_10_DEG));
+        // Two vertices 0.15 apart with BUFF 0.1 (< 2·BUFF).
+        let close = [v(0.0, 0.0), v(4.0, 0.0), v(4.0, 0.15), v(4.0, 4.0)];
+        assert!(!well_formed(&close[..], 0.1, COS_10_DEG));
+    }
+
+    #[test]
+    fn sharp_corner_is_not() {
+        // A sliver triangle with a 2.86° apex at (10, 0.5)... corner at (0,0)/(10,0)/(0,1):
+        // the angle at (10,0) is atan(1/10) ≈ 5.7° < 10°.
+        let sliver = [v(0.0, 0.0), v(10.0, 0.0), v(0.0, 1.0)];
+        assert!(!well_formed(&sliver[..], 0.01, COS_10_DEG));
+        // With κ = 1° (cos = 0.99985) the same triangle passes.
+        assert!(well_formed(&sliver[..], 0.01, 0.999_847_695_156_391));
+    }
+}

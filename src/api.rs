@@ -1,0 +1,500 @@
+//! The high-level API: validated cases and one [`detect`] call.
+//!
+//! ```
+//! use polyguard::api::{detect, Case, MovingPoint, MovingPolygon, Params};
+//! use polyguard::Vect2;
+//!
+//! // A 2×2 square drifting east at 1 unit/s; an aircraft climbing north through its path.
+//! let cell = MovingPolygon::new(
+//!     vec![[0.0, 0.0].into(), [2.0, 0.0].into(), [2.0, 2.0].into(), [0.0, 2.0].into()],
+//!     Some(vec![Vect2::new(1.0, 0.0); 4]),
+//! )?;
+//! let aircraft = MovingPoint::new_2d(Vect2::new(5.0, -3.0), Vect2::new(0.0, 1.0))?;
+//! let case = Case::new(10.0, aircraft, cell, Params::new(0.01)?)?;
+//! let answer = detect(&case);
+//! assert!(answer.detected && answer.well_formed);
+//! # Ok::<(), polyguard::error::CaseError>(())
+//! ```
+
+use std::vec::Vec;
+
+use crate::detect::{detect_3d, detect_diff_2d, detect_same_2d, statically_shaped};
+use crate::error::CaseError;
+use crate::vect2::Vect2;
+use crate::well_formed::well_formed;
+
+/// The paper's slack parameters: BUFF (§II.A), F (§II.I) and the corner angle κ (§II.J).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Params {
+    buff: f64,
+    fac: f64,
+    kappa: f64,
+    cos_kappa: f64,
+}
+
+impl Params {
+    /// F when the case gives none: the paper's example value (§II.I, "e.g. 0.0001").
+    pub const DEFAULT_FAC: f64 = 1e-4;
+    /// κ when none is given: 5° in radians. The paper leaves κ to the user (§II.J); 5°
+    /// flags slivers without flagging the ordinary corners of weather polygons.
+    pub const DEFAULT_KAPPA: f64 = 5.0 * core::f64::consts::PI / 180.0;
+
+    /// BUFF > 0 (finite) with the default F and κ.
+    pub fn new(buff: f64) -> Result<Self, CaseError> {
+        check_positive("buff", buff)?;
+        let kappa = Self::DEFAULT_KAPPA;
+        Ok(Params {
+            buff,
+            fac: Self::DEFAULT_FAC,
+            kappa,
+            cos_kappa: kappa.cos(),
+        })
+    }
+
+    /// F in the open interval (0, 1).
+    pub fn with_fac(mut self, fac: f64) -> Result<Self, CaseError> {
+        check_finite("fac", fac)?;
+        if !(fac > 0.0 && fac < 1.0) {
+            return Err(CaseError::OutOfRange {
+                field: "fac",
+                value: fac,
+                range: "(0, 1)",
+            });
+        }
+        self.fac = fac;
+        Ok(self)
+    }
+
+    /// κ in radians, in the open interval (0, π).
+    pub fn with_kappa(mut self, kappa: f64) -> Result<Self, CaseError> {
+        check_finite("kappa", kappa)?;
+        if !(kappa > 0.0 && kappa < core::f64::consts::PI) {
+            return Err(CaseError::OutOfRange {
+                field: "kappa",
+                value: kappa,
+                range: "(0, π)",
+            });
+        }
+        self.kappa = kappa;
+        self.cos_kappa = kappa.cos();
+        Ok(self)
+    }
+
+    /// BUFF.
+    pub fn buff(&self) -> f64 {
+        self.buff
+    }
+    /// F.
+    pub fn fac(&self) -> f64 {
+        self.fac
+    }
+    /// κ in radians.
+    pub fn kappa(&self) -> f64 {
+        self.kappa
+    }
+    /// cos κ, as well_formed takes it.
+    pub fn cos_kappa(&self) -> f64 {
+        self.cos_kappa
+    }
+}
+
+fn check_finite(field: &'static str, x: f64) -> Result<(), CaseError> {
+    if x.is_finite() {
+        Ok(())
+    } else {
+        Err(CaseError::NotFinite {
+            field: field.into(),
+        })
+    }
+}
+
+fn check_positive(field: &'static str, x: f64) -> Result<(), CaseError> {
+    check_finite(field, x)?;
+    if x > 0.0 {
+        Ok(())
+    } else {
+        Err(CaseError::NotPositive { field, value: x })
+    }
+}
+
+fn check_points(field: &str, pts: &[Vect2]) -> Result<(), CaseError> {
+    for (i, p) in pts.iter().enumerate() {
+        for (k, c) in [p.x, p.y].into_iter().enumerate() {
+            if !c.is_finite() {
+                return Err(CaseError::NotFinite {
+                    field: format!("{field}[{i}][{k}]"),
+                });
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Twice the signed area of P (shoelace, relative to p_0 to limit cancellation).
+pub fn signed_area2(p: &[Vect2]) -> f64 {
+    let Some(&o) = p.first() else { return 0.0 };
+    let mut sum = 0.0;
+    for k in 1..p.len().saturating_sub(1) {
+        let a = p[k] - o;
+        let b = p[k + 1] - o;
+        sum += a.x * b.y - a.y * b.x;
+    }
+    sum
+}
+
+/// The vertical extent of a 3D polygon (§III): pmin + t·vsp ≤ z ≤ pmax + t·vsp.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Slab {
+    pub bottom: f64,
+    pub top: f64,
+    pub vz: f64,
+}
+
+/// A polygon P with one velocity per vertex V (§II), optionally with a slab (§III).
+/// Validated: ≥ 3 finite vertices in counterclockwise order, as many finite velocities.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MovingPolygon {
+    vertices: Vec<Vect2>,
+    velocities: Vec<Vect2>,
+    slab: Option<Slab>,
+}
+
+impl MovingPolygon {
+    /// P and V (`None`: a polygon at rest).
+    pub fn new(vertices: Vec<Vect2>, velocities: Option<Vec<Vect2>>) -> Result<Self, CaseError> {
+        if vertices.len() < 3 {
+            return Err(CaseError::TooFewVertices {
+                found: vertices.len(),
+            });
+        }
+        check_points("polygon.vertices", &vertices)?;
+        let velocities = match velocities {
+            Some(v) => {
+                if v.len() != vertices.len() {
+                    return Err(CaseError::WrongLength {
+                        field: "polygon.velocities".into(),
+                        expected: vertices.len(),
+                        found: v.len(),
+                        what: "velocities (one per vertex)",
+                    });
+                }
+                check_points("polygon.velocities", &v)?;
+                v
+            }
+            None => vec![Vect2::ZERO; vertices.len()],
+        };
+        let area2 = signed_area2(&vertices);
+        if area2 < 0.0 {
+            return Err(CaseError::Clockwise {
+                signed_area: area2 / 2.0,
+            });
+        }
+        Ok(MovingPolygon {
+            vertices,
+            velocities,
+            slab: None,
+        })
+    }
+
+    /// Adds the slab bottom ≤ z ≤ top moving vertically at vz (§III).
+    pub fn with_slab(mut self, bottom: f64, top: f64, vz: f64) -> Result<Self, CaseError> {
+        check_finite("polygon.bottom", bottom)?;
+        check_finite("polygon.top", top)?;
+        check_finite("polygon.vz", vz)?;
+        if bottom > top {
+            return Err(CaseError::SlabInverted { bottom, top });
+        }
+        self.slab = Some(Slab { bottom, top, vz });
+        Ok(self)
+    }
+
+    /// P.
+    pub fn vertices(&self) -> &[Vect2] {
+        &self.vertices
+    }
+    /// V.
+    pub fn velocities(&self) -> &[Vect2] {
+        &self.velocities
+    }
+    /// The slab, for a 3D polygon.
+    pub fn slab(&self) -> Option<Slab> {
+        self.slab
+    }
+    /// All vertex velocities equal: statically shaped (§II.F).
+    pub fn statically_shaped(&self) -> bool {
+        statically_shaped(&self.velocities[..])
+    }
+}
+
+/// The moving point s + t·v (§II), with height s_z + t·v_z in 3D (§III).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MovingPoint {
+    pub pos: Vect2,
+    pub vel: Vect2,
+    /// (s_z, v_z) for a 3D point.
+    pub z: Option<(f64, f64)>,
+}
+
+impl MovingPoint {
+    /// A 2D point s moving at v.
+    pub fn new_2d(pos: Vect2, vel: Vect2) -> Result<Self, CaseError> {
+        check_points("point.pos", &[pos]).map_err(|_| CaseError::NotFinite {
+            field: "point.pos".into(),
+        })?;
+        check_points("point.vel", &[vel]).map_err(|_| CaseError::NotFinite {
+            field: "point.vel".into(),
+        })?;
+        Ok(MovingPoint { pos, vel, z: None })
+    }
+
+    /// A 3D point: pos = (x, y, z), vel = (vx, vy, vz).
+    pub fn new_3d(pos: [f64; 3], vel: [f64; 3]) -> Result<Self, CaseError> {
+        for (field, arr) in [("point.pos", pos), ("point.vel", vel)] {
+            for (k, c) in arr.iter().enumerate() {
+                if !c.is_finite() {
+                    return Err(CaseError::NotFinite {
+                        field: format!("{field}[{k}]"),
+                    });
+                }
+            }
+        }
+        Ok(MovingPoint {
+            pos: Vect2::new(pos[0], pos[1]),
+            vel: Vect2::new(vel[0], vel[1]),
+            z: Some((pos[2], vel[2])),
+        })
+    }
+}
+
+/// A validated detection case: lookahead T, the point, the polygon, the parameters.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Case {
+    lookahead: f64,
+    point: MovingPoint,
+    polygon: MovingPolygon,
+    params: Params,
+}
+
+impl Case {
+    /// T > 0; point and polygon both 2D or both 3D.
+    pub fn new(
+        lookahead: f64,
+        point: MovingPoint,
+        polygon: MovingPolygon,
+        params: Params,
+    ) -> Result<Self, CaseError> {
+        check_positive("lookahead", lookahead)?;
+        match (point.z.is_some(), polygon.slab.is_some()) {
+            (true, false) => {
+                return Err(CaseError::DimensionMismatch {
+                    field: "polygon.bottom",
+                    detail: "the point has a height but the polygon has no bottom/top/vz",
+                })
+            }
+            (false, true) => {
+                return Err(CaseError::DimensionMismatch {
+                    field: "point.pos",
+                    detail: "the polygon has bottom/top/vz but the point has no height",
+                })
+            }
+            _ => {}
+        }
+        Ok(Case {
+            lookahead,
+            point,
+            polygon,
+            params,
+        })
+    }
+
+    /// T.
+    pub fn lookahead(&self) -> f64 {
+        self.lookahead
+    }
+    /// The moving point.
+    pub fn point(&self) -> &MovingPoint {
+        &self.point
+    }
+    /// The moving polygon.
+    pub fn polygon(&self) -> &MovingPolygon {
+        &self.polygon
+    }
+    /// BUFF, F, κ.
+    pub fn params(&self) -> &Params {
+        &self.params
+    }
+    /// Which paper function decides this case.
+    pub fn method(&self) -> Method {
+        if self.point.z.is_some() {
+            Method::Detect3d
+        } else if self.polygon.statically_shaped() {
+            Method::DetectSame2d
+        } else {
+            Method::DetectDiff2d
+        }
+    }
+}
+
+/// The paper function that decided.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Method {
+    /// §II.H, statically shaped polygon.
+    DetectSame2d,
+    /// §II.I, warping polygon.
+    DetectDiff2d,
+    /// §III, with a slab.
+    Detect3d,
+}
+
+impl Method {
+    /// The paper's name in snake case.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::DetectSame2d => "detect_same_2d",
+            Method::DetectDiff2d => "detect_diff_2d",
+            Method::Detect3d => "detect_3d",
+        }
+    }
+}
+
+/// The answer of [`detect`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Detection {
+    /// The point comes within BUFF (or the F slack) of the polygon within [0, T].
+    pub detected: bool,
+    /// Which paper function decided.
+    pub method: Method,
+    /// §II.J at t = 0, for information only: a polygon that is not well formed is still
+    /// checked, never answered "no detection" for that reason.
+    pub well_formed: bool,
+}
+
+/// The decision alone (no well_formed check): the engine's hot path.
+pub fn detected(case: &Case) -> bool {
+    let p = &case.polygon.vertices[..];
+    let vels = &case.polygon.velocities[..];
+    let (s, v, t) = (case.point.pos, case.point.vel, case.lookahead);
+    let (buff, fac) = (case.params.buff, case.params.fac);
+    match (case.point.z, case.polygon.slab) {
+        (Some((sz, vz)), Some(slab)) => detect_3d(
+            t,
+            s,
+            v,
+            sz,
+            vz,
+            p,
+            vels,
+            slab.bottom,
+            slab.top,
+            slab.vz,
+            buff,
+            fac,
+        ),
+        _ => {
+            if statically_shaped(vels) {
+                detect_same_2d(t, s, v, p, vels, buff)
+            } else {
+                detect_diff_2d(t, s, v, p, vels, fac, buff)
+            }
+        }
+    }
+}
+
+/// Paper A end to end: detect_3D for a 3D case, else detect_same_2D when all vertex
+/// velocities are equal, else detect_diff_2D; plus well_formed (§II.J) for information.
+pub fn detect(case: &Case) -> Detection {
+    Detection {
+        detected: detected(case),
+        method: case.method(),
+        well_formed: well_formed(
+            &case.polygon.vertices[..],
+            case.params.buff,
+            case.params.cos_kappa,
+        ),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn square() -> Vec<Vect2> {
+        vec![
+            Vect2::new(0.0, 0.0),
+            Vect2::new(2.0, 0.0),
+            Vect2::new(2.0, 2.0),
+            Vect2::new(0.0, 2.0),
+        ]
+    }
+
+    #[test]
+    fn every_rule_is_a_typed_error_naming_its_field() {
+        let e = MovingPolygon::new(square()[..2].to_vec(), None).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "polygon.vertices: 2 points, at least 3 are needed"
+        );
+        let mut bad = square();
+        bad[2].y = f64::NAN;
+        assert_eq!(
+            MovingPolygon::new(bad, None).unwrap_err().field(),
+            "polygon.vertices[2][1]"
+        );
+        let e = MovingPolygon::new(square(), Some(vec![Vect2::ZERO; 3])).unwrap_err();
+        assert_eq!(e.field(), "polygon.velocities");
+        let mut cw = square();
+        cw.reverse();
+        assert!(matches!(
+            MovingPolygon::new(cw, None),
+            Err(CaseError::Clockwise { .. })
+        ));
+        assert_eq!(Params::new(0.0).unwrap_err().field(), "buff");
+        assert_eq!(Params::new(f64::INFINITY).unwrap_err().field(), "buff");
+        let p = Params::new(0.1).unwrap();
+        assert_eq!(p.with_fac(1.0).unwrap_err().field(), "fac");
+        assert_eq!(p.with_fac(0.0).unwrap_err().field(), "fac");
+        let poly = MovingPolygon::new(square(), None).unwrap();
+        let pt = MovingPoint::new_2d(Vect2::ZERO, Vect2::ZERO).unwrap();
+        let e = Case::new(-1.0, pt, poly.clone(), p).unwrap_err();
+        assert_eq!(e.field(), "lookahead");
+        let pt3 = MovingPoint::new_3d([0.0; 3], [0.0; 3]).unwrap();
+        assert!(matches!(
+            Case::new(1.0, pt3, poly.clone(), p),
+            Err(CaseError::DimensionMismatch { .. })
+        ));
+        let poly3 = poly.clone().with_slab(0.0, 1.0, 0.0).unwrap();
+        assert_eq!(
+            Case::new(1.0, pt, poly3, p).unwrap_err().field(),
+            "point.pos"
+        );
+        assert_eq!(
+            poly.with_slab(2.0, 1.0, 0.0).unwrap_err().field(),
+            "polygon.top"
+        );
+        assert_eq!(
+            MovingPoint::new_3d([0.0, 0.0, f64::NAN], [0.0; 3])
+                .unwrap_err()
+                .field(),
+            "point.pos[2]"
+        );
+    }
+
+    #[test]
+    fn not_well_formed_still_detects() {
+        // A bow tie (not well formed) that the point starts inside of (the left lobe).
+        let bow = vec![
+            Vect2::new(0.0, 0.0),
+            Vect2::new(4.0, 4.0),
+            Vect2::new(4.0, 0.0),
+            Vect2::new(0.0, 4.0),
+        ];
+        // Its shoelace area is 0: accepted (not clockwise), flagged not well formed.
+        let poly = MovingPolygon::new(bow, None).unwrap();
+        let pt = MovingPoint::new_2d(Vect2::new(0.5, 2.0), Vect2::ZERO).unwrap();
+        let c = Case::new(1.0, pt, poly, Params::new(0.01).unwrap()).unwrap();
+        let d = detect(&c);
+        assert!(!d.well_formed);
+        assert!(d.detected);
+        assert_eq!(d.method, Method::DetectSame2d);
+    }
+}

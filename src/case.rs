@@ -1,0 +1,279 @@
+//! Reading one detection case from a JSON line (shared/spec/cases.md).
+
+use serde_json::{Map, Value};
+
+use crate::api::{Case, MovingPoint, MovingPolygon, Params};
+use crate::error::CaseError;
+use crate::vect2::Vect2;
+
+/// One line of the case file: the id to echo back and the case (or what is wrong with it).
+pub struct ParsedLine {
+    /// The case's `id`, or the 1-based line number when it has none (or the line is not
+    /// an object).
+    pub id: Value,
+    pub case: Result<Case, CaseError>,
+}
+
+/// Reads one non-blank line of the case format.
+pub fn parse_line(line: &str, line_no: usize) -> ParsedLine {
+    let value: Value = match serde_json::from_str(line) {
+        Ok(v) => v,
+        Err(e) => {
+            return ParsedLine {
+                id: Value::from(line_no),
+                case: Err(CaseError::Syntax {
+                    message: e.to_string(),
+                }),
+            }
+        }
+    };
+    let Value::Object(obj) = value else {
+        return ParsedLine {
+            id: Value::from(line_no),
+            case: Err(CaseError::Syntax {
+                message: "the line is JSON but not an object".into(),
+            }),
+        };
+    };
+    let id = obj
+        .get("id")
+        .cloned()
+        .unwrap_or_else(|| Value::from(line_no));
+    ParsedLine {
+        id,
+        case: case_from_object(&obj),
+    }
+}
+
+fn number(v: &Value, field: &str) -> Result<f64, CaseError> {
+    match v.as_f64() {
+        Some(x) if x.is_finite() => Ok(x),
+        Some(_) => Err(CaseError::NotFinite {
+            field: field.into(),
+        }),
+        None => Err(CaseError::WrongType {
+            field: field.into(),
+            expected: "a number",
+        }),
+    }
+}
+
+fn get<'a>(obj: &'a Map<String, Value>, key: &str, field: &str) -> Result<&'a Value, CaseError> {
+    match obj.get(key) {
+        Some(Value::Null) | None => Err(CaseError::Missing {
+            field: field.into(),
+        }),
+        Some(v) => Ok(v),
+    }
+}
+
+fn object<'a>(v: &'a Value, field: &str) -> Result<&'a Map<String, Value>, CaseError> {
+    v.as_object().ok_or_else(|| CaseError::WrongType {
+        field: field.into(),
+        expected: "an object",
+    })
+}
+
+fn array<'a>(v: &'a Value, field: &str) -> Result<&'a Vec<Value>, CaseError> {
+    v.as_array().ok_or_else(|| CaseError::WrongType {
+        field: field.into(),
+        expected: "an array",
+    })
+}
+
+fn numbers(v: &Value, field: &str) -> Result<Vec<f64>, CaseError> {
+    array(v, field)?
+        .iter()
+        .enumerate()
+        .map(|(k, x)| number(x, &format!("{field}[{k}]")))
+        .collect()
+}
+
+fn points(v: &Value, field: &str) -> Result<Vec<Vect2>, CaseError> {
+    let arr = array(v, field)?;
+    let mut out = Vec::with_capacity(arr.len());
+    for (i, p) in arr.iter().enumerate() {
+        let f = format!("{field}[{i}]");
+        let xy = numbers(p, &f)?;
+        if xy.len() != 2 {
+            return Err(CaseError::WrongLength {
+                field: f,
+                expected: 2,
+                found: xy.len(),
+                what: "numbers (a point is [x, y])",
+            });
+        }
+        out.push(Vect2::new(xy[0], xy[1]));
+    }
+    Ok(out)
+}
+
+/// Builds and validates a case from its JSON object.
+pub fn case_from_object(obj: &Map<String, Value>) -> Result<Case, CaseError> {
+    let lookahead = number(get(obj, "lookahead", "lookahead")?, "lookahead")?;
+    let buff = number(get(obj, "buff", "buff")?, "buff")?;
+    let mut params = Params::new(buff)?;
+    match obj.get("fac") {
+        None | Some(Value::Null) => {}
+        Some(f) => params = params.with_fac(number(f, "fac")?)?,
+    }
+
+    let point = object(get(obj, "point", "point")?, "point")?;
+    let pos = numbers(get(point, "pos", "point.pos")?, "point.pos")?;
+    let vel = numbers(get(point, "vel", "point.vel")?, "point.vel")?;
+    if pos.len() != 2 && pos.len() != 3 {
+        return Err(CaseError::WrongLength {
+            field: "point.pos".into(),
+            expected: 2,
+            found: pos.len(),
+            what: "numbers (2 for x, y or 3 for x, y, z)",
+        });
+    }
+    if vel.len() != pos.len() {
+        return Err(CaseError::WrongLength {
+            field: "point.vel".into(),
+            expected: pos.len(),
+            found: vel.len(),
+            what: "numbers (as many as point.pos)",
+        });
+    }
+    let point = if pos.len() == 3 {
+        MovingPoint::new_3d([pos[0], pos[1], pos[2]], [vel[0], vel[1], vel[2]])?
+    } else {
+        MovingPoint::new_2d(Vect2::new(pos[0], pos[1]), Vect2::new(vel[0], vel[1]))?
+    };
+
+    let poly = object(get(obj, "polygon", "polygon")?, "polygon")?;
+    let vertices = points(
+        get(poly, "vertices", "polygon.vertices")?,
+        "polygon.vertices",
+    )?;
+    let velocities = match poly.get("velocities") {
+        None | Some(Value::Null) => None,
+        Some(v) => Some(points(v, "polygon.velocities")?),
+    };
+    let mut polygon = MovingPolygon::new(vertices, velocities)?;
+    let slab_fields = ["bottom", "top", "vz"].map(|k| poly.get(k).filter(|v| !v.is_null()));
+    match slab_fields {
+        [None, None, None] => {}
+        [Some(b), Some(t), Some(z)] => {
+            polygon = polygon.with_slab(
+                number(b, "polygon.bottom")?,
+                number(t, "polygon.top")?,
+                number(z, "polygon.vz")?,
+            )?;
+        }
+        _ => {
+            let missing = ["bottom", "top", "vz"]
+                .iter()
+                .zip(slab_fields.iter())
+                .find(|(_, v)| v.is_none())
+                .map(|(k, _)| *k)
+                .unwrap_or("bottom");
+            return Err(CaseError::Missing {
+                field: format!("polygon.{missing}"),
+            });
+        }
+    }
+    Case::new(lookahead, point, polygon, params)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn err(line: &str) -> String {
+        match parse_line(line, 7).case {
+            Err(e) => e.to_string(),
+            Ok(_) => String::from("ok"),
+        }
+    }
+
+    const GOOD: &str = r#"{"id":"a","lookahead":10,"buff":0.01,"point":{"pos":[5,-3],"vel":[0,1]},"polygon":{"vertices":[[0,0],[2,0],[2,2],[0,2]],"velocities":[[1,0],[1,0],[1,0],[1,0]]}}"#;
+
+    #[test]
+    fn good_line_reads() {
+        let p = parse_line(GOOD, 1);
+        assert_eq!(p.id, Value::from("a"));
+        let c = p.case.expect("valid");
+        assert_eq!(c.lookahead(), 10.0);
+        assert_eq!(c.params().fac(), Params::DEFAULT_FAC);
+        assert!(c.polygon().statically_shaped());
+    }
+
+    #[test]
+    fn each_bad_field_is_named() {
+        assert_eq!(err("not json").split(':').next(), Some("line"));
+        assert_eq!(err("[1,2]").split(':').next(), Some("line"));
+        let cases = [
+            (
+                r#""lookahead":10,"#,
+                r#""lookahead":-1,"#,
+                "lookahead: -1 is not > 0",
+            ),
+            (r#""lookahead":10,"#, r#""#, "lookahead: missing"),
+            (r#""buff":0.01,"#, r#""buff":0,"#, "buff: 0 is not > 0"),
+            (
+                r#""buff":0.01,"#,
+                r#""buff":0.01,"fac":1.5,"#,
+                "fac: 1.5 is outside (0, 1)",
+            ),
+            (
+                r#""buff":0.01,"#,
+                r#""buff":"x","#,
+                "buff: must be a number",
+            ),
+            (
+                r#""vel":[0,1]"#,
+                r#""vel":[0,1,2]"#,
+                "point.vel: 3 numbers (as many as point.pos), 2 expected",
+            ),
+            (
+                r#"[[0,0],[2,0],[2,2],[0,2]]"#,
+                r#"[[0,0],[2,0]]"#,
+                "polygon.vertices: 2 points, at least 3 are needed",
+            ),
+            (
+                r#"[[0,0],[2,0],[2,2],[0,2]]"#,
+                r#"[[0,0],[2,0],[2,2,1],[0,2]]"#,
+                "polygon.vertices[2]: 3 numbers (a point is [x, y]), 2 expected",
+            ),
+            (
+                r#","velocities":[[1,0],[1,0],[1,0],[1,0]]"#,
+                r#","velocities":[[1,0],[1,0]]"#,
+                "polygon.velocities: 2 velocities (one per vertex), 4 expected",
+            ),
+            (
+                r#""pos":[5,-3]"#,
+                r#""pos":[5,-3,1]"#,
+                "point.vel: 2 numbers (as many as point.pos), 3 expected",
+            ),
+        ];
+        for (from, to, want) in cases {
+            let line = GOOD.replacen(from, to, 1);
+            assert_ne!(line, GOOD, "{from}");
+            assert_eq!(err(&line), want, "{line}");
+        }
+        // 3D point without a slab, slab without all three fields.
+        let line3 = GOOD.replace(
+            r#""pos":[5,-3],"vel":[0,1]"#,
+            r#""pos":[5,-3,1],"vel":[0,1,0]"#,
+        );
+        assert!(err(&line3).starts_with("polygon.bottom: 2D and 3D mixed"));
+        let partial = GOOD.replace(r#""velocities""#, r#""bottom":0,"top":5,"velocities""#);
+        assert_eq!(err(&partial), "polygon.vz: missing");
+        let slab2d = GOOD.replace(
+            r#""velocities""#,
+            r#""bottom":0,"top":5,"vz":0,"velocities""#,
+        );
+        assert!(err(&slab2d).starts_with("point.pos: 2D and 3D mixed"));
+        // A number too large for an f64 is a syntax error of serde_json, not a panic.
+        assert!(err(&GOOD.replace("10,", "1e400,")).starts_with("line:"));
+    }
+
+    #[test]
+    fn missing_id_uses_line_number() {
+        let line = GOOD.replace(r#""id":"a","#, "");
+        assert_eq!(parse_line(&line, 7).id, Value::from(7));
+    }
+}

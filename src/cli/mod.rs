@@ -1,0 +1,6 @@
+//! The command-line tool's subcommands, one module each.
+#[cfg(feature = "earth")]
+pub mod conflicts;
+pub mod detect;
+#[cfg(feature = "earth")]
+pub mod generate;

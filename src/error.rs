@@ -1,0 +1,109 @@
+//! Typed errors for bad cases: every rule of shared/spec/cases.md, each naming its field.
+
+use core::fmt;
+
+#[cfg(feature = "std")]
+use std::string::String;
+
+/// What is wrong with a detection case, and in which field (a path such as
+/// `polygon.vertices[2][1]`, as in the case format of shared/spec/cases.md).
+#[cfg(feature = "std")]
+#[derive(Clone, Debug, PartialEq)]
+pub enum CaseError {
+    /// The line is not JSON, or not a JSON object.
+    Syntax { message: String },
+    /// A required field is absent.
+    Missing { field: String },
+    /// A field has the wrong JSON type (a string where a number belongs, …).
+    WrongType {
+        field: String,
+        expected: &'static str,
+    },
+    /// NaN or ±∞ (or a number too large for an f64).
+    NotFinite { field: String },
+    /// Fewer than 3 vertices.
+    TooFewVertices { found: usize },
+    /// A list of the wrong length (a point of 4 numbers, 3 velocities for 4 vertices…).
+    WrongLength {
+        field: String,
+        expected: usize,
+        found: usize,
+        what: &'static str,
+    },
+    /// A number that must be > 0 (lookahead T, buff BUFF) is not.
+    NotPositive { field: &'static str, value: f64 },
+    /// A number outside its open range (fac F in (0, 1), κ in (0, π)).
+    OutOfRange {
+        field: &'static str,
+        value: f64,
+        range: &'static str,
+    },
+    /// 2D and 3D mixed: z in the point without a slab in the polygon, or the reverse.
+    DimensionMismatch {
+        field: &'static str,
+        detail: &'static str,
+    },
+    /// The slab's bottom lies above its top.
+    SlabInverted { bottom: f64, top: f64 },
+    /// The vertices run clockwise (negative signed area); the format wants counterclockwise.
+    Clockwise { signed_area: f64 },
+}
+
+#[cfg(feature = "std")]
+impl CaseError {
+    /// The field the error is about, as a path into the case.
+    pub fn field(&self) -> String {
+        match self {
+            CaseError::Syntax { .. } => String::from("line"),
+            CaseError::Missing { field }
+            | CaseError::WrongType { field, .. }
+            | CaseError::NotFinite { field }
+            | CaseError::WrongLength { field, .. } => field.clone(),
+            CaseError::TooFewVertices { .. } | CaseError::Clockwise { .. } => {
+                String::from("polygon.vertices")
+            }
+            CaseError::NotPositive { field, .. }
+            | CaseError::OutOfRange { field, .. }
+            | CaseError::DimensionMismatch { field, .. } => String::from(*field),
+            CaseError::SlabInverted { .. } => String::from("polygon.top"),
+        }
+    }
+}
+
+#[cfg(feature = "std")]
+impl fmt::Display for CaseError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: ", self.field())?;
+        match self {
+            CaseError::Syntax { message } => write!(f, "not a JSON object: {message}"),
+            CaseError::Missing { .. } => write!(f, "missing"),
+            CaseError::WrongType { expected, .. } => write!(f, "must be {expected}"),
+            CaseError::NotFinite { .. } => write!(f, "not a finite number"),
+            CaseError::TooFewVertices { found } => {
+                let s = if *found == 1 { "point" } else { "points" };
+                write!(f, "{found} {s}, at least 3 are needed")
+            }
+            CaseError::WrongLength {
+                expected,
+                found,
+                what,
+                ..
+            } => {
+                write!(f, "{found} {what}, {expected} expected")
+            }
+            CaseError::NotPositive { value, .. } => write!(f, "{value} is not > 0"),
+            CaseError::OutOfRange { value, range, .. } => write!(f, "{value} is outside {range}"),
+            CaseError::DimensionMismatch { detail, .. } => write!(f, "2D and 3D mixed: {detail}"),
+            CaseError::SlabInverted { bottom, top } => {
+                write!(f, "top {top} is below bottom {bottom}")
+            }
+            CaseError::Clockwise { signed_area } => write!(
+                f,
+                "clockwise order (signed area {signed_area}); list the vertices counterclockwise"
+            ),
+        }
+    }
+}
+
+#[cfg(feature = "std")]
+impl std::error::Error for CaseError {}

@@ -172,11 +172,15 @@ mod tests {
         let tri = [v(0.0, 0.0), v(4.0, 0.0), v(2.0, 4.0)];
         let s = v(2.0, 1.0);
         assert_eq!(num_cross(&tri[..], s), 1);
-        let star = Perturbed { poly: &tri[..], s, buff: 0.1 };
+        let star = Perturbed {
+            poly: &tri[..],
+            s,
+            buff: 0.1,
+        };
         assert_eq!(star.vertex(2), v(1.8, 4.0));
         assert_eq!(num_cross(&star, s), 1);
         assert!(!definitely_outside(&tri[..], s, 0.1)); // inside: odd count
-        // A point above the apex: zero crossings, outside.
+                                                        // A point above the apex: zero crossings, outside.
         assert!(definitely_outside(&tri[..], v(2.0, 5.0), 0.1));
     }
 
@@ -187,7 +191,7 @@ mod tests {
         assert!(definitely_outside(sq, v(6.0, 2.0), 0.1)); // outside
         assert!(definitely_outside(sq, v(2.0, -1.0), 0.1)); // below: ray crosses twice
         assert!(!definitely_outside(sq, v(4.05, 2.0), 0.1)); // within BUFF of the right edge
-        // The point exactly BUFF = 0.5 from the right edge (exact in binary).
+                                                             // The point exactly BUFF = 0.5 from the right edge (exact in binary).
         assert!(definitely_outside(sq, v(4.5, 2.0), 0.5));
         assert!(!definitely_outside(sq, v(4.25, 2.0), 0.5));
     }

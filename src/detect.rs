@@ -84,7 +84,10 @@ pub struct Interval {
 
 impl Interval {
     /// The empty interval.
-    pub const EMPTY: Interval = Interval { lb: f64::INFINITY, ub: f64::NEG_INFINITY };
+    pub const EMPTY: Interval = Interval {
+        lb: f64::INFINITY,
+        ub: f64::NEG_INFINITY,
+    };
 
     /// [lb, ub].
     #[inline(always)]
@@ -104,7 +107,11 @@ impl Interval {
 #[inline(always)]
 fn roots(a: f64, b: f64, c: f64, disc: f64) -> (f64, f64) {
     let sq = sqrt(disc);
-    let q = if b >= 0.0 { -0.5 * (b + sq) } else { -0.5 * (b - sq) };
+    let q = if b >= 0.0 {
+        -0.5 * (b + sq)
+    } else {
+        -0.5 * (b - sq)
+    };
     let x1 = q / a;
     let x2 = c / q;
     if x1 <= x2 {
@@ -196,7 +203,14 @@ pub fn dot_nn(
     f: f64,
 ) -> Interval {
     let s2 = sigma2.value();
-    dot_nn_lin(t, aa.scale(f) + ww.scale(s2), bb.scale(f) + vv.scale(s2), aa, bb, sigma1)
+    dot_nn_lin(
+        t,
+        aa.scale(f) + ww.scale(s2),
+        bb.scale(f) + vv.scale(s2),
+        aa,
+        bb,
+        sigma1,
+    )
 }
 
 /// Both dot_nn intervals of one side σ2: their union is where σ2·X ≥ −F·g².
@@ -296,7 +310,16 @@ where
     }
     for i in 0..n {
         let j = p.next(i);
-        if edge_detect(t, s, v, p.vertex(i), p.vertex(j), vels.vertex(i), vels.vertex(j), f) {
+        if edge_detect(
+            t,
+            s,
+            v,
+            p.vertex(i),
+            p.vertex(j),
+            vels.vertex(i),
+            vels.vertex(j),
+            f,
+        ) {
             return true;
         }
     }
@@ -410,7 +433,11 @@ mod tests {
             if fk.abs() < 1e-9 {
                 continue;
             }
-            assert_eq!(fk >= 0.0, inside(&lo) || inside(&hi), "t = {tk}, f = {fk}, {lo:?} {hi:?}");
+            assert_eq!(
+                fk >= 0.0,
+                inside(&lo) || inside(&hi),
+                "t = {tk}, f = {fk}, {lo:?} {hi:?}"
+            );
         }
     }
 
@@ -418,29 +445,74 @@ mod tests {
     fn dot_nn_lin_cases() {
         // A = 0, B = 0: f = C.
         check_union(2.0, v(1.0, 0.0), v(0.0, 0.0), v(1.0, 0.0), v(0.0, 0.0)); // C = 1
-        assert!(dot_nn_lin(2.0, v(-1.0, 0.0), v(0.0, 0.0), v(1.0, 0.0), v(0.0, 0.0), Sign::Pos).is_empty());
+        assert!(dot_nn_lin(
+            2.0,
+            v(-1.0, 0.0),
+            v(0.0, 0.0),
+            v(1.0, 0.0),
+            v(0.0, 0.0),
+            Sign::Pos
+        )
+        .is_empty());
         // A = 0, B > 0: f = t − 1 ≥ 0 on [1, 2].
-        let i = dot_nn_lin(2.0, v(-1.0, 0.0), v(1.0, 0.0), v(1.0, 0.0), v(0.0, 0.0), Sign::Pos);
+        let i = dot_nn_lin(
+            2.0,
+            v(-1.0, 0.0),
+            v(1.0, 0.0),
+            v(1.0, 0.0),
+            v(0.0, 0.0),
+            Sign::Pos,
+        );
         assert_eq!(i, Interval::new(1.0, 2.0));
         // A = 0, B < 0: f = 1 − t ≥ 0 on [0, 1].
-        let i = dot_nn_lin(2.0, v(1.0, 0.0), v(-1.0, 0.0), v(1.0, 0.0), v(0.0, 0.0), Sign::Neg);
+        let i = dot_nn_lin(
+            2.0,
+            v(1.0, 0.0),
+            v(-1.0, 0.0),
+            v(1.0, 0.0),
+            v(0.0, 0.0),
+            Sign::Neg,
+        );
         assert_eq!(i, Interval::new(0.0, 1.0));
         // A > 0, two roots: (t − 1)(t − 3) = t² − 4t + 3 with ww = (−1,0), vv = (1,0),
         // aa = (−3,0), bb = (1,0): f = (t − 1)(t − 3).
         let (ww, vv, aa, bb) = (v(-1.0, 0.0), v(1.0, 0.0), v(-3.0, 0.0), v(1.0, 0.0));
-        assert_eq!(dot_nn_lin(4.0, ww, vv, aa, bb, Sign::Neg), Interval::new(0.0, 1.0));
-        assert_eq!(dot_nn_lin(4.0, ww, vv, aa, bb, Sign::Pos), Interval::new(3.0, 4.0));
+        assert_eq!(
+            dot_nn_lin(4.0, ww, vv, aa, bb, Sign::Neg),
+            Interval::new(0.0, 1.0)
+        );
+        assert_eq!(
+            dot_nn_lin(4.0, ww, vv, aa, bb, Sign::Pos),
+            Interval::new(3.0, 4.0)
+        );
         check_union(4.0, ww, vv, aa, bb);
         // A < 0: −(t − 1)(t − 3) ≥ 0 between the roots.
         let aa2 = v(3.0, 0.0);
         let bb2 = v(-1.0, 0.0);
-        assert_eq!(dot_nn_lin(4.0, ww, vv, aa2, bb2, Sign::Pos), Interval::new(1.0, 3.0));
+        assert_eq!(
+            dot_nn_lin(4.0, ww, vv, aa2, bb2, Sign::Pos),
+            Interval::new(1.0, 3.0)
+        );
         assert!(dot_nn_lin(4.0, ww, vv, aa2, bb2, Sign::Neg).is_empty());
         // A < 0, double root: −(t − 2)², ww = (−2,0), vv = (1,0), aa = (2,0), bb = (−1,0).
-        let i = dot_nn_lin(4.0, v(-2.0, 0.0), v(1.0, 0.0), v(2.0, 0.0), v(-1.0, 0.0), Sign::Pos);
+        let i = dot_nn_lin(
+            4.0,
+            v(-2.0, 0.0),
+            v(1.0, 0.0),
+            v(2.0, 0.0),
+            v(-1.0, 0.0),
+            Sign::Pos,
+        );
         assert_eq!(i, Interval::new(2.0, 2.0));
         // A > 0, double root: (t − 2)² ≥ 0 everywhere.
-        let i = dot_nn_lin(4.0, v(-2.0, 0.0), v(1.0, 0.0), v(-2.0, 0.0), v(1.0, 0.0), Sign::Pos);
+        let i = dot_nn_lin(
+            4.0,
+            v(-2.0, 0.0),
+            v(1.0, 0.0),
+            v(-2.0, 0.0),
+            v(1.0, 0.0),
+            Sign::Pos,
+        );
         assert_eq!(i, Interval::new(0.0, 4.0));
     }
 
@@ -474,7 +546,16 @@ mod tests {
         assert!(!edge_detect(0.3, s1, vs, a1, b1, va, vb, f));
         assert!(edge_detect(0.5, s1, vs, a1, b1, va, vb, f));
         // Either crossing alone is found in a window around it.
-        assert!(edge_detect(0.2, s.at(vs, 0.9), vs, a.at(va, 0.9), b.at(vb, 0.9), va, vb, f));
+        assert!(edge_detect(
+            0.2,
+            s.at(vs, 0.9),
+            vs,
+            a.at(va, 0.9),
+            b.at(vb, 0.9),
+            va,
+            vb,
+            f
+        ));
     }
 
     #[test]
@@ -486,25 +567,45 @@ mod tests {
         let vs = v(0.0, 1.0);
         // At t = 4 the square spans x ∈ [4, 6], y ∈ [0, 2] and s = (5, 1): inside.
         for (t, expect) in [(10.0, true), (2.5, false)] {
-            assert_eq!(detect_same_2d(t, s, vs, &sq[..], &vel_same[..], 0.01), expect, "T={t}");
-            assert_eq!(detect_diff_2d(t, s, vs, &sq[..], &vel_same[..], 1e-4, 0.01), expect, "T={t}");
+            assert_eq!(
+                detect_same_2d(t, s, vs, &sq[..], &vel_same[..], 0.01),
+                expect,
+                "T={t}"
+            );
+            assert_eq!(
+                detect_diff_2d(t, s, vs, &sq[..], &vel_same[..], 1e-4, 0.01),
+                expect,
+                "T={t}"
+            );
         }
     }
 
     #[test]
     fn slab_window_cases() {
         // Level flight inside the slab: whole lookahead.
-        assert_eq!(slab_window(10.0, 5.0, 0.0, 0.0, 10.0, 0.0), Some((0.0, 10.0)));
+        assert_eq!(
+            slab_window(10.0, 5.0, 0.0, 0.0, 10.0, 0.0),
+            Some((0.0, 10.0))
+        );
         // Above the slab, level: never.
         assert_eq!(slab_window(10.0, 15.0, 0.0, 0.0, 10.0, 0.0), None);
         // Climbing from −4 at 2 per unit: enters at 2, leaves at 7.
-        assert_eq!(slab_window(10.0, -4.0, 2.0, 0.0, 10.0, 0.0), Some((2.0, 7.0)));
+        assert_eq!(
+            slab_window(10.0, -4.0, 2.0, 0.0, 10.0, 0.0),
+            Some((2.0, 7.0))
+        );
         // Descending from 14 at −2: enters at 2, leaves at 7; lookahead 5 clips it.
-        assert_eq!(slab_window(5.0, 14.0, -2.0, 0.0, 10.0, 0.0), Some((2.0, 5.0)));
+        assert_eq!(
+            slab_window(5.0, 14.0, -2.0, 0.0, 10.0, 0.0),
+            Some((2.0, 5.0))
+        );
         // The slab rises with the point: relative speed 0.
         assert_eq!(slab_window(5.0, 1.0, 3.0, 0.0, 10.0, 3.0), Some((0.0, 5.0)));
         // Touching only at t = T exactly: a one-instant window.
-        assert_eq!(slab_window(2.0, -4.0, 2.0, 0.0, 10.0, 0.0), Some((2.0, 2.0)));
+        assert_eq!(
+            slab_window(2.0, -4.0, 2.0, 0.0, 10.0, 0.0),
+            Some((2.0, 2.0))
+        );
         assert_eq!(slab_window(1.5, -4.0, 2.0, 0.0, 10.0, 0.0), None);
     }
 
@@ -516,15 +617,67 @@ mod tests {
         // t ∈ [3, 5]. Vertically it descends from 20 at −2 into the slab [0, 10] at t = 5.
         let s = v(-3.0, 1.0);
         let vs = v(1.0, 0.0);
-        assert!(detect_3d(10.0, s, vs, 20.0, -2.0, &sq[..], &still[..], 0.0, 10.0, 0.0, 0.01, 1e-4));
+        assert!(detect_3d(
+            10.0,
+            s,
+            vs,
+            20.0,
+            -2.0,
+            &sq[..],
+            &still[..],
+            0.0,
+            10.0,
+            0.0,
+            0.01,
+            1e-4
+        ));
         // Descending slower (−1): enters the slab at t = 10, long after leaving the square.
-        assert!(!detect_3d(10.0, s, vs, 20.0, -1.0, &sq[..], &still[..], 0.0, 10.0, 0.0, 0.01, 1e-4));
+        assert!(!detect_3d(
+            10.0,
+            s,
+            vs,
+            20.0,
+            -1.0,
+            &sq[..],
+            &still[..],
+            0.0,
+            10.0,
+            0.0,
+            0.01,
+            1e-4
+        ));
         // A one-instant slab window (T = 5, descending at −2) at the moment the point is at
         // the square's right edge x = 2: within BUFF of it, so detected (a boundary case
         // the paper's (T, 0) sentinel would mishandle only when b − a = 0 is empty).
-        assert!(detect_3d(5.0, s, vs, 20.0, -2.0, &sq[..], &still[..], 0.0, 10.0, 0.0, 0.01, 1e-4));
+        assert!(detect_3d(
+            5.0,
+            s,
+            vs,
+            20.0,
+            -2.0,
+            &sq[..],
+            &still[..],
+            0.0,
+            10.0,
+            0.0,
+            0.01,
+            1e-4
+        ));
         // Warping polygon: the right side moves away, the point still enters.
         let warp = [v(0.0, 0.0), v(0.5, 0.0), v(0.5, 0.0), v(0.0, 0.0)];
-        assert!(detect_3d(10.0, s, vs, 20.0, -2.0, &sq[..], &warp[..], 0.0, 10.0, 0.0, 0.01, 1e-4));
+        assert!(detect_3d(
+            10.0,
+            s,
+            vs,
+            20.0,
+            -2.0,
+            &sq[..],
+            &warp[..],
+            0.0,
+            10.0,
+            0.0,
+            0.01,
+            1e-4
+        ));
     }
 }

@@ -42,22 +42,58 @@ mod tests {
     fn crossing_segments_are_close() {
         // The diagonals of the square [0,2]²: they cross at (1,1); no end is near the
         // other segment (distance √2 > 0.5), so only step 4's interior minimum (0) decides.
-        assert!(segments_close(v(0.0, 0.0), v(2.0, 2.0), v(0.0, 2.0), v(2.0, 0.0), 0.5));
+        assert!(segments_close(
+            v(0.0, 0.0),
+            v(2.0, 2.0),
+            v(0.0, 2.0),
+            v(2.0, 0.0),
+            0.5
+        ));
     }
 
     #[test]
     fn parallel_segments_at_exactly_buff_are_not_close() {
         // y = 0 and y = 1 over x ∈ [0, 4]: distance exactly 1 = BUFF (strict test: false);
         // disc = c² − 4ab = 64 − 64 = 0 here.
-        assert!(!segments_close(v(0.0, 0.0), v(4.0, 0.0), v(0.0, 1.0), v(4.0, 1.0), 1.0));
-        assert!(segments_close(v(0.0, 0.0), v(4.0, 0.0), v(0.0, 1.0), v(4.0, 1.0), 1.0 + 1.0 / 1024.0));
+        assert!(!segments_close(
+            v(0.0, 0.0),
+            v(4.0, 0.0),
+            v(0.0, 1.0),
+            v(4.0, 1.0),
+            1.0
+        ));
+        assert!(segments_close(
+            v(0.0, 0.0),
+            v(4.0, 0.0),
+            v(0.0, 1.0),
+            v(4.0, 1.0),
+            1.0 + 1.0 / 1024.0
+        ));
     }
 
     #[test]
     fn far_segments_are_not_close() {
-        assert!(!segments_close(v(0.0, 0.0), v(1.0, 0.0), v(3.0, 3.0), v(4.0, 5.0), 1.0));
+        assert!(!segments_close(
+            v(0.0, 0.0),
+            v(1.0, 0.0),
+            v(3.0, 3.0),
+            v(4.0, 5.0),
+            1.0
+        ));
         // A T-junction gap of 0.25: close for BUFF 0.5, not for BUFF 0.25.
-        assert!(segments_close(v(0.0, 0.0), v(4.0, 0.0), v(2.0, 0.25), v(2.0, 3.0), 0.5));
-        assert!(!segments_close(v(0.0, 0.0), v(4.0, 0.0), v(2.0, 0.25), v(2.0, 3.0), 0.25));
+        assert!(segments_close(
+            v(0.0, 0.0),
+            v(4.0, 0.0),
+            v(2.0, 0.25),
+            v(2.0, 3.0),
+            0.5
+        ));
+        assert!(!segments_close(
+            v(0.0, 0.0),
+            v(4.0, 0.0),
+            v(2.0, 0.25),
+            v(2.0, 3.0),
+            0.25
+        ));
     }
 }

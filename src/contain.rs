@@ -44,6 +44,14 @@ impl<P: VertexSeq> VertexSeq for Perturbed<P> {
 /// a quadratic in r handed to quad_min_le_D with D = BUFF².
 #[inline]
 pub fn near_edge(pi: Vect2, pj: Vect2, s: Vect2, buff: f64) -> bool {
+    // Filter: s farther than BUFF from the segment's bounding box in x or y (exact
+    // answer false; the paper's formulas, rounded, could only add a false alarm here).
+    let twice = 2.0 * buff;
+    if pr::ranges_apart(pi.x.min(pj.x), pi.x.max(pj.x), s.x, s.x, twice)
+        || pr::ranges_apart(pi.y.min(pj.y), pi.y.max(pj.y), s.y, s.y, twice)
+    {
+        return false;
+    }
     if pr::within_buff(pi, s, buff) || pr::within_buff(pj, s, buff) {
         return true;
     }

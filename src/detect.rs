@@ -11,8 +11,9 @@ use crate::vect2::{sqrt, Vect2};
 /// Paper A §II.H detect_same_2D: does s + t·v come within BUFF of the statically shaped
 /// polygon P + t·V (all v_i equal) for some t ∈ [0, T]?
 ///
-/// 1. s not definitely outside P → true; 2. s + T·v not definitely outside P + T·V →
-/// true; 3. some edge with segments_close(s, s + T·(v − v_i), p_i, p_j, BUFF) → true.
+/// Step 1: s not definitely outside P → true. Step 2: s + T·v not definitely outside
+/// P + T·V → true. Step 3: some edge with segments_close(s, s + T·(v − v_i), p_i, p_j,
+/// BUFF) → true.
 #[inline]
 pub fn detect_same_2d<P, V>(t: f64, s: Vect2, v: Vect2, p: &P, vels: &V, buff: f64) -> bool
 where
@@ -268,6 +269,71 @@ pub fn edge_detect_simp(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2, f: f
     false
 }
 
+/// Filter in front of edge_detect: the boxes swept by the point over [0, T] and by the
+/// edge over [0, T] are farther apart than any time edge_detect_simp could accept.
+///
+/// The edge at time t lies in the box of p_i, p_j, p_i + T·v_i, p_j + T·v_j (each end moves
+/// on a segment, the edge is their convex combination), the point in the box of s and
+/// s + T·v. A time accepted by edge_detect_simp puts the point within (1 + F)·‖aa‖ of the
+/// midpoint along the edge and F·‖aa‖ across it, so within 2F·‖aa(t)‖ ≤ 2F·L of the edge,
+/// with L = max(‖aa(0)‖₁, ‖aa(T)‖₁) (a norm is convex in t; ‖·‖₁ ≥ ‖·‖₂). The margin is
+/// doubled for [`pr::ranges_apart`] and widened by [`pr::SWEEP_ROUNDING`] for rounding.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn swept_boxes_apart(
+    t: f64,
+    s: Vect2,
+    v: Vect2,
+    pi: Vect2,
+    pj: Vect2,
+    vi: Vect2,
+    vj: Vect2,
+    f: f64,
+) -> bool {
+    let (qi, qj, st) = (pi.at(vi, t), pj.at(vj, t), s.at(v, t));
+    let l0 = (pj.x - pi.x).abs() + (pj.y - pi.y).abs();
+    let l1 = (qj.x - qi.x).abs() + (qj.y - qi.y).abs();
+    let ex_lo = pi.x.min(pj.x).min(qi.x.min(qj.x));
+    let ex_hi = pi.x.max(pj.x).max(qi.x.max(qj.x));
+    let ey_lo = pi.y.min(pj.y).min(qi.y.min(qj.y));
+    let ey_hi = pi.y.max(pj.y).max(qi.y.max(qj.y));
+    let (sx_lo, sx_hi) = (s.x.min(st.x), s.x.max(st.x));
+    let (sy_lo, sy_hi) = (s.y.min(st.y), s.y.max(st.y));
+    let m = ex_lo
+        .abs()
+        .max(ex_hi.abs())
+        .max(ey_lo.abs().max(ey_hi.abs()))
+        .max(
+            sx_lo
+                .abs()
+                .max(sx_hi.abs())
+                .max(sy_lo.abs().max(sy_hi.abs())),
+        );
+    let twice = 2.0 * (2.0 * f * l0.max(l1)) + pr::SWEEP_ROUNDING * m;
+    if pr::ranges_apart(ex_lo, ex_hi, sx_lo, sx_hi, twice)
+        || pr::ranges_apart(ey_lo, ey_hi, sy_lo, sy_hi, twice)
+    {
+        return true;
+    }
+    // The four swept corners on one side of the point's path line, beyond 2F·L: the
+    // edge (in their convex hull at every t) never comes within the F slack of the path.
+    // The rounded corners and path end are within a few 2⁻⁵³·M of the exact ones, which
+    // SWEEP_ROUNDING·M covers.
+    if s != st {
+        let slack = 2.0 * f * l0.max(l1) + pr::SWEEP_ROUNDING * m;
+        for side in [1.0, -1.0] {
+            if pr::beyond_line(s, st, pi, side, slack)
+                && pr::beyond_line(s, st, pj, side, slack)
+                && pr::beyond_line(s, st, qi, side, slack)
+                && pr::beyond_line(s, st, qj, side, slack)
+            {
+                return true;
+            }
+        }
+    }
+    false
+}
+
 /// Paper A §II.I eq (2) edge_detect: does s + t·v meet the moving segment
 /// (p_i + t·v_i, p_j + t·v_j) for some t ∈ [0, T] (within the F slack)?
 ///
@@ -285,6 +351,9 @@ pub fn edge_detect(
     vj: Vect2,
     f: f64,
 ) -> bool {
+    if swept_boxes_apart(t, s, v, pi, pj, vi, vj, f) {
+        return false;
+    }
     let ww = s - (pj.scale(0.5) + pi.scale(0.5));
     let vv = v - (vj.scale(0.5) + vi.scale(0.5));
     let aa = pj.scale(0.5) - pi.scale(0.5);

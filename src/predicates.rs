@@ -8,7 +8,9 @@
 //!
 //! NaN policy: a NaN can only come from overflow (inputs are validated finite). Where the
 //! decision has a "safe" side (the one that leads towards a detection) the predicate is
-//! written so that NaN lands there; the doc comment says which.
+//! written so that NaN lands there; the doc comment says which. That is why some tests
+//! are written as negated comparisons, which clippy would otherwise rewrite.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use crate::vect2::Vect2;
 
@@ -159,4 +161,43 @@ pub fn window_nonempty(a: f64, b: f64) -> bool {
 #[inline(always)]
 pub fn same_velocity(a: Vect2, b: Vect2) -> bool {
     a == b
+}
+
+// ---------------------------------------------------------------- filters
+
+/// A cheap, rigorous "far apart" test: the x-ranges [a_lo, a_hi] and [b_lo, b_hi] are
+/// separated by more than `margin`, judged from one rounded subtraction each.
+///
+/// fl(b_lo − a_hi) has relative error ≤ 2⁻⁵³, so fl(b_lo − a_hi) > 2·m implies
+/// b_lo − a_hi > 2m/(1 + 2⁻⁵³) > m: callers pass twice the distance they need to exceed.
+#[inline(always)]
+pub fn ranges_apart(a_lo: f64, a_hi: f64, b_lo: f64, b_hi: f64, twice_margin: f64) -> bool {
+    b_lo - a_hi > twice_margin || a_lo - b_hi > twice_margin
+}
+
+/// Relative size of the rounding allowance in the swept-box filter of edge_detect:
+/// forming p + T·v and a box gap takes ≤ 4 roundings of ≤ 2⁻⁵³ of the largest magnitude
+/// M involved; 2⁻⁴⁰·M covers them with a factor 2¹¹ to spare.
+pub const SWEEP_ROUNDING: f64 = 1.0 / ((1u64 << 40) as f64);
+
+/// Unit roundoff of f64, 2⁻⁵³.
+const U: f64 = 1.0 / ((1u64 << 53) as f64);
+
+/// Rigorous one-sided test: is point p farther than `dist` from the line through a and
+/// b, on the side given by `side` (+1 left of a→b, −1 right)? Answers false when unsure.
+///
+/// orient = (b − a) × (p − a) is computed in f64; Shewchuk's bound
+/// |fl(orient) − orient| ≤ (3u + 16u²)·(|b_x − a_x|·|p_y − a_y| + |b_y − a_y|·|p_x − a_x|)
+/// is taken as 8u·(…) to cover the rounding of the bound itself. The test asks
+/// side·fl(orient) − bound > 2·dist·‖b − a‖₁, so the exact orient exceeds
+/// dist·‖b − a‖₁ ≥ dist·‖b − a‖₂: the exact distance to the line exceeds `dist`.
+#[inline(always)]
+pub fn beyond_line(a: Vect2, b: Vect2, p: Vect2, side: f64, dist: f64) -> bool {
+    let d = b - a;
+    let w = p - a;
+    let l = d.x * w.y;
+    let r = d.y * w.x;
+    let orient = l - r;
+    let bound = 8.0 * U * (l.abs() + r.abs());
+    side * orient - bound > 2.0 * dist * (d.x.abs() + d.y.abs())
 }

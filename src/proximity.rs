@@ -1,6 +1,7 @@
 //! Paper A §II.G: do two segments come within BUFF of each other?
 
 use crate::contain::near_edge;
+use crate::predicates as pr;
 use crate::quad::quad_min_box_le_d;
 use crate::vect2::Vect2;
 
@@ -11,6 +12,27 @@ use crate::vect2::Vect2;
 /// BUFF² for some r, t ∈ [0, 1], with q = c − e, u = d − c, w = f − e.
 #[inline]
 pub fn segments_close(c: Vect2, d: Vect2, e: Vect2, f: Vect2, buff: f64) -> bool {
+    // Filter: bounding boxes more than BUFF apart in x or y (see predicates::ranges_apart).
+    let twice = 2.0 * buff;
+    if pr::ranges_apart(
+        c.x.min(d.x),
+        c.x.max(d.x),
+        e.x.min(f.x),
+        e.x.max(f.x),
+        twice,
+    ) || pr::ranges_apart(
+        c.y.min(d.y),
+        c.y.max(d.y),
+        e.y.min(f.y),
+        e.y.max(f.y),
+        twice,
+    ) {
+        return false;
+    }
+    // Filter: both ends of one segment beyond BUFF on one side of the other's line.
+    if lines_separate(c, d, e, f, buff) || lines_separate(e, f, c, d, buff) {
+        return false;
+    }
     if near_edge(e, f, c, buff) || near_edge(e, f, d, buff) {
         return true;
     }
@@ -29,6 +51,14 @@ pub fn segments_close(c: Vect2, d: Vect2, e: Vect2, f: Vect2, buff: f64) -> bool
         q.sq(),
         buff * buff,
     )
+}
+
+/// Are e and f both farther than `dist` from the line through c and d, on the same side?
+/// Then no point of segment e f is within `dist` of segment c d.
+#[inline(always)]
+fn lines_separate(c: Vect2, d: Vect2, e: Vect2, f: Vect2, dist: f64) -> bool {
+    (pr::beyond_line(c, d, e, 1.0, dist) && pr::beyond_line(c, d, f, 1.0, dist))
+        || (pr::beyond_line(c, d, e, -1.0, dist) && pr::beyond_line(c, d, f, -1.0, dist))
 }
 
 #[cfg(test)]

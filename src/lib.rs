@@ -1,4 +1,14 @@
+//! polyguard: does a moving point enter a moving (possibly warping) polygon?
+//!
+//! The f64 engine of paper A (Narkawicz & Hagen): [`quad`] (§I), [`contain`] (§II.B–E),
+//! [`proximity`] (§II.G), [`detect`] (§II.H, §II.I, §III), [`well_formed`] (§II.J), every
+//! sign decision in [`predicates`]. The high-level entry point is `api::detect`.
 #![cfg_attr(not(feature = "std"), no_std)]
+
+/// The README's examples, compiled and run as doctests.
+#[cfg(all(doctest, feature = "std"))]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
 
 #[cfg(feature = "earth")]
 pub mod conflict;

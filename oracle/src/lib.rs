@@ -1,1 +1,44 @@
-pub fn placeholder() {}
+//! polyguard-oracle: paper A (Narkawicz & Hagen, "Algorithms for collision
+//! detection between a point and a moving polygon") evaluated in exact rational
+//! arithmetic, and the exact ground truth of a detection case.
+//!
+//! Module for module it mirrors the binary-float engine, but it is written from the
+//! paper alone. No binary floating point is used in any decision: inputs are
+//! converted exactly ([`convert`], the only module that touches floats), square
+//! roots are never taken (numbers (p + q√d)/r are ordered by sign analysis in
+//! [`qfield`]).
+//!
+//! ```
+//! use polyguard_oracle::{paper_detect, truth, CaseF64, ExactCase, Q, Truth};
+//! let square = [[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]];
+//! let c = CaseF64 { lookahead: 10.0, buff: 0.01, fac: 1e-4, pos: &[-5.0, 5.0],
+//!     vel: &[1.0, 0.0], vertices: &square, velocities: &[], slab: None };
+//! let exact = ExactCase::<Q>::from_f64(&c).unwrap();
+//! assert!(paper_detect(&exact).detected);
+//! match truth(&exact) {
+//!     Truth::Enters { entry_time } => assert_eq!(entry_time.as_rational_string().as_deref(), Some("5/1")),
+//!     other => panic!("{other:?}"),
+//! }
+//! ```
+
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+pub mod case;
+pub mod contain;
+pub mod convert;
+pub mod detect;
+pub mod field;
+pub mod geom;
+pub mod proximity;
+pub mod qfield;
+pub mod quad;
+pub mod truth;
+pub mod well_formed;
+
+pub use case::{paper_detect, CaseStr, ExactCase, OracleError, PaperAnswer, Vertical};
+pub use convert::CaseF64;
+#[cfg(feature = "rug")]
+pub use field::R;
+pub use field::{ExactField, Q, V2};
+pub use truth::{truth, ExactTime, Truth};

@@ -1,0 +1,296 @@
+//! A detection case in exact numbers (spec/cases.md), its validation, and the
+//! paper's choice of detection function (paper A §II.F and §III).
+
+use core::fmt;
+
+use crate::convert::{parse_rational, raw_from_f64, CaseF64};
+use crate::detect::{all_equal, detect_3d, detect_diff_2d, detect_same_2d};
+use crate::field::{ExactField, V2};
+
+/// A case that breaks a rule of spec/cases.md; `field` is the spec's field name.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct OracleError {
+    /// The offending field, as the spec names it (e.g. "polygon.vertices").
+    pub field: &'static str,
+    /// What is wrong with it.
+    pub message: String,
+}
+
+impl OracleError {
+    pub(crate) fn new(field: &'static str, message: impl Into<String>) -> Self {
+        OracleError {
+            field,
+            message: message.into(),
+        }
+    }
+}
+
+impl fmt::Display for OracleError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: {}", self.field, self.message)
+    }
+}
+
+impl std::error::Error for OracleError {}
+
+/// The vertical part of a 3D case (paper A §III).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Vertical<F> {
+    /// s_z, the point's height at time 0.
+    pub sz: F,
+    /// v_z, the point's vertical speed.
+    pub vz: F,
+    /// pmin, the slab's bottom at time 0.
+    pub bottom: F,
+    /// pmax, the slab's top at time 0.
+    pub top: F,
+    /// vsp, the slab's vertical speed.
+    pub vsp: F,
+}
+
+/// A validated case in exact numbers.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ExactCase<F> {
+    /// T > 0.
+    pub lookahead: F,
+    /// BUFF > 0.
+    pub buff: F,
+    /// F ∈ (0, 1).
+    pub fac: F,
+    /// s (horizontal).
+    pub s: V2<F>,
+    /// v (horizontal).
+    pub v: V2<F>,
+    /// P, at least 3 vertices.
+    pub vertices: Vec<V2<F>>,
+    /// V, one per vertex.
+    pub velocities: Vec<V2<F>>,
+    /// The vertical data when the case is 3D.
+    pub vertical: Option<Vertical<F>>,
+}
+
+/// A case written with exact rationals as strings ("p/q", "p" or "-1.25").
+#[derive(Clone, Copy, Debug)]
+pub struct CaseStr<'a> {
+    /// T.
+    pub lookahead: &'a str,
+    /// BUFF.
+    pub buff: &'a str,
+    /// F.
+    pub fac: &'a str,
+    /// s, 2 or 3 numbers.
+    pub pos: &'a [&'a str],
+    /// v, same length as `pos`.
+    pub vel: &'a [&'a str],
+    /// P.
+    pub vertices: &'a [[&'a str; 2]],
+    /// V (empty means all zero).
+    pub velocities: &'a [[&'a str; 2]],
+    /// bottom, top, vz when 3D.
+    pub slab: Option<[&'a str; 3]>,
+}
+
+/// Raw exact components before the rules are checked.
+pub(crate) struct Raw<F> {
+    pub(crate) lookahead: F,
+    pub(crate) buff: F,
+    pub(crate) fac: F,
+    pub(crate) pos: Vec<F>,
+    pub(crate) vel: Vec<F>,
+    pub(crate) vertices: Vec<V2<F>>,
+    pub(crate) velocities: Vec<V2<F>>,
+    pub(crate) slab: Option<[F; 3]>,
+}
+
+impl<F: ExactField> ExactCase<F> {
+    /// The exact case denoted by an engine case (every finite binary float is a rational).
+    pub fn from_f64(c: &CaseF64<'_>) -> Result<Self, OracleError> {
+        Self::from_raw(raw_from_f64(c)?)
+    }
+
+    /// The case written with exact rational strings.
+    pub fn from_strs(c: &CaseStr<'_>) -> Result<Self, OracleError> {
+        fn num<F: ExactField>(field: &'static str, x: &str) -> Result<F, OracleError> {
+            parse_rational(x).ok_or_else(|| {
+                OracleError::new(
+                    field,
+                    format!("{x:?} is not an exact rational (p/q, integer or decimal)"),
+                )
+            })
+        }
+        fn list<F: ExactField>(field: &'static str, xs: &[&str]) -> Result<Vec<F>, OracleError> {
+            xs.iter().map(|x| num(field, x)).collect()
+        }
+        fn pts<F: ExactField>(
+            field: &'static str,
+            xs: &[[&str; 2]],
+        ) -> Result<Vec<V2<F>>, OracleError> {
+            xs.iter()
+                .map(|p| Ok(V2::new(num(field, p[0])?, num(field, p[1])?)))
+                .collect()
+        }
+        let slab = match c.slab {
+            None => None,
+            Some([b, t, z]) => Some([
+                num("polygon.bottom", b)?,
+                num("polygon.top", t)?,
+                num("polygon.vz", z)?,
+            ]),
+        };
+        Self::from_raw(Raw {
+            lookahead: num("lookahead", c.lookahead)?,
+            buff: num("buff", c.buff)?,
+            fac: num("fac", c.fac)?,
+            pos: list("point.pos", c.pos)?,
+            vel: list("point.vel", c.vel)?,
+            vertices: pts("polygon.vertices", c.vertices)?,
+            velocities: pts("polygon.velocities", c.velocities)?,
+            slab,
+        })
+    }
+
+    fn from_raw(r: Raw<F>) -> Result<Self, OracleError> {
+        let zero = F::zero();
+        if r.lookahead <= zero {
+            return Err(OracleError::new("lookahead", "must be > 0"));
+        }
+        if r.buff <= zero {
+            return Err(OracleError::new("buff", "must be > 0"));
+        }
+        if r.fac <= zero || r.fac >= F::one() {
+            return Err(OracleError::new("fac", "must satisfy 0 < fac < 1"));
+        }
+        if r.pos.len() != 2 && r.pos.len() != 3 {
+            return Err(OracleError::new(
+                "point.pos",
+                format!("{} numbers, 2 or 3 are needed", r.pos.len()),
+            ));
+        }
+        if r.vel.len() != r.pos.len() {
+            return Err(OracleError::new(
+                "point.vel",
+                format!(
+                    "{} numbers, the same as point.pos ({}) are needed",
+                    r.vel.len(),
+                    r.pos.len()
+                ),
+            ));
+        }
+        let n = r.vertices.len();
+        if n < 3 {
+            return Err(OracleError::new(
+                "polygon.vertices",
+                format!("{n} points, at least 3 are needed"),
+            ));
+        }
+        let velocities = if r.velocities.is_empty() {
+            vec![V2::zero(); n]
+        } else if r.velocities.len() != n {
+            return Err(OracleError::new(
+                "polygon.velocities",
+                format!("{} velocities for {n} vertices", r.velocities.len()),
+            ));
+        } else {
+            r.velocities
+        };
+        let vertical = match (r.pos.len(), r.slab) {
+            (2, None) => None,
+            (3, Some([bottom, top, vsp])) => Some(Vertical {
+                sz: r.pos[2].clone(),
+                vz: r.vel[2].clone(),
+                bottom,
+                top,
+                vsp,
+            }),
+            (3, None) => {
+                return Err(OracleError::new(
+                    "polygon.bottom",
+                    "the point is 3D but the polygon has no bottom/top/vz (2D/3D mixed)",
+                ))
+            }
+            _ => {
+                return Err(OracleError::new(
+                    "point.pos",
+                    "the polygon has bottom/top/vz but the point is 2D (2D/3D mixed)",
+                ))
+            }
+        };
+        let s = V2::new(r.pos[0].clone(), r.pos[1].clone());
+        let v = V2::new(r.vel[0].clone(), r.vel[1].clone());
+        Ok(ExactCase {
+            lookahead: r.lookahead,
+            buff: r.buff,
+            fac: r.fac,
+            s,
+            v,
+            vertices: r.vertices,
+            velocities,
+            vertical,
+        })
+    }
+
+    /// Whether all vertex velocities are equal (a statically shaped polygon).
+    pub fn is_static(&self) -> bool {
+        all_equal(&self.velocities)
+    }
+}
+
+/// What paper A's algorithm, evaluated exactly, answers for a case.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PaperAnswer {
+    /// The paper's answer.
+    pub detected: bool,
+    /// "detect_same_2d", "detect_diff_2d" or "detect_3d".
+    pub decided_by: &'static str,
+}
+
+/// Paper A §II.F and §III: detect_same_2D for equal vertex velocities,
+/// detect_diff_2D otherwise, detect_3D for a 3D case — all evaluated exactly.
+pub fn paper_detect<F: ExactField>(c: &ExactCase<F>) -> PaperAnswer {
+    if let Some(z) = &c.vertical {
+        let detected = detect_3d(
+            &c.lookahead,
+            &c.s,
+            &c.v,
+            &z.sz,
+            &z.vz,
+            &c.vertices,
+            &c.velocities,
+            &z.bottom,
+            &z.top,
+            &z.vsp,
+            &c.buff,
+            &c.fac,
+        );
+        return PaperAnswer {
+            detected,
+            decided_by: "detect_3d",
+        };
+    }
+    if c.is_static() {
+        PaperAnswer {
+            detected: detect_same_2d(
+                &c.lookahead,
+                &c.s,
+                &c.v,
+                &c.vertices,
+                &c.velocities,
+                &c.buff,
+            ),
+            decided_by: "detect_same_2d",
+        }
+    } else {
+        PaperAnswer {
+            detected: detect_diff_2d(
+                &c.lookahead,
+                &c.s,
+                &c.v,
+                &c.vertices,
+                &c.velocities,
+                &c.fac,
+                &c.buff,
+            ),
+            decided_by: "detect_diff_2d",
+        }
+    }
+}

@@ -1,0 +1,178 @@
+//! The only module of the oracle that touches binary floating point: exact
+//! conversion of finite f64 values to rationals, the f64 form of a case, and the
+//! parsing of exact rationals written as strings ("p/q", "p", "-1.25").
+//!
+//! Every finite f64 is a dyadic rational m·2^e, so the conversion loses nothing.
+
+use crate::case::{OracleError, Raw};
+use crate::field::{ExactField, V2};
+
+/// A case as the f64 engine sees it (spec/cases.md), borrowed.
+#[derive(Clone, Copy, Debug)]
+pub struct CaseF64<'a> {
+    /// T, the lookahead time.
+    pub lookahead: f64,
+    /// BUFF, the buffer distance.
+    pub buff: f64,
+    /// F, the small fraction.
+    pub fac: f64,
+    /// s = (x, y) or (x, y, z).
+    pub pos: &'a [f64],
+    /// v, same length as `pos`.
+    pub vel: &'a [f64],
+    /// P = p0 … pn.
+    pub vertices: &'a [[f64; 2]],
+    /// V = v0 … vn (an empty slice means all zero).
+    pub velocities: &'a [[f64; 2]],
+    /// bottom, top, vz of the vertical slab (paper A §III), when the case is 3D.
+    pub slab: Option<[f64; 3]>,
+}
+
+/// The exact value of a finite f64 (`None` for NaN and ±∞).
+pub fn f64_to_exact<F: ExactField>(x: f64) -> Option<F> {
+    if !x.is_finite() {
+        return None;
+    }
+    let bits = x.to_bits();
+    let neg = (bits >> 63) == 1;
+    let biased = ((bits >> 52) & 0x7ff) as i32;
+    let frac = bits & ((1u64 << 52) - 1);
+    let (mant, exp) = if biased == 0 {
+        (frac, -1074)
+    } else {
+        (frac | (1u64 << 52), biased - 1075)
+    };
+    Some(F::from_dyadic(neg, mant, exp))
+}
+
+fn num<F: ExactField>(field: &'static str, x: f64) -> Result<F, OracleError> {
+    f64_to_exact(x).ok_or_else(|| OracleError::new(field, "not a finite number"))
+}
+
+fn list<F: ExactField>(field: &'static str, xs: &[f64]) -> Result<Vec<F>, OracleError> {
+    xs.iter().map(|&x| num(field, x)).collect()
+}
+
+fn pts<F: ExactField>(field: &'static str, xs: &[[f64; 2]]) -> Result<Vec<V2<F>>, OracleError> {
+    xs.iter()
+        .map(|p| Ok(V2::new(num(field, p[0])?, num(field, p[1])?)))
+        .collect()
+}
+
+/// The exact components of an f64 case, each checked finite (the remaining
+/// rules are checked by `ExactCase`).
+pub(crate) fn raw_from_f64<F: ExactField>(c: &CaseF64<'_>) -> Result<Raw<F>, OracleError> {
+    let slab = match c.slab {
+        None => None,
+        Some([b, t, z]) => Some([
+            num("polygon.bottom", b)?,
+            num("polygon.top", t)?,
+            num("polygon.vz", z)?,
+        ]),
+    };
+    Ok(Raw {
+        lookahead: num("lookahead", c.lookahead)?,
+        buff: num("buff", c.buff)?,
+        fac: num("fac", c.fac)?,
+        pos: list("point.pos", c.pos)?,
+        vel: list("point.vel", c.vel)?,
+        vertices: pts("polygon.vertices", c.vertices)?,
+        velocities: pts("polygon.velocities", c.velocities)?,
+        slab,
+    })
+}
+
+fn all_digits(s: &str) -> bool {
+    !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit())
+}
+
+/// Parse an exact rational: "p/q" (q ≠ 0), an integer "p", or a plain decimal
+/// "-12.5" (read exactly as 125/10). Surrounding spaces are ignored. `None`
+/// for anything else.
+pub fn parse_rational<F: ExactField>(s: &str) -> Option<F> {
+    let s = s.trim();
+    if let Some((n, d)) = s.split_once('/') {
+        let n = n.trim();
+        let d = d.trim();
+        let nd = n.strip_prefix(['-', '+']).unwrap_or(n);
+        let (dneg, dd) = match d.strip_prefix('-') {
+            Some(rest) => (true, rest),
+            None => (false, d.strip_prefix('+').unwrap_or(d)),
+        };
+        if !all_digits(nd) || !all_digits(dd) {
+            return None;
+        }
+        let nneg = n.starts_with('-');
+        let num = if nneg != dneg {
+            format!("-{nd}")
+        } else {
+            nd.to_string()
+        };
+        return F::from_int_strs(&num, dd);
+    }
+    let (neg, body) = match s.strip_prefix('-') {
+        Some(rest) => (true, rest),
+        None => (false, s.strip_prefix('+').unwrap_or(s)),
+    };
+    let (int_part, frac_part) = match body.split_once('.') {
+        Some((i, f)) => (i, f),
+        None => (body, ""),
+    };
+    if int_part.is_empty() && frac_part.is_empty() {
+        return None;
+    }
+    if !(int_part.is_empty() || all_digits(int_part))
+        || !(frac_part.is_empty() || all_digits(frac_part))
+    {
+        return None;
+    }
+    let mut num = String::with_capacity(body.len() + 1);
+    if neg {
+        num.push('-');
+    }
+    num.push_str(if int_part.is_empty() { "0" } else { int_part });
+    num.push_str(frac_part);
+    let mut den = String::with_capacity(frac_part.len() + 1);
+    den.push('1');
+    for _ in 0..frac_part.len() {
+        den.push('0');
+    }
+    F::from_int_strs(&num, &den)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::field::Q;
+    use num_bigint::BigInt;
+
+    #[test]
+    fn f64_exact() {
+        // 0.1 = 3602879701896397 / 2^55 exactly.
+        let x: Q = f64_to_exact(0.1).expect("finite");
+        assert_eq!(*x.numer(), BigInt::from(3602879701896397u64));
+        assert_eq!(*x.denom(), BigInt::from(1u64 << 55));
+        let y: Q = f64_to_exact(-2.5).expect("finite");
+        assert_eq!(y, Q::new(BigInt::from(-5), BigInt::from(2)));
+        let tiny: Q = f64_to_exact(f64::from_bits(1)).expect("finite");
+        assert_eq!(tiny, Q::new(BigInt::from(1), BigInt::from(2).pow(1074)));
+        assert!(f64_to_exact::<Q>(f64::NAN).is_none());
+        assert!(f64_to_exact::<Q>(f64::INFINITY).is_none());
+        let z: Q = f64_to_exact(-0.0).expect("finite");
+        assert_eq!(z, Q::from_i64(0));
+    }
+
+    #[test]
+    fn strings() {
+        let h = |s: &str| parse_rational::<Q>(s);
+        assert_eq!(h("3/4"), Some(Q::new(BigInt::from(3), BigInt::from(4))));
+        assert_eq!(h("-3/-4"), Some(Q::new(BigInt::from(3), BigInt::from(4))));
+        assert_eq!(h("3/-4"), Some(Q::new(BigInt::from(-3), BigInt::from(4))));
+        assert_eq!(h("-1.25"), Some(Q::new(BigInt::from(-5), BigInt::from(4))));
+        assert_eq!(h(".5"), Some(Q::new(BigInt::from(1), BigInt::from(2))));
+        assert_eq!(h("7"), Some(Q::from_i64(7)));
+        for bad in ["", "1/0", "a", "1/", "/2", "1.2.3", "-", ".", "1e3", "--1"] {
+            assert_eq!(h(bad), None, "{bad}");
+        }
+    }
+}

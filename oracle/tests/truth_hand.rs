@@ -1,0 +1,289 @@
+//! Hand-computed ground truths (entry times derived in the comments).
+
+use polyguard_oracle::truth::earliest_contact;
+use polyguard_oracle::{truth, CaseF64, CaseStr, ExactCase, Truth, Q, V2};
+
+fn q(s: &str) -> Q {
+    polyguard_oracle::convert::parse_rational(s).expect("valid test rational")
+}
+
+fn p(x: &str, y: &str) -> V2<Q> {
+    V2::new(q(x), q(y))
+}
+
+const SQUARE: [[&str; 2]; 4] = [["0", "0"], ["10", "0"], ["10", "10"], ["0", "10"]];
+
+fn case2d(
+    t: &str,
+    pos: [&str; 2],
+    vel: [&str; 2],
+    verts: &[[&str; 2]],
+    vels: &[[&str; 2]],
+) -> ExactCase<Q> {
+    let c = CaseStr {
+        lookahead: t,
+        buff: "1/100",
+        fac: "1/10000",
+        pos: &pos,
+        vel: &vel,
+        vertices: verts,
+        velocities: vels,
+        slab: None,
+    };
+    ExactCase::from_strs(&c).expect("valid test case")
+}
+
+fn entry(t: &Truth) -> Option<String> {
+    match t {
+        Truth::Enters { entry_time } => entry_time.as_rational_string(),
+        _ => None,
+    }
+}
+
+#[test]
+fn static_square_entries() {
+    // (−5, 5) moving right at 1 reaches x = 0 at t = 5.
+    assert_eq!(
+        entry(&truth(&case2d("10", ["-5", "5"], ["1", "0"], &SQUARE, &[]))).as_deref(),
+        Some("5/1")
+    );
+    // Exactly at t = T = 5 (closed interval), and missed with T = 49/10.
+    assert_eq!(
+        entry(&truth(&case2d("5", ["-5", "5"], ["1", "0"], &SQUARE, &[]))).as_deref(),
+        Some("5/1")
+    );
+    assert_eq!(
+        truth(&case2d("49/10", ["-5", "5"], ["1", "0"], &SQUARE, &[])),
+        Truth::Misses
+    );
+    // Starting on the boundary: t = 0. Inside: t = 0.
+    assert_eq!(
+        entry(&truth(&case2d("1", ["0", "5"], ["-1", "0"], &SQUARE, &[]))).as_deref(),
+        Some("0/1")
+    );
+    assert_eq!(
+        entry(&truth(&case2d("1", ["3", "3"], ["0", "0"], &SQUARE, &[]))).as_deref(),
+        Some("0/1")
+    );
+    // Sliding along the bottom edge's line (motion collinear with the edge): at t = 5.
+    assert_eq!(
+        entry(&truth(&case2d("10", ["-5", "0"], ["1", "0"], &SQUARE, &[]))).as_deref(),
+        Some("5/1")
+    );
+    // Through the corner only: (−1, 1) moving (1, −1) touches (0, 0) at t = 1.
+    assert_eq!(
+        entry(&truth(&case2d("3", ["-1", "1"], ["1", "-1"], &SQUARE, &[]))).as_deref(),
+        Some("1/1")
+    );
+    // Passing 1/1000 below the square: never.
+    assert_eq!(
+        truth(&case2d("30", ["-5", "-1/1000"], ["1", "0"], &SQUARE, &[])),
+        Truth::Misses
+    );
+    // The square moving left at 1 to a point at rest at (12, 5): right side x = 10 − t, t = −2? no:
+    // the point is outside to the right and the square moves away: never.
+    let left = [["-1", "0"]; 4];
+    assert_eq!(
+        truth(&case2d("10", ["12", "5"], ["0", "0"], &SQUARE, &left)),
+        Truth::Misses
+    );
+    // Moving right instead: x = 10 + t reaches 12 at t = 2.
+    let right = [["1", "0"]; 4];
+    assert_eq!(
+        entry(&truth(&case2d(
+            "10",
+            ["12", "5"],
+            ["0", "0"],
+            &SQUARE,
+            &right
+        )))
+        .as_deref(),
+        Some("2/1")
+    );
+}
+
+#[test]
+fn figure_2_truth_rational_and_irrational() {
+    // Triangle A = (0,0), D = (3,−1) at rest, B(t) = (2, 2 − 2t); the point
+    // (t, y0) meets AB when y0 = (1 − t)t. y0 = 2/9: t = 1/3 (then 2/3).
+    let tri = [["0", "0"], ["3", "-1"], ["2", "2"]];
+    let vels = [["0", "0"], ["0", "0"], ["0", "-2"]];
+    let c = case2d("1", ["0", "2/9"], ["1", "0"], &tri, &vels);
+    assert_eq!(entry(&truth(&c)).as_deref(), Some("1/3"));
+    // y0 = 1/5: t² − t + 1/5 = 0, t = 1/2 − √5/10 = 0.27639320225002…
+    let c = case2d("1", ["0", "1/5"], ["1", "0"], &tri, &vels);
+    match truth(&c) {
+        Truth::Enters { entry_time } => {
+            assert_eq!(entry_time.as_rational_string(), None);
+            assert_eq!(entry_time.to_decimal_string(6), "0.276393");
+            assert_eq!(entry_time.to_decimal_string(14), "0.27639320225002");
+        }
+        other => panic!("expected an irrational entry, got {other:?}"),
+    }
+    // y0 = 1/4: the double root t = 1/2 (discriminant exactly zero): the point
+    // touches the edge at (1/2, 1/4) and leaves: still an entry of the closed polygon.
+    let c = case2d("1", ["0", "1/4"], ["1", "0"], &tri, &vels);
+    assert_eq!(entry(&truth(&c)).as_deref(), Some("1/2"));
+    // y0 = 1/4 + 1/1000: never meets it (t(1 − t) ≤ 1/4).
+    let c = case2d("1", ["0", "251/1000"], ["1", "0"], &tri, &vels);
+    assert_eq!(truth(&c), Truth::Misses);
+    // The second meeting via earliest_contact on [1/2, 1]: 1/6 after the restart.
+    let (s, v) = (p("1/2", "2/9"), p("1", "0"));
+    let tc = earliest_contact(
+        &q("1/2"),
+        &s,
+        &v,
+        &p("0", "0"),
+        &p("0", "0"),
+        &p("2", "1"),
+        &p("0", "-2"),
+    );
+    let tc = tc.expect("met at 1/6");
+    assert_eq!(tc.cmp_rat(&q("1/6")), core::cmp::Ordering::Equal);
+}
+
+#[test]
+fn non_simple_polygons_are_undefined() {
+    // A bow tie at rest.
+    let bow = [["0", "0"], ["10", "10"], ["10", "0"], ["0", "10"]];
+    assert!(matches!(
+        truth(&case2d("1", ["20", "20"], ["0", "0"], &bow, &[])),
+        Truth::Undefined { .. }
+    ));
+    // The square's corner (10,10) moving by (−20, −20): it crosses the diagonal
+    // region and meets the edge (0,0)→(10,0)'s neighbour… it reaches (0, 0) at t = 1/2.
+    let vels = [["0", "0"], ["0", "0"], ["-20", "-20"], ["0", "0"]];
+    assert!(matches!(
+        truth(&case2d("1", ["20", "20"], ["0", "0"], &SQUARE, &vels)),
+        Truth::Undefined { .. }
+    ));
+    // …but the same motion over T = 1/4 keeps it simple ((10,10) → (5,5) is still convex-ish:
+    // (0,0),(10,0),(5,5),(0,10) is simple): a defined miss.
+    assert_eq!(
+        truth(&case2d("1/4", ["20", "20"], ["0", "0"], &SQUARE, &vels)),
+        Truth::Misses
+    );
+}
+
+#[test]
+fn truth_3d_windows() {
+    // Square at rest; s = (−5, 5, 0) moving (1, 0, 1); slab [10, 20]: window
+    // [10, 20]; the point is inside from t = 5 on, so the entry is at t = 10.
+    let mk = |bottom: &str, top: &str, vsp: &str| {
+        let c = CaseStr {
+            lookahead: "30",
+            buff: "1/100",
+            fac: "1/10000",
+            pos: &["-5", "5", "0"],
+            vel: &["1", "0", "1"],
+            vertices: &SQUARE,
+            velocities: &[],
+            slab: Some([bottom, top, vsp]),
+        };
+        truth(&ExactCase::<Q>::from_strs(&c).expect("valid"))
+    };
+    assert_eq!(entry(&mk("10", "20", "0")).as_deref(), Some("10/1"));
+    assert_eq!(entry(&mk("0", "20", "0")).as_deref(), Some("5/1"));
+    assert_eq!(mk("20", "30", "0"), Truth::Misses);
+    assert_eq!(entry(&mk("15", "15", "0")).as_deref(), Some("15/1"));
+    assert_eq!(mk("16", "16", "0"), Truth::Misses);
+    assert_eq!(mk("100", "200", "0"), Truth::Misses);
+    // Rising slab [−10 + t/2, −5 + t/2] against z = t: t ∈ [−20, −10]: never.
+    assert_eq!(mk("-10", "-5", "1/2"), Truth::Misses);
+}
+
+#[test]
+fn validation_names_fields() {
+    let sq = [[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]];
+    let base = CaseF64 {
+        lookahead: 10.0,
+        buff: 0.01,
+        fac: 1e-4,
+        pos: &[0.0, 0.0],
+        vel: &[0.0, 0.0],
+        vertices: &sq,
+        velocities: &[],
+        slab: None,
+    };
+    let err = |c: CaseF64<'_>| ExactCase::<Q>::from_f64(&c).err().map(|e| e.field);
+    assert_eq!(err(base), None);
+    assert_eq!(
+        err(CaseF64 {
+            lookahead: 0.0,
+            ..base
+        }),
+        Some("lookahead")
+    );
+    assert_eq!(
+        err(CaseF64 {
+            lookahead: f64::NAN,
+            ..base
+        }),
+        Some("lookahead")
+    );
+    assert_eq!(err(CaseF64 { buff: -1.0, ..base }), Some("buff"));
+    assert_eq!(err(CaseF64 { fac: 1.0, ..base }), Some("fac"));
+    assert_eq!(err(CaseF64 { fac: 0.0, ..base }), Some("fac"));
+    assert_eq!(
+        err(CaseF64 {
+            pos: &[f64::INFINITY, 0.0],
+            ..base
+        }),
+        Some("point.pos")
+    );
+    assert_eq!(
+        err(CaseF64 {
+            vel: &[0.0, 0.0, 0.0],
+            ..base
+        }),
+        Some("point.vel")
+    );
+    assert_eq!(
+        err(CaseF64 {
+            vertices: &sq[..2],
+            ..base
+        }),
+        Some("polygon.vertices")
+    );
+    assert_eq!(
+        err(CaseF64 {
+            velocities: &sq[..3],
+            ..base
+        }),
+        Some("polygon.velocities")
+    );
+    assert_eq!(
+        err(CaseF64 {
+            slab: Some([0.0, 1.0, 0.0]),
+            ..base
+        }),
+        Some("point.pos")
+    );
+    assert_eq!(
+        err(CaseF64 {
+            pos: &[0.0, 0.0, 0.0],
+            vel: &[0.0, 0.0, 0.0],
+            ..base
+        }),
+        Some("polygon.bottom")
+    );
+    assert_eq!(
+        err(CaseF64 {
+            slab: Some([0.0, f64::NAN, 0.0]),
+            pos: &[0.0, 0.0, 0.0],
+            vel: &[0.0, 0.0, 0.0],
+            ..base
+        }),
+        Some("polygon.top")
+    );
+    let msg = ExactCase::<Q>::from_f64(&CaseF64 {
+        vertices: &sq[..2],
+        ..base
+    })
+    .err()
+    .map(|e| e.to_string());
+    assert_eq!(
+        msg.as_deref(),
+        Some("polygon.vertices: 2 points, at least 3 are needed")
+    );
+}

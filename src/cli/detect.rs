@@ -57,8 +57,14 @@ fn group_key(case: &Case) -> (&'static str, &'static str, usize) {
     (dim, shape, case.polygon().vertices().len())
 }
 
+/// The oracle's number type: GMP rationals with the `rug` feature, else num-rational.
+#[cfg(feature = "rug")]
+type Exact = polyguard_oracle::field::R;
+#[cfg(not(feature = "rug"))]
+type Exact = polyguard_oracle::Q;
+
 /// The exact case the oracle reads: the rationals the f64 inputs denote.
-fn exact_case(case: &Case) -> Result<polyguard_oracle::ExactCase<polyguard_oracle::Q>, String> {
+fn exact_case(case: &Case) -> Result<polyguard_oracle::ExactCase<Exact>, String> {
     let verts: Vec<[f64; 2]> = case
         .polygon()
         .vertices()

@@ -101,8 +101,24 @@ pub fn definitely_outside<P: VertexSeq + ?Sized>(p: &P, s: Vect2, buff: f64) -> 
     if n == 0 {
         return true;
     }
-    let mut crossings = 0usize;
+    // Filter: s farther than BUFF outside P's bounding box. Then s is farther than BUFF
+    // from every edge of P; no vertex is perturbed except, when s is below the box, ones
+    // whose y stays above s_y + BUFF, so P*_BUFF's edges are far too; and the upward ray
+    // misses the box or crosses the whole closed curve, an even number of times.
     let first = p.vertex(0);
+    let (mut lo, mut hi) = (first, first);
+    for i in 1..n {
+        let q = p.vertex(i);
+        lo = Vect2::new(lo.x.min(q.x), lo.y.min(q.y));
+        hi = Vect2::new(hi.x.max(q.x), hi.y.max(q.y));
+    }
+    let twice = 2.0 * buff;
+    if pr::ranges_apart(lo.x, hi.x, s.x, s.x, twice)
+        || pr::ranges_apart(lo.y, hi.y, s.y, s.y, twice)
+    {
+        return true;
+    }
+    let mut crossings = 0usize;
     let first_star = perturb(first, s, buff);
     let mut a = first;
     let mut a_star = first_star;

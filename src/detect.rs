@@ -31,9 +31,23 @@ where
     if !definitely_outside(&at_t, s.at(v, t), buff) {
         return true;
     }
+    // Each vertex's side of the relative path's line is computed once and carried to the
+    // next edge: an edge with both ends beyond BUFF on one side is not close (the same
+    // rigorous test segments_close starts with, done n instead of 2n times).
+    let v0 = vels.vertex(0);
+    let path_end = s.at(v - v0, t);
+    let mut side_i = pr::line_side(s, path_end, p.vertex(0), buff);
     for i in 0..n {
-        let rel_end = s.at(v - vels.vertex(i), t);
-        if segments_close(s, rel_end, p.vertex(i), p.vertex(p.next(i)), buff) {
+        let j = p.next(i);
+        let side_j = pr::line_side(s, path_end, p.vertex(j), buff);
+        let vi = vels.vertex(i);
+        let skip = side_i != 0 && side_i == side_j && pr::same_velocity(vi, v0);
+        side_i = side_j;
+        if skip {
+            continue;
+        }
+        let rel_end = s.at(v - vi, t);
+        if segments_close(s, rel_end, p.vertex(i), p.vertex(j), buff) {
             return true;
         }
     }
@@ -321,15 +335,11 @@ fn swept_boxes_apart(
     // SWEEP_ROUNDING·M covers.
     if s != st {
         let slack = 2.0 * f * l0.max(l1) + pr::SWEEP_ROUNDING * m;
-        for side in [1.0, -1.0] {
-            if pr::beyond_line(s, st, pi, side, slack)
-                && pr::beyond_line(s, st, pj, side, slack)
-                && pr::beyond_line(s, st, qi, side, slack)
-                && pr::beyond_line(s, st, qj, side, slack)
-            {
-                return true;
-            }
-        }
+        let side = pr::line_side(s, st, pi, slack);
+        return side != 0
+            && side == pr::line_side(s, st, pj, slack)
+            && side == pr::line_side(s, st, qi, slack)
+            && side == pr::line_side(s, st, qj, slack);
     }
     false
 }

@@ -183,21 +183,27 @@ pub const SWEEP_ROUNDING: f64 = 1.0 / ((1u64 << 40) as f64);
 /// Unit roundoff of f64, 2⁻⁵³.
 const U: f64 = 1.0 / ((1u64 << 53) as f64);
 
-/// Rigorous one-sided test: is point p farther than `dist` from the line through a and
-/// b, on the side given by `side` (+1 left of a→b, −1 right)? Answers false when unsure.
+/// Rigorous side test: +1 when p is farther than `dist` from the line through a and b on
+/// its left (a→b), −1 when farther on its right, 0 when unsure.
 ///
 /// orient = (b − a) × (p − a) is computed in f64; Shewchuk's bound
 /// |fl(orient) − orient| ≤ (3u + 16u²)·(|b_x − a_x|·|p_y − a_y| + |b_y − a_y|·|p_x − a_x|)
-/// is taken as 8u·(…) to cover the rounding of the bound itself. The test asks
-/// side·fl(orient) − bound > 2·dist·‖b − a‖₁, so the exact orient exceeds
+/// is taken as 8u·(…) to cover the rounding of the bound itself. A side is reported when
+/// |fl(orient)| − bound > 2·dist·‖b − a‖₁, so the exact |orient| exceeds
 /// dist·‖b − a‖₁ ≥ dist·‖b − a‖₂: the exact distance to the line exceeds `dist`.
 #[inline(always)]
-pub fn beyond_line(a: Vect2, b: Vect2, p: Vect2, side: f64, dist: f64) -> bool {
+pub fn line_side(a: Vect2, b: Vect2, p: Vect2, dist: f64) -> i8 {
     let d = b - a;
     let w = p - a;
     let l = d.x * w.y;
     let r = d.y * w.x;
     let orient = l - r;
-    let bound = 8.0 * U * (l.abs() + r.abs());
-    side * orient - bound > 2.0 * dist * (d.x.abs() + d.y.abs())
+    let need = 8.0 * U * (l.abs() + r.abs()) + 2.0 * dist * (d.x.abs() + d.y.abs());
+    if orient > need {
+        1
+    } else if -orient > need {
+        -1
+    } else {
+        0
+    }
 }

@@ -57,8 +57,8 @@ pub fn segments_close(c: Vect2, d: Vect2, e: Vect2, f: Vect2, buff: f64) -> bool
 /// Then no point of segment e f is within `dist` of segment c d.
 #[inline(always)]
 fn lines_separate(c: Vect2, d: Vect2, e: Vect2, f: Vect2, dist: f64) -> bool {
-    (pr::beyond_line(c, d, e, 1.0, dist) && pr::beyond_line(c, d, f, 1.0, dist))
-        || (pr::beyond_line(c, d, e, -1.0, dist) && pr::beyond_line(c, d, f, -1.0, dist))
+    let side = pr::line_side(c, d, e, dist);
+    side != 0 && side == pr::line_side(c, d, f, dist)
 }
 
 #[cfg(test)]

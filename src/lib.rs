@@ -21,6 +21,8 @@ pub mod scenario;
 pub mod case;
 #[cfg(feature = "cli")]
 pub mod cli;
+#[cfg(feature = "cli")]
+pub mod harness;
 
 #[cfg(feature = "std")]
 pub mod api;

@@ -1,0 +1,217 @@
+//! The verdict on one case: the f64 engine against paper A in exact arithmetic and the
+//! exact ground truth.
+
+use serde::{Deserialize, Serialize};
+
+use super::spec::RawCase;
+use crate::api::{self, Method};
+
+/// The oracle's number type: GMP rationals with the `rug` feature, else num-rational.
+#[cfg(feature = "rug")]
+pub type Exact = polyguard_oracle::field::R;
+/// The oracle's number type: GMP rationals with the `rug` feature, else num-rational.
+#[cfg(not(feature = "rug"))]
+pub type Exact = polyguard_oracle::Q;
+
+/// How far BUFF and F are widened to tell a false alarm "in the band" from one "far"
+/// outside it: an engine alarm that paper A's own exact algorithm would not raise even
+/// with 4× the slack is far from anything the paper flags by design.
+pub const WIDE_BAND: f64 = 4.0;
+
+/// The class of a compared case (issue "differential hunting", item 1).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Class {
+    /// Engine, paper-exact and truth tell the same story.
+    Agree,
+    /// Engine ≠ paper-exact, and neither a miss nor a false alarm (e.g. the engine
+    /// does not raise a band alarm that the exact paper raises).
+    FloatDivergence,
+    /// Truth: the point enters; the engine says no. The one unforgivable bug.
+    MissedDetection,
+    /// Engine yes, truth no, within the BUFF/F band (paper-exact with 4× slack agrees).
+    FalseAlarmInBand,
+    /// Engine yes, truth no, and not even paper-exact with 4× slack flags it: a bug.
+    FalseAlarmFar,
+    /// Truth enters, paper-exact says no: a finding about the paper itself.
+    PaperGap,
+    /// The truth is undefined (the polygon stops being simple): not judged.
+    Undefined,
+}
+
+impl Class {
+    /// Every class, in report order.
+    pub const ALL: [Class; 7] = [
+        Class::Agree,
+        Class::FloatDivergence,
+        Class::MissedDetection,
+        Class::FalseAlarmInBand,
+        Class::FalseAlarmFar,
+        Class::PaperGap,
+        Class::Undefined,
+    ];
+
+    /// snake_case name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Class::Agree => "agree",
+            Class::FloatDivergence => "float_divergence",
+            Class::MissedDetection => "missed_detection",
+            Class::FalseAlarmInBand => "false_alarm_in_band",
+            Class::FalseAlarmFar => "false_alarm_far",
+            Class::PaperGap => "paper_gap",
+            Class::Undefined => "undefined",
+        }
+    }
+
+    /// A failure that a campaign must report with a non-zero exit status.
+    pub fn is_failure(self) -> bool {
+        matches!(self, Class::MissedDetection | Class::FalseAlarmFar)
+    }
+}
+
+/// The three answers on one case and its class.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Verdict {
+    pub class: Class,
+    pub method: Method,
+    pub engine: bool,
+    pub paper: bool,
+    /// Some(true) enters, Some(false) misses, None undefined.
+    pub truth: Option<bool>,
+    /// The exact first entry time, as a decimal, when the point enters.
+    pub entry_time: Option<String>,
+}
+
+/// Why a case could not be compared.
+#[derive(Clone, Debug, PartialEq)]
+pub enum CompareError {
+    /// The engine rejects the case.
+    Engine(String),
+    /// The oracle rejects the case.
+    Oracle(String),
+}
+
+/// The class from the three answers (`wide` is paper-exact with [`WIDE_BAND`]× slack,
+/// asked only when needed).
+pub fn classify(
+    engine: bool,
+    paper: bool,
+    truth: Option<bool>,
+    wide: impl FnOnce() -> bool,
+) -> Class {
+    match truth {
+        None => Class::Undefined,
+        Some(true) if !engine => Class::MissedDetection,
+        Some(true) if !paper => Class::PaperGap,
+        Some(false) if engine => {
+            if paper || wide() {
+                Class::FalseAlarmInBand
+            } else {
+                Class::FalseAlarmFar
+            }
+        }
+        _ if engine != paper => Class::FloatDivergence,
+        _ => Class::Agree,
+    }
+}
+
+/// Runs the engine, paper-exact and the truth on one case.
+pub fn compare(raw: &RawCase) -> Result<Verdict, CompareError> {
+    let case = raw
+        .to_api()
+        .map_err(|e| CompareError::Engine(e.to_string()))?;
+    let engine = api::detected(&case);
+    let exact = raw
+        .exact::<Exact>()
+        .map_err(|e| CompareError::Oracle(e.to_string()))?;
+    let paper = polyguard_oracle::paper_detect(&exact).detected;
+    let (truth, entry_time) = match polyguard_oracle::truth(&exact) {
+        polyguard_oracle::Truth::Enters { entry_time } => {
+            (Some(true), Some(entry_time.to_decimal_string(12)))
+        }
+        polyguard_oracle::Truth::Misses => (Some(false), None),
+        polyguard_oracle::Truth::Undefined { .. } => (None, None),
+    };
+    let wide = || {
+        raw.widened(WIDE_BAND)
+            .exact::<Exact>()
+            .map(|c| polyguard_oracle::paper_detect(&c).detected)
+            .unwrap_or(true)
+    };
+    let class = classify(engine, paper, truth, wide);
+    Ok(Verdict {
+        class,
+        method: case.method(),
+        engine,
+        paper,
+        truth,
+        entry_time,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn classes_follow_the_definitions() {
+        let never = || panic!("not needed");
+        assert_eq!(classify(true, true, Some(true), never), Class::Agree);
+        assert_eq!(classify(false, false, Some(false), never), Class::Agree);
+        assert_eq!(
+            classify(false, true, Some(true), never),
+            Class::MissedDetection
+        );
+        assert_eq!(
+            classify(false, false, Some(true), never),
+            Class::MissedDetection
+        );
+        assert_eq!(classify(true, false, Some(true), never), Class::PaperGap);
+        assert_eq!(
+            classify(true, true, Some(false), never),
+            Class::FalseAlarmInBand
+        );
+        assert_eq!(
+            classify(true, false, Some(false), || true),
+            Class::FalseAlarmInBand
+        );
+        assert_eq!(
+            classify(true, false, Some(false), || false),
+            Class::FalseAlarmFar
+        );
+        assert_eq!(
+            classify(false, true, Some(false), never),
+            Class::FloatDivergence
+        );
+        assert_eq!(classify(true, true, None, never), Class::Undefined);
+    }
+
+    #[test]
+    fn compare_runs_all_three() {
+        let raw = RawCase {
+            lookahead: 10.0,
+            buff: 0.01,
+            fac: 1e-4,
+            pos: vec![5.0, -3.0],
+            vel: vec![0.0, 1.0],
+            vertices: vec![[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]],
+            velocities: vec![[1.0, 0.0]; 4],
+            slab: None,
+        };
+        let v = compare(&raw).expect("comparable");
+        assert_eq!(
+            (v.engine, v.paper, v.truth, v.class),
+            (true, true, Some(true), Class::Agree)
+        );
+        // Far away and moving away: every answer no.
+        let far = RawCase {
+            pos: vec![50.0, -3.0],
+            vel: vec![1.0, 0.0],
+            ..raw
+        };
+        let v = compare(&far).expect("comparable");
+        assert_eq!(v.class, Class::Agree);
+        assert!(!v.engine && v.truth == Some(false));
+    }
+}

@@ -1,4 +1,5 @@
 //! The command-line tool's subcommands, one module each.
+pub mod assure;
 #[cfg(feature = "earth")]
 pub mod conflicts;
 pub mod detect;

@@ -1,6 +1,8 @@
 //! The verdict on one case: the f64 engine against paper A in exact arithmetic and the
 //! exact ground truth.
 
+use std::time::{Duration, Instant};
+
 use serde::{Deserialize, Serialize};
 
 use super::spec::RawCase;
@@ -81,6 +83,8 @@ pub struct Verdict {
     pub truth: Option<bool>,
     /// The exact first entry time, as a decimal, when the point enters.
     pub entry_time: Option<String>,
+    /// Time spent in the engine, paper-exact and truth (ns).
+    pub nanos: [u64; 3],
 }
 
 /// Why a case could not be compared.
@@ -121,12 +125,19 @@ pub fn compare(raw: &RawCase) -> Result<Verdict, CompareError> {
     let case = raw
         .to_api()
         .map_err(|e| CompareError::Engine(e.to_string()))?;
+    let clock = Instant::now();
     let engine = api::detected(&case);
+    let t_engine = clock.elapsed();
+    let clock = Instant::now();
     let exact = raw
         .exact::<Exact>()
         .map_err(|e| CompareError::Oracle(e.to_string()))?;
     let paper = polyguard_oracle::paper_detect(&exact).detected;
-    let (truth, entry_time) = match polyguard_oracle::truth(&exact) {
+    let t_paper = clock.elapsed();
+    let clock = Instant::now();
+    let answer = polyguard_oracle::truth(&exact);
+    let t_truth = clock.elapsed();
+    let (truth, entry_time) = match answer {
         polyguard_oracle::Truth::Enters { entry_time } => {
             (Some(true), Some(entry_time.to_decimal_string(12)))
         }
@@ -140,6 +151,7 @@ pub fn compare(raw: &RawCase) -> Result<Verdict, CompareError> {
             .unwrap_or(true)
     };
     let class = classify(engine, paper, truth, wide);
+    let ns = |d: Duration| u64::try_from(d.as_nanos()).unwrap_or(u64::MAX);
     Ok(Verdict {
         class,
         method: case.method(),
@@ -147,6 +159,7 @@ pub fn compare(raw: &RawCase) -> Result<Verdict, CompareError> {
         paper,
         truth,
         entry_time,
+        nanos: [ns(t_engine), ns(t_paper), ns(t_truth)],
     })
 }
 

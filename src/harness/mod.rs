@@ -6,7 +6,12 @@
 //!   engine's validated [`crate::api::Case`] and to the oracle's exact case.
 //! - [`gen`]: boundary-biased case generators over a seeded or byte-fed [`gen::Source`].
 //! - [`classify`]: the verdict of one case (agree, float divergence, missed detection, …).
+//! - [`report`]: counts per function, mode and class; shards merge exactly.
+//! - [`minimise`]: a smaller case of the same class. [`svg`]: its picture.
 
 pub mod classify;
 pub mod gen;
+pub mod minimise;
+pub mod report;
 pub mod spec;
+pub mod svg;

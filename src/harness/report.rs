@@ -1,0 +1,220 @@
+//! The report of an assurance run: counts per paper function, generator mode and class,
+//! timings, and the counterexamples kept. Reports of shards merge exactly.
+
+use std::collections::BTreeMap;
+
+use serde::{Deserialize, Serialize};
+
+use super::classify::{Class, Verdict};
+
+/// A kept counterexample (its case is written beside the report).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Kept {
+    pub index: u64,
+    pub class: Class,
+    pub method: String,
+    pub mode: String,
+    /// File names (relative to the run's directory) of the minimised case and its picture.
+    pub case_file: String,
+    pub svg_file: String,
+}
+
+/// An assurance run's report (`report.json`).
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Report {
+    pub seed: u64,
+    /// Shards included, as "i/N".
+    pub shards: Vec<String>,
+    /// Cases generated.
+    pub cases: u64,
+    /// Cases the engine or oracle rejected (should be 0: the generator makes valid cases).
+    pub rejected: u64,
+    /// method → class → count.
+    pub by_method: BTreeMap<String, BTreeMap<Class, u64>>,
+    /// generator mode → class → count.
+    pub by_mode: BTreeMap<String, BTreeMap<Class, u64>>,
+    /// Total ns in the engine, paper-exact and truth.
+    pub nanos: [u64; 3],
+    /// Wall-clock seconds of the run (summed over shards when merged).
+    pub wall_seconds: f64,
+    pub kept: Vec<Kept>,
+}
+
+impl Report {
+    /// Counts one verdict.
+    pub fn add(&mut self, v: &Verdict, mode: &str) {
+        self.cases += 1;
+        *self
+            .by_method
+            .entry(v.method.name().into())
+            .or_default()
+            .entry(v.class)
+            .or_default() += 1;
+        *self
+            .by_mode
+            .entry(mode.into())
+            .or_default()
+            .entry(v.class)
+            .or_default() += 1;
+        for k in 0..3 {
+            self.nanos[k] = self.nanos[k].saturating_add(v.nanos[k]);
+        }
+    }
+
+    /// Totals per class.
+    pub fn totals(&self) -> BTreeMap<Class, u64> {
+        let mut t = BTreeMap::new();
+        for m in self.by_method.values() {
+            for (c, n) in m {
+                *t.entry(*c).or_default() += n;
+            }
+        }
+        t
+    }
+
+    /// Any missed detection or far false alarm?
+    pub fn has_failures(&self) -> bool {
+        self.totals().iter().any(|(c, n)| c.is_failure() && *n > 0)
+    }
+
+    /// Joins another shard's report of the same seed: every count adds exactly.
+    pub fn merge(&mut self, other: &Report) -> Result<(), String> {
+        if self.cases > 0 && other.seed != self.seed {
+            return Err(format!("seeds differ: {} and {}", self.seed, other.seed));
+        }
+        if let Some(s) = other.shards.iter().find(|s| self.shards.contains(s)) {
+            return Err(format!("shard {s} is in both reports"));
+        }
+        self.seed = other.seed;
+        self.shards.extend(other.shards.iter().cloned());
+        self.absorb(other);
+        Ok(())
+    }
+
+    /// Adds another report's counts, times and kept cases (no seed or shard checks: for
+    /// the per-thread parts of one run).
+    pub fn absorb(&mut self, other: &Report) {
+        self.cases += other.cases;
+        self.rejected += other.rejected;
+        for (dst, src) in [
+            (&mut self.by_method, &other.by_method),
+            (&mut self.by_mode, &other.by_mode),
+        ] {
+            for (k, m) in src {
+                let d = dst.entry(k.clone()).or_default();
+                for (c, n) in m {
+                    *d.entry(*c).or_default() += n;
+                }
+            }
+        }
+        for k in 0..3 {
+            self.nanos[k] = self.nanos[k].saturating_add(other.nanos[k]);
+        }
+        self.wall_seconds += other.wall_seconds;
+        self.kept.extend(other.kept.iter().cloned());
+    }
+
+    /// The summary table: per paper function and per class, counts and rates.
+    pub fn table(&self) -> String {
+        let mut out = String::new();
+        let classes = Class::ALL;
+        out.push_str(&format!("{:<16}", "function"));
+        for c in classes {
+            out.push_str(&format!(" {:>20}", c.name()));
+        }
+        out.push('\n');
+        let mut rows: Vec<(String, BTreeMap<Class, u64>)> = self
+            .by_method
+            .iter()
+            .map(|(k, v)| (k.clone(), v.clone()))
+            .collect();
+        rows.push(("all".into(), self.totals()));
+        for (name, counts) in rows {
+            let total: u64 = counts.values().sum();
+            out.push_str(&format!("{name:<16}"));
+            for c in classes {
+                let n = counts.get(&c).copied().unwrap_or(0);
+                let rate = if total == 0 {
+                    0.0
+                } else {
+                    n as f64 / total as f64
+                };
+                out.push_str(&format!(" {:>9} ({:>7.3}%)", n, 100.0 * rate));
+            }
+            out.push('\n');
+        }
+        let per = |ns: u64| {
+            if self.cases == 0 {
+                0.0
+            } else {
+                ns as f64 / self.cases as f64
+            }
+        };
+        out.push_str(&format!(
+            "time per case: engine {:.0} ns, paper-exact {:.0} ns, truth {:.0} ns; {} cases in {:.1} s wall ({:.0} cases/s)\n",
+            per(self.nanos[0]),
+            per(self.nanos[1]),
+            per(self.nanos[2]),
+            self.cases,
+            self.wall_seconds,
+            if self.wall_seconds > 0.0 { self.cases as f64 / self.wall_seconds } else { 0.0 },
+        ));
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::api::Method;
+
+    fn verdict(class: Class, method: Method) -> Verdict {
+        Verdict {
+            class,
+            method,
+            engine: true,
+            paper: true,
+            truth: Some(true),
+            entry_time: None,
+            nanos: [1, 2, 3],
+        }
+    }
+
+    #[test]
+    fn merge_adds_exactly_and_refuses_overlaps() {
+        let mut a = Report {
+            seed: 1,
+            shards: vec!["0/2".into()],
+            ..Default::default()
+        };
+        let mut b = Report {
+            seed: 1,
+            shards: vec!["1/2".into()],
+            ..Default::default()
+        };
+        a.add(&verdict(Class::Agree, Method::DetectSame2d), "free");
+        a.add(
+            &verdict(Class::MissedDetection, Method::DetectDiff2d),
+            "edge_buff",
+        );
+        b.add(&verdict(Class::Agree, Method::DetectSame2d), "free");
+        let mut m = a.clone();
+        m.merge(&b).expect("disjoint shards");
+        assert_eq!(m.cases, 3);
+        assert_eq!(m.totals()[&Class::Agree], 2);
+        assert_eq!(m.by_mode["free"][&Class::Agree], 2);
+        assert_eq!(m.nanos, [3, 6, 9]);
+        assert!(m.has_failures());
+        assert!(m.merge(&b).is_err(), "the same shard twice");
+        let other_seed = Report {
+            seed: 2,
+            shards: vec!["0/1".into()],
+            ..Default::default()
+        };
+        assert!(a.clone().merge(&other_seed).is_err());
+        // JSON round trip.
+        let json = serde_json::to_string(&m).expect("serialise");
+        let back: Report = serde_json::from_str(&json).expect("parse");
+        assert_eq!(back, m);
+    }
+}

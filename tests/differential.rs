@@ -9,11 +9,14 @@
 
 use polyguard::api::{detected, Case, MovingPoint, MovingPolygon, Params};
 use polyguard::Vect2;
-use polyguard_oracle::{paper_detect, truth, CaseF64, ExactCase, Q, Truth};
+use polyguard_oracle::{paper_detect, truth, CaseF64, ExactCase, Truth, Q};
 use proptest::prelude::*;
 
 fn cases() -> u32 {
-    std::env::var("POLYGUARD_PROPTEST_CASES").ok().and_then(|s| s.parse().ok()).unwrap_or(128)
+    std::env::var("POLYGUARD_PROPTEST_CASES")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(128)
 }
 
 #[derive(Clone, Debug)]
@@ -31,7 +34,11 @@ fn eps() -> impl Strategy<Value = f64> {
     prop_oneof![
         Just(0.0),
         (-4i32..=4).prop_map(|k| k as f64 * f64::EPSILON),
-        (-15i32..=-3, any::<bool>()).prop_map(|(e, neg)| if neg { -(10f64.powi(e)) } else { 10f64.powi(e) }),
+        (-15i32..=-3, any::<bool>()).prop_map(|(e, neg)| if neg {
+            -(10f64.powi(e))
+        } else {
+            10f64.powi(e)
+        }),
     ]
 }
 

@@ -67,17 +67,17 @@ fn workload(n: usize, warping: bool, seed: u64) -> Workload {
                 }
             })
             .collect();
-        // Start 1500 from the centre, aim within 900 of it, cover ~2000 in T.
+        // Start 1500 from the centre, aim within 800 of it, cover ~2000 in T.
         let a = rng.uniform(0.0, std::f64::consts::TAU);
         let s = Vect2::new(1500.0 * a.cos(), 1500.0 * a.sin());
-        let target = Vect2::new(rng.uniform(-900.0, 900.0), rng.uniform(-900.0, 900.0));
+        let target = Vect2::new(rng.uniform(-800.0, 800.0), rng.uniform(-800.0, 800.0));
         let d = target - s;
         let v = d.scale(rng.uniform(5.0, 8.0) / d.sq().sqrt());
         w.verts.push(verts);
         w.vels.push(vels);
         w.s.push(s);
         w.v.push(v);
-        w.z.push((rng.uniform(200.0, 1200.0), rng.uniform(-3.0, 3.0)));
+        w.z.push((rng.uniform(100.0, 1000.0), rng.uniform(-1.0, 1.0)));
     }
     w
 }

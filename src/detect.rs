@@ -483,15 +483,34 @@ where
             detect_diff_2d(b, s, v, p, vels, f, buff)
         }
     } else {
-        let pa = Moved { p, v: vels, t: a };
         let sa = s.at(v, a);
-        if same {
-            detect_same_2d(b - a, sa, v, &pa, vels, buff)
+        let n = p.count();
+        if n <= SHIFT_BUFFER {
+            // P + a·V once, on the stack (no heap), instead of on every vertex access.
+            let mut buf = [Vect2::ZERO; SHIFT_BUFFER];
+            for (i, q) in buf.iter_mut().enumerate().take(n) {
+                *q = p.vertex(i).at(vels.vertex(i), a);
+            }
+            let pa = &buf[..n];
+            if same {
+                detect_same_2d(b - a, sa, v, pa, vels, buff)
+            } else {
+                detect_diff_2d(b - a, sa, v, pa, vels, f, buff)
+            }
         } else {
-            detect_diff_2d(b - a, sa, v, &pa, vels, f, buff)
+            let pa = Moved { p, v: vels, t: a };
+            if same {
+                detect_same_2d(b - a, sa, v, &pa, vels, buff)
+            } else {
+                detect_diff_2d(b - a, sa, v, &pa, vels, f, buff)
+            }
         }
     }
 }
+
+/// Polygons up to this many vertices are shifted to the slab window's start in a stack
+/// buffer by detect_3d (1 KiB); larger ones are read through a [`Moved`] view.
+pub const SHIFT_BUFFER: usize = 64;
 
 #[cfg(test)]
 mod tests {

@@ -12,6 +12,8 @@ use serde_json::{json, Map, Value};
 
 use crate::api::{self, Case};
 use crate::case::parse_line;
+use crate::harness::classify::Exact;
+use crate::harness::spec::RawCase;
 
 /// Which implementation answers.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -57,43 +59,11 @@ fn group_key(case: &Case) -> (&'static str, &'static str, usize) {
     (dim, shape, case.polygon().vertices().len())
 }
 
-/// The oracle's number type: GMP rationals with the `rug` feature, else num-rational.
-#[cfg(feature = "rug")]
-type Exact = polyguard_oracle::field::R;
-#[cfg(not(feature = "rug"))]
-type Exact = polyguard_oracle::Q;
-
 /// The exact case the oracle reads: the rationals the f64 inputs denote.
 fn exact_case(case: &Case) -> Result<polyguard_oracle::ExactCase<Exact>, String> {
-    let verts: Vec<[f64; 2]> = case
-        .polygon()
-        .vertices()
-        .iter()
-        .map(|&p| p.into())
-        .collect();
-    let vels: Vec<[f64; 2]> = case
-        .polygon()
-        .velocities()
-        .iter()
-        .map(|&p| p.into())
-        .collect();
-    let pt = case.point();
-    let (pos, vel): (Vec<f64>, Vec<f64>) = match pt.z {
-        Some((sz, vz)) => (vec![pt.pos.x, pt.pos.y, sz], vec![pt.vel.x, pt.vel.y, vz]),
-        None => (vec![pt.pos.x, pt.pos.y], vec![pt.vel.x, pt.vel.y]),
-    };
-    let slab = case.polygon().slab().map(|s| [s.bottom, s.top, s.vz]);
-    let c = polyguard_oracle::CaseF64 {
-        lookahead: case.lookahead(),
-        buff: case.params().buff(),
-        fac: case.params().fac(),
-        pos: &pos,
-        vel: &vel,
-        vertices: &verts,
-        velocities: &vels,
-        slab,
-    };
-    polyguard_oracle::ExactCase::from_f64(&c).map_err(|e| e.to_string())
+    RawCase::from_api(case)
+        .exact::<Exact>()
+        .map_err(|e| e.to_string())
 }
 
 /// Answers one valid case with the chosen engine; the fields after `id`.

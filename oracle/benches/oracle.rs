@@ -1,11 +1,16 @@
-//! Throughput of the oracle: ground truth and paper-exact detect_diff_2D on a
-//! seeded workload of random star-shaped counterclockwise warping polygons of
-//! size ~1000, lookahead 300, BUFF 0.01, F 1e-4, n = 4, 8, 16 (cases/s is the
-//! "elements" throughput criterion prints).
+//! Throughput of the oracle: ground truth and paper-exact detection (detect_diff_2D,
+//! the workload's polygons warp) on a seeded workload of random star-shaped
+//! counterclockwise warping polygons of size ~1000, lookahead 300, BUFF 0.01,
+//! F 1e-4, n = 4, 8, 16 (cases/s is the "elements" throughput criterion prints).
+//! Each is measured with the floating filter (the default `paper_detect`, `truth`)
+//! and without it (`paper_detect_unfiltered`, `truth_unfiltered`), and "both" is
+//! paper_detect + truth together, what one differential comparison costs the oracle.
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-use polyguard_oracle::detect::detect_diff_2d;
-use polyguard_oracle::{truth, CaseF64, ExactCase, ExactField};
+use polyguard_oracle::{
+    paper_detect, paper_detect_unfiltered, truth, truth_unfiltered, CaseF64, ExactCase, ExactField,
+    PaperAnswer, Truth,
+};
 
 struct Rng(u64);
 impl Rng {
@@ -96,32 +101,48 @@ fn run_backend<F: ExactField>(c: &mut Criterion, name: &str) {
     for n in [4usize, 8, 16] {
         let cases: Vec<ExactCase<F>> = exact(&workload(n, 64, 0x5eed_0000 + n as u64));
         group.throughput(Throughput::Elements(cases.len() as u64));
-        group.bench_with_input(BenchmarkId::new("detect_diff_2d", n), &cases, |b, cs| {
-            b.iter(|| {
-                cs.iter()
-                    .filter(|c| {
-                        detect_diff_2d(
-                            &c.lookahead,
-                            &c.s,
-                            &c.v,
-                            &c.vertices,
-                            &c.velocities,
-                            &c.fac,
-                            &c.buff,
-                        )
+        type Paper<F> = fn(&ExactCase<F>) -> PaperAnswer;
+        type Ground<F> = fn(&ExactCase<F>) -> Truth;
+        let variants: [(&str, Paper<F>, Ground<F>); 2] = [
+            ("filtered", paper_detect, truth),
+            ("unfiltered", paper_detect_unfiltered, truth_unfiltered),
+        ];
+        for (label, paper, ground) in variants {
+            group.bench_with_input(
+                BenchmarkId::new(format!("paper_detect/{label}"), n),
+                &cases,
+                |b, cs| b.iter(|| cs.iter().filter(|c| black_box(paper(c)).detected).count()),
+            );
+            group.bench_with_input(
+                BenchmarkId::new(format!("truth/{label}"), n),
+                &cases,
+                |b, cs| {
+                    b.iter(|| {
+                        cs.iter()
+                            .filter(|c| matches!(black_box(ground(c)), Truth::Enters { .. }))
+                            .count()
                     })
-                    .count()
-            })
-        });
-        group.bench_with_input(BenchmarkId::new("truth", n), &cases, |b, cs| {
-            b.iter(|| {
-                cs.iter()
-                    .filter(|c| {
-                        matches!(black_box(truth(c)), polyguard_oracle::Truth::Enters { .. })
-                    })
-                    .count()
-            })
-        });
+                },
+            );
+            if label == "filtered" {
+                group.bench_with_input(
+                    BenchmarkId::new(format!("both/{label}"), n),
+                    &cases,
+                    |b, cs| {
+                        b.iter(|| {
+                            cs.iter()
+                                .filter(|c| {
+                                    let detected = black_box(paper(c)).detected;
+                                    let enters =
+                                        matches!(black_box(ground(c)), Truth::Enters { .. });
+                                    detected == enters
+                                })
+                                .count()
+                        })
+                    },
+                );
+            }
+        }
     }
     group.finish();
 }

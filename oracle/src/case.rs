@@ -246,7 +246,16 @@ pub struct PaperAnswer {
 
 /// Paper A §II.F and §III: detect_same_2D for equal vertex velocities,
 /// detect_diff_2D otherwise, detect_3D for a 3D case — all evaluated exactly.
+///
+/// Every sign decision is first tried in interval arithmetic ([`crate::filter`])
+/// and made exactly only when the interval cannot certify it; the answer is
+/// identical to [`paper_detect_unfiltered`]'s (tests/filtered.rs checks it).
 pub fn paper_detect<F: ExactField>(c: &ExactCase<F>) -> PaperAnswer {
+    crate::filter::paper_detect(c)
+}
+
+/// [`paper_detect`] with exact arithmetic only (no floating filter).
+pub fn paper_detect_unfiltered<F: ExactField>(c: &ExactCase<F>) -> PaperAnswer {
     if let Some(z) = &c.vertical {
         let detected = detect_3d(
             &c.lookahead,

@@ -6,7 +6,7 @@
 //! rounding alone. Written from the paper's equations, independent of the engine.
 
 use rug::float::Constant;
-use rug::Float;
+pub use rug::Float;
 
 /// Working precision (bits): ≥ 200 as issue 5 asks; 256 leaves ~200 bits after the
 /// worst cancellation met here (`ψ(φ2) − ψ(φ1)` for latitudes 1e-15 rad apart).
@@ -93,7 +93,12 @@ pub fn track_time(start: (f64, f64), end: (f64, f64), speed_kn: f64, t0: f64, rh
     let dlat = Float::with_val(PREC, &qlat - &pa);
     let dlon = Float::with_val(PREC, &qx - &la);
     let dpsi = psi(&qlat) - psi(&pa);
-    let w = if dlat.is_zero() {
+    // East–west legs: `q_y = y0` exactly, but `gd(q_y)` carries the 2⁻²⁵⁶-level rounding
+    // of this precision, so `Δφ`, `Δψ` are rounding noise; below 2⁻²⁰⁰ take the limit.
+    let w = if dlat.is_zero()
+        || dpsi.is_zero()
+        || dlat.clone().abs() < Float::with_val(PREC, Float::i_exp(1, -200))
+    {
         pa.cos()
     } else {
         Float::with_val(PREC, &dlat / &dpsi)
@@ -102,6 +107,24 @@ pub fn track_time(start: (f64, f64), end: (f64, f64), speed_kn: f64, t0: f64, rh
     let d = dlat.hypot(&wl) * f(EARTH_RADIUS_NM);
     let signed = if rho < 0.0 { -d } else { d };
     f(t0) + signed / f(speed_kn)
+}
+
+/// The spacing of f64 values at `|x|` (2⁻¹⁰⁷⁴ below the normal range).
+pub fn ulp(x: f64) -> f64 {
+    let x = x.abs();
+    if x < f64::MIN_POSITIVE {
+        return f64::from_bits(1);
+    }
+    // exponent from the bits: exact, unlike log2
+    let e = ((x.to_bits() >> 52) & 0x7ff) as i32 - 1023;
+    2f64.powi(e - 52)
+}
+
+/// Error of an f64 `engine` value against `reference`, in ulps of
+/// `max(|reference|, scale)` (`scale` for results that may cancel to near zero).
+pub fn error_ulps(engine: f64, reference: &Float, scale: f64) -> f64 {
+    let diff = Float::with_val(PREC, engine - reference);
+    diff.abs().to_f64() / ulp(reference.to_f64().abs().max(scale))
 }
 
 #[cfg(test)]

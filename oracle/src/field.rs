@@ -21,7 +21,12 @@ pub type R = rug::Rational;
 
 /// An exact ordered field (rationals). Every sign decision of the oracle is a
 /// comparison of such numbers, or of numbers built from them in [`crate::qfield`].
-pub trait ExactField: Clone + Ord + Eq + Debug + Send + Sync + 'static {
+///
+/// The supertrait [`crate::filter::Enclose`] lets the floating filter enclose a
+/// value in an interval; it never decides anything by itself.
+pub trait ExactField:
+    Clone + Ord + Eq + Debug + Send + Sync + 'static + crate::filter::Enclose
+{
     /// The number 0.
     fn zero() -> Self;
     /// The number 1.
@@ -150,8 +155,15 @@ mod rug_backend {
     use rug::{Integer, Rational};
 
     fn big_of(i: &Integer) -> BigInt {
-        // Base-16 digits are an exact, allocation-cheap interchange format.
-        BigInt::parse_bytes(format!("{i:x}").as_bytes(), 16).unwrap_or_default()
+        // The 32-bit digits, least significant first, are an exact interchange format.
+        let sign = match i.cmp0() {
+            Ordering::Less => num_bigint::Sign::Minus,
+            Ordering::Equal => num_bigint::Sign::NoSign,
+            Ordering::Greater => num_bigint::Sign::Plus,
+        };
+        let mut digits = vec![0u32; i.significant_digits::<u32>()];
+        i.write_digits(&mut digits, rug::integer::Order::Lsf);
+        BigInt::from_slice(sign, &digits)
     }
 
     impl ExactField for Rational {
@@ -205,7 +217,9 @@ mod rug_backend {
             self.cmp0()
         }
         fn to_big(&self) -> BigRational {
-            BigRational::new(big_of(self.numer()), big_of(self.denom()))
+            // A rug rational is canonical (lowest terms, positive denominator),
+            // as a BigRational must be: no reduction needed.
+            BigRational::new_raw(big_of(self.numer()), big_of(self.denom()))
         }
     }
 }

@@ -4,9 +4,13 @@
 //!
 //! Module for module it mirrors the binary-float engine, but it is written from the
 //! paper alone. No binary floating point is used in any decision: inputs are
-//! converted exactly ([`convert`], the only module that touches floats), square
-//! roots are never taken (numbers (p + q√d)/r are ordered by sign analysis in
-//! [`qfield`]).
+//! converted exactly ([`convert`]), square roots are never taken (numbers
+//! (p + q√d)/r are ordered by sign analysis in [`qfield`]). The one other module
+//! that touches floats, [`filter`], only certifies signs with rigorous interval
+//! arithmetic in front of the exact decisions (as CGAL's filtered kernels do):
+//! when an interval cannot certify a sign, the exact computation decides, so every
+//! answer is the exact one ([`paper_detect_unfiltered`] and [`truth_unfiltered`]
+//! keep the exact-only path).
 //!
 //! ```
 //! use polyguard_oracle::{paper_detect, truth, CaseF64, ExactCase, Q, Truth};
@@ -28,7 +32,10 @@ pub mod case;
 pub mod contain;
 pub mod convert;
 pub mod detect;
+#[cfg(feature = "rug")]
+pub mod earth_ref;
 pub mod field;
+pub mod filter;
 pub mod geom;
 pub mod proximity;
 pub mod qfield;
@@ -36,9 +43,11 @@ pub mod quad;
 pub mod truth;
 pub mod well_formed;
 
-pub use case::{paper_detect, CaseStr, ExactCase, OracleError, PaperAnswer, Vertical};
+pub use case::{
+    paper_detect, paper_detect_unfiltered, CaseStr, ExactCase, OracleError, PaperAnswer, Vertical,
+};
 pub use convert::CaseF64;
 #[cfg(feature = "rug")]
 pub use field::R;
 pub use field::{ExactField, Q, V2};
-pub use truth::{truth, ExactTime, Truth};
+pub use truth::{truth, truth_unfiltered, ExactTime, Truth};

@@ -27,7 +27,7 @@ use core::fmt;
 use num_bigint::{BigInt, Sign};
 use num_integer::Integer;
 use num_rational::BigRational;
-use num_traits::{One, Signed, Zero};
+use num_traits::{One, Signed, ToPrimitive, Zero};
 
 use crate::case::ExactCase;
 use crate::detect::{dot_nn_lin, slab_interval, Interval};
@@ -50,8 +50,25 @@ fn big_isqrt(n: &BigInt) -> BigInt {
     }
 }
 
+/// Whether n may be a perfect square: false is certain (squares have few
+/// residues modulo 64 and 45045 = 5·7·9·11·13), true means "compute the root".
+fn may_be_square(n: &BigInt) -> bool {
+    let low = n.iter_u64_digits().next().unwrap_or(0);
+    if (0x0202_0212_0203_0213u64 >> (low & 63)) & 1 == 0 {
+        return false;
+    }
+    let r = (n % BigInt::from(45045u32)).to_u32().unwrap_or(0);
+    [5u32, 7, 9, 11, 13].iter().all(|&m| {
+        let x = r % m;
+        (0..m).any(|y| y * y % m == x)
+    })
+}
+
 fn rational_sqrt(x: &BigRational) -> Option<BigRational> {
     if x.is_negative() {
+        return None;
+    }
+    if !may_be_square(x.numer()) || !may_be_square(x.denom()) {
         return None;
     }
     let n = big_isqrt(x.numer());
@@ -94,7 +111,11 @@ impl ExactTime {
         if r.is_zero() {
             return ExactTime::rational(<BigRational as Zero>::zero());
         }
-        ExactTime::new(x.p.to_big() / &r, x.q.to_big() / &r, x.d.to_big())
+        // Divide in the backend (GMP is faster than num-bigint), then convert.
+        match (x.p.quotient(&x.r), x.q.quotient(&x.r)) {
+            (Some(a), Some(b)) => ExactTime::new(a.to_big(), b.to_big(), x.d.to_big()),
+            _ => ExactTime::new(x.p.to_big() / &r, x.q.to_big() / &r, x.d.to_big()),
+        }
     }
 
     /// The rational part a.
@@ -249,6 +270,36 @@ fn boxes_apart<F: ExactField>(
         || apart([&x0.y, &x1.y], [&a0.y, &a1.y, &b0.y, &b1.y])
 }
 
+/// g(t) = (q0 + t·q1) × (e0 + t·e1) = g2·t² + g1·t + g0, as [g2, g1, g0]
+/// (q = x − a, the point relative to the edge's start; e = b − a, the edge).
+pub(crate) fn contact_coeffs<F: ExactField>(
+    q0: &V2<F>,
+    q1: &V2<F>,
+    e0: &V2<F>,
+    e1: &V2<F>,
+) -> [F; 3] {
+    let g2 = q1.cross(e1);
+    let g1 = q0.cross(e1).plus(&q1.cross(e0));
+    let g0 = q0.cross(e0);
+    [g2, g1, g0]
+}
+
+/// The real roots of g2·t² + g1·t + g0, not identically zero, in increasing
+/// order (the candidates of [`earliest_contact`]; the filter picks one by index).
+pub(crate) fn contact_roots<F: ExactField>(g2: &F, g1: &F, g0: &F) -> Vec<Alg<F>> {
+    if g2.is_zero_() {
+        if g1.is_zero_() {
+            Vec::new()
+        } else {
+            Alg::new(g0.negated(), F::zero(), F::zero(), g1.clone())
+                .into_iter()
+                .collect()
+        }
+    } else {
+        quad_roots(g2, g1, g0)
+    }
+}
+
 /// The earliest t ∈ [0, T] at which the point x0 + t·xv lies on the closed
 /// segment from a0 + t·av to b0 + t·bv, if any (exact; see the module doc).
 #[allow(clippy::too_many_arguments)]
@@ -268,9 +319,7 @@ pub fn earliest_contact<F: ExactField>(
     let q1 = xv.minus(av);
     let e0 = b0.minus(a0);
     let e1 = bv.minus(av);
-    let g2 = q1.cross(&e1);
-    let g1 = q0.cross(&e1).plus(&q1.cross(&e0));
-    let g0 = q0.cross(&e0);
+    let [g2, g1, g0] = contact_coeffs(&q0, &q1, &e0, &e1);
     let r0 = e0.minus(&q0);
     let r1 = e1.minus(&q1);
     if g2.is_zero_() && g1.is_zero_() && g0.is_zero_() {
@@ -308,17 +357,7 @@ pub fn earliest_contact<F: ExactField>(
         }
         return best;
     }
-    let roots: Vec<Alg<F>> = if g2.is_zero_() {
-        if g1.is_zero_() {
-            Vec::new()
-        } else {
-            Alg::new(g0.negated(), F::zero(), F::zero(), g1)
-                .into_iter()
-                .collect()
-        }
-    } else {
-        quad_roots(&g2, &g1, &g0)
-    };
+    let roots = contact_roots(&g2, &g1, &g0);
     // h1 = (q0 + t q1)·(e0 + t e1) and h2 = (r0 + t r1)·(e0 + t e1) as quadratics.
     let h = |w: &V2<F>, v: &V2<F>| {
         let a = v.dot(&e1);
@@ -379,7 +418,7 @@ pub fn in_closed_polygon<F: ExactField>(poly: &[V2<F>], s: &V2<F>) -> bool {
     winding != 0
 }
 
-fn min_alg<F: ExactField>(best: Option<Alg<F>>, x: Alg<F>) -> Option<Alg<F>> {
+pub(crate) fn min_alg<F: ExactField>(best: Option<Alg<F>>, x: Alg<F>) -> Option<Alg<F>> {
     match best {
         Some(b) if b.cmp_alg(&x) != Ordering::Greater => Some(b),
         _ => Some(x),
@@ -388,13 +427,62 @@ fn min_alg<F: ExactField>(best: Option<Alg<F>>, x: Alg<F>) -> Option<Alg<F>> {
 
 /// The ground truth of a case: `Enters` with the exact first entry time,
 /// `Misses`, or `Undefined` when the polygon is not simple during the window.
+///
+/// Every sign decision is first tried in interval arithmetic ([`crate::filter`])
+/// and made exactly only when the interval cannot certify it; the answer is
+/// identical to [`truth_unfiltered`]'s (tests/filtered.rs checks it).
 pub fn truth<F: ExactField>(c: &ExactCase<F>) -> Truth {
-    let (t0, t1) = match &c.vertical {
-        None => (F::zero(), c.lookahead.clone()),
-        Some(z) => match slab_interval(&c.lookahead, &z.sz, &z.vz, &z.bottom, &z.top, &z.vsp) {
-            Some(w) => w,
-            None => return Truth::Misses,
-        },
+    crate::filter::truth(c)
+}
+
+/// The window [t0, t1] of a case (the slab window of paper A §III in 3D,
+/// [0, T] in 2D), `None` when the point never is in the slab.
+pub(crate) fn window<F: ExactField>(c: &ExactCase<F>) -> Option<(F, F)> {
+    match &c.vertical {
+        None => Some((F::zero(), c.lookahead.clone())),
+        Some(z) => slab_interval(&c.lookahead, &z.sz, &z.vz, &z.bottom, &z.top, &z.vsp),
+    }
+}
+
+/// The answer for a case whose sizes are wrong.
+pub(crate) fn bad_lengths() -> Truth {
+    Truth::Undefined {
+        reason: "fewer than 3 vertices or velocities of the wrong length".to_string(),
+    }
+}
+
+/// The answer when edges i-(i+1) and k-(k+1) meet at the window's start.
+pub(crate) fn crossing_at_start(n: usize, i: usize, k: usize) -> Truth {
+    Truth::Undefined {
+        reason: format!(
+            "the polygon is not simple: edges {i}-{} and {k}-{} cross at the window's start",
+            (i + 1) % n,
+            (k + 1) % n
+        ),
+    }
+}
+
+/// The answer when vertex k meets edge i-j at the shifted time tc + t0.
+pub(crate) fn vertex_meets_edge<F: ExactField>(
+    k: usize,
+    i: usize,
+    j: usize,
+    tc: &Alg<F>,
+    t0: &F,
+) -> Truth {
+    let when = ExactTime::from_alg(&tc.shifted(t0));
+    Truth::Undefined {
+        reason: format!(
+            "the polygon is not simple: vertex {k} meets edge {i}-{j} at t = {}",
+            when.to_decimal_string(9)
+        ),
+    }
+}
+
+/// The ground truth computed with exact arithmetic only (no floating filter).
+pub fn truth_unfiltered<F: ExactField>(c: &ExactCase<F>) -> Truth {
+    let Some((t0, t1)) = window(c) else {
+        return Truth::Misses;
     };
     let tw = t1.minus(&t0);
     let s = c.s.at(&c.v, &t0);
@@ -407,9 +495,7 @@ pub fn truth<F: ExactField>(c: &ExactCase<F>) -> Truth {
     let vels = &c.velocities;
     let n = poly.len();
     if n < 3 || vels.len() != n {
-        return Truth::Undefined {
-            reason: "fewer than 3 vertices or velocities of the wrong length".to_string(),
-        };
+        return bad_lengths();
     }
     // Simplicity at the window's start: non-adjacent edges do not meet
     // (vertices on non-incident edges are caught by the contact test below).
@@ -419,13 +505,7 @@ pub fn truth<F: ExactField>(c: &ExactCase<F>) -> Truth {
                 continue;
             }
             if segments_intersect(&poly[i], &poly[(i + 1) % n], &poly[k], &poly[(k + 1) % n]) {
-                return Truth::Undefined {
-                    reason: format!(
-                        "the polygon is not simple: edges {i}-{} and {k}-{} cross at the window's start",
-                        (i + 1) % n,
-                        (k + 1) % n
-                    ),
-                };
+                return crossing_at_start(n, i, k);
             }
         }
     }
@@ -439,13 +519,7 @@ pub fn truth<F: ExactField>(c: &ExactCase<F>) -> Truth {
             if let Some(tc) = earliest_contact(
                 &tw, &poly[k], &vels[k], &poly[i], &vels[i], &poly[j], &vels[j],
             ) {
-                let when = ExactTime::from_alg(&tc.shifted(&t0));
-                return Truth::Undefined {
-                    reason: format!(
-                        "the polygon is not simple: vertex {k} meets edge {i}-{j} at t = {}",
-                        when.to_decimal_string(9)
-                    ),
-                };
+                return vertex_meets_edge(k, i, j, &tc, &t0);
             }
         }
     }

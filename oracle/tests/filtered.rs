@@ -1,0 +1,325 @@
+//! The floating filter never changes an answer: on the same cases, the filtered
+//! oracle ([`paper_detect`], [`truth`], and the filtered per-function entry points
+//! of `polyguard_oracle::filter`) and the exact-only one ([`paper_detect_unfiltered`],
+//! [`truth_unfiltered`], the functions of `detect` / `contain` / `proximity` /
+//! `truth`) agree exactly: detected and decided_by, the truth's variant, its exact
+//! entry time (same representation) and its reason text. Both backends when the
+//! `rug` feature is on.
+//!
+//! The cases are built to defeat a filter: rational grid cases aimed exactly at
+//! vertices and edges (tests/common), f64 cases on the boundaries (points at
+//! exactly BUFF from an edge or a vertex and a few ulps off it, |p_x − s_x| = BUFF,
+//! trajectories through vertices and tangent to edges, far offsets with small
+//! polygons, tiny BUFF), and per-function cases with tiny integers, where zero
+//! leading coefficients, double roots, parallel and collinear motions are common.
+
+mod common;
+
+use proptest::prelude::*;
+
+use common::{cases, gen_case};
+use polyguard_oracle::qfield::Alg;
+use polyguard_oracle::{
+    filter, paper_detect, paper_detect_unfiltered, truth, truth_unfiltered, CaseF64, ExactCase,
+    ExactField, Q, V2,
+};
+
+/// Filtered and unfiltered answers for one case, in one backend.
+fn check<F: ExactField>(c: &ExactCase<F>) -> Result<(), TestCaseError> {
+    prop_assert_eq!(paper_detect(c), paper_detect_unfiltered(c));
+    prop_assert_eq!(truth(c), truth_unfiltered(c));
+    Ok(())
+}
+
+/// A small deterministic generator for the f64 cases.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        self.0
+    }
+    fn f(&mut self) -> f64 {
+        (self.next() >> 11) as f64 / (1u64 << 53) as f64
+    }
+    fn uni(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * self.f()
+    }
+    fn pick<T: Copy>(&mut self, xs: &[T]) -> T {
+        xs[(self.next() % xs.len() as u64) as usize]
+    }
+}
+
+/// x moved by k ulps (k may be negative).
+fn ulps(x: f64, k: i64) -> f64 {
+    let mut y = x;
+    for _ in 0..k.unsigned_abs() {
+        y = if k > 0 {
+            filter::next_up(y)
+        } else {
+            filter::next_down(y)
+        };
+    }
+    y
+}
+
+/// An owned f64 case.
+#[derive(Clone, Debug)]
+struct F64Case {
+    lookahead: f64,
+    buff: f64,
+    fac: f64,
+    pos: Vec<f64>,
+    vel: Vec<f64>,
+    verts: Vec<[f64; 2]>,
+    vels: Vec<[f64; 2]>,
+    slab: Option<[f64; 3]>,
+}
+
+impl F64Case {
+    fn exact<F: ExactField>(&self) -> Result<ExactCase<F>, polyguard_oracle::OracleError> {
+        ExactCase::from_f64(&CaseF64 {
+            lookahead: self.lookahead,
+            buff: self.buff,
+            fac: self.fac,
+            pos: &self.pos,
+            vel: &self.vel,
+            vertices: &self.verts,
+            velocities: &self.vels,
+            slab: self.slab,
+        })
+    }
+}
+
+/// A boundary-biased f64 case (see the module doc).
+fn gen_f64(seed: u64) -> F64Case {
+    let mut g = Rng(seed | 1);
+    let n = 3 + (g.next() % 6) as usize;
+    let off = g.pick(&[0.0, 1e3, 1e5, 1e7]) * g.pick(&[1.0, -1.0]);
+    let (cx, cy) = (off + g.uni(-1.0, 1.0), -off + g.uni(-1.0, 1.0));
+    let dyadic_rect = g.next() % 4 == 0;
+    let verts: Vec<[f64; 2]> = if dyadic_rect {
+        // An axis-aligned rectangle with dyadic corners: distances are exact.
+        let (w, h) = (g.pick(&[1.0, 2.5, 8.0]), g.pick(&[0.75, 3.0]));
+        let (x0, y0) = (cx.round(), cy.round());
+        vec![[x0, y0], [x0 + w, y0], [x0 + w, y0 + h], [x0, y0 + h]]
+    } else {
+        (0..n)
+            .map(|k| {
+                let a = (k as f64 + g.uni(0.1, 0.9)) * std::f64::consts::TAU / n as f64;
+                let r = g.uni(1.0, 10.0);
+                [cx + r * a.cos(), cy + r * a.sin()]
+            })
+            .collect()
+    };
+    let n = verts.len();
+    let base = [g.uni(-1.0, 1.0), g.uni(-1.0, 1.0)];
+    let vels: Vec<[f64; 2]> = match g.next() % 4 {
+        0 => vec![[0.0, 0.0]; n],
+        1 => vec![base; n],
+        2 => (0..n)
+            .map(|_| [base[0] + g.uni(-0.3, 0.3), base[1] + g.uni(-0.3, 0.3)])
+            .collect(),
+        _ => (0..n)
+            .map(|_| [g.pick(&[-1.0, 0.0, 0.5, 1.0]), g.pick(&[-0.5, 0.0, 1.0])])
+            .collect(),
+    };
+    let buff = g.pick(&[1.0 / 64.0, 0.01, 2f64.powi(-20), 1e-9]);
+    let fac = g.pick(&[1e-4, 1.0 / 64.0]);
+    let lookahead = g.pick(&[0.5, 1.0, 4.0, 10.0]);
+    let eps = g.pick(&[0i64, 0, 1, -1, 3, -3]);
+    let k = (g.next() % n as u64) as usize;
+    let l = (k + 1) % n;
+    let (p, q) = (verts[k], verts[l]);
+    let mut vel = [g.uni(-3.0, 3.0), g.uni(-3.0, 3.0)];
+    let pos: [f64; 2] = match g.next() % 7 {
+        // Far, random.
+        0 => [cx + g.uni(-30.0, 30.0), cy + g.uni(-30.0, 30.0)],
+        // At a vertex, a few ulps off.
+        1 => [ulps(p[0], eps), ulps(p[1], -eps)],
+        // At BUFF·(1 ± ulps) from the middle of an edge, outward (approximate normal).
+        2 => {
+            let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
+            let len = (dx * dx + dy * dy).sqrt().max(1e-300);
+            let d = ulps(buff, eps);
+            [
+                0.5 * (p[0] + q[0]) + d * dy / len,
+                0.5 * (p[1] + q[1]) - d * dx / len,
+            ]
+        }
+        // Through a vertex at a time inside the window.
+        3 => {
+            let h = lookahead * g.pick(&[0.0, 0.5, 1.0]);
+            let w = vels[k];
+            [p[0] + h * (w[0] - vel[0]), p[1] + h * (w[1] - vel[1])]
+        }
+        // |p_x − s_x| = BUFF and p_y = s_y − BUFF (the perturbation's thresholds).
+        4 => [ulps(p[0] + buff, eps), ulps(p[1] + buff, eps)],
+        // Tangent: along the edge's direction, at BUFF (or 0) from its line.
+        5 => {
+            let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
+            let len = (dx * dx + dy * dy).sqrt().max(1e-300);
+            let d = g.pick(&[0.0, buff]);
+            let start = g.uni(-2.0, -0.5);
+            vel = [dx / len + vels[k][0], dy / len + vels[k][1]];
+            [
+                p[0] + start * dx + d * dy / len,
+                p[1] + start * dy - d * dx / len,
+            ]
+        }
+        // At exactly BUFF from an edge of the dyadic rectangle (or a vertex).
+        _ => [ulps(p[0], eps), p[1] - ulps(buff, eps)],
+    };
+    let slab = if g.next() % 5 == 0 {
+        let bottom = g.uni(-5.0, 0.0);
+        Some([bottom, bottom + g.uni(0.0, 5.0), g.uni(-1.0, 1.0)])
+    } else {
+        None
+    };
+    let (pos, vel) = match slab {
+        Some(_) => (
+            vec![pos[0], pos[1], g.uni(-6.0, 6.0)],
+            vec![vel[0], vel[1], g.pick(&[0.0, 1.0, -0.5])],
+        ),
+        None => (pos.to_vec(), vel.to_vec()),
+    };
+    F64Case {
+        lookahead,
+        buff,
+        fac,
+        pos,
+        vel,
+        verts,
+        vels,
+        slab,
+    }
+}
+
+fn v<F: ExactField>(c: &[i64], i: usize) -> V2<F> {
+    V2::new(F::from_i64(c[i]), F::from_i64(c[i + 1]))
+}
+
+/// Two exact algebraic numbers written the same way.
+fn same_alg<F: ExactField>(a: &Option<Alg<F>>, b: &Option<Alg<F>>) -> bool {
+    match (a, b) {
+        (None, None) => true,
+        (Some(x), Some(y)) => x.p == y.p && x.q == y.q && x.d == y.d && x.r == y.r,
+        _ => false,
+    }
+}
+
+/// The per-function checks on tiny integer data, in one backend.
+fn check_functions<F: ExactField>(c: &[i64], k: i64) -> Result<(), TestCaseError> {
+    let t = F::from_i64(c[16].abs() + 1);
+    let fac = F::one().quotient(&F::from_i64(k)).unwrap_or_else(F::one);
+    let buff = F::one()
+        .quotient(&F::from_i64(k / 2 + 1))
+        .unwrap_or_else(F::one);
+    let p: Vec<V2<F>> = (0..8).map(|i| v(c, 2 * i)).collect();
+    prop_assert_eq!(
+        filter::edge_detect(&t, &p[0], &p[1], &p[2], &p[3], &p[4], &p[5], &fac),
+        polyguard_oracle::detect::edge_detect(&t, &p[0], &p[1], &p[2], &p[3], &p[4], &p[5], &fac)
+    );
+    prop_assert_eq!(
+        filter::segments_close(&p[0], &p[1], &p[2], &p[3], &buff),
+        polyguard_oracle::proximity::segments_close(&p[0], &p[1], &p[2], &p[3], &buff)
+    );
+    prop_assert_eq!(
+        filter::definitely_outside(&p[1..5], &p[0], &buff),
+        polyguard_oracle::contain::definitely_outside(&p[1..5], &p[0], &buff)
+    );
+    let a = filter::earliest_contact(&t, &p[0], &p[1], &p[2], &p[3], &p[4], &p[5]);
+    let b = polyguard_oracle::truth::earliest_contact(&t, &p[0], &p[1], &p[2], &p[3], &p[4], &p[5]);
+    prop_assert!(same_alg(&a, &b), "{:?} vs {:?}", a, b);
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(cases(192)))]
+
+    /// Rational grid cases aimed exactly at vertices and edges (2D, 3D, static, warping).
+    #[test]
+    fn grid_cases_agree(seed in any::<u64>()) {
+        let g = gen_case(seed);
+        if let Ok(c) = g.exact::<Q>() {
+            check(&c)?;
+        }
+        #[cfg(feature = "rug")]
+        if let Ok(c) = g.exact::<polyguard_oracle::R>() {
+            check(&c)?;
+        }
+    }
+
+    /// f64 cases on the boundaries (BUFF, vertices, tangents, far offsets).
+    #[test]
+    fn f64_boundary_cases_agree(seed in any::<u64>()) {
+        let g = gen_f64(seed);
+        if let Ok(c) = g.exact::<Q>() {
+            check(&c)?;
+        }
+        #[cfg(feature = "rug")]
+        if let Ok(c) = g.exact::<polyguard_oracle::R>() {
+            check(&c)?;
+        }
+    }
+
+    /// Tiny integers: zero leading coefficients, double roots, parallel and
+    /// collinear motion, points exactly on edges.
+    #[test]
+    fn functions_agree_on_tiny_integers(
+        c in proptest::collection::vec(-3i64..=3, 17),
+        k in 2i64..=6,
+    ) {
+        check_functions::<Q>(&c, k)?;
+        #[cfg(feature = "rug")]
+        check_functions::<polyguard_oracle::R>(&c, k)?;
+    }
+}
+
+/// Hand-made degenerate cases: a double root (the point grazes a warping edge),
+/// a point exactly at BUFF from an edge, a ray exactly through a vertex.
+#[test]
+fn degenerate_cases_agree() {
+    let square = [[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]];
+    let buff = 1.0 / 64.0;
+    type Shape<'a> = (&'a [f64], &'a [f64], &'a [[f64; 2]]);
+    let shapes: [Shape<'_>; 5] = [
+        // Exactly BUFF below the bottom edge, moving along it.
+        (&[1.0, -buff], &[1.0, 0.0], &[]),
+        // Straight through the vertex (4, 4).
+        (&[8.0, 8.0], &[-1.0, -1.0], &[]),
+        // Grazing the corner: touches (0, 0) exactly at t = 1.
+        (&[-1.0, 1.0], &[1.0, -1.0], &[]),
+        // A warping square whose top edge rises and falls back: point on its path.
+        (
+            &[2.0, 5.0],
+            &[0.0, 0.0],
+            &[[0.0, 0.0], [0.0, 0.0], [0.0, 1.0], [0.0, 1.0]],
+        ),
+        // A static square moving right, the point exactly on its left edge's path.
+        (
+            &[-2.0, 2.0],
+            &[0.0, 0.0],
+            &[[1.0, 0.0], [1.0, 0.0], [1.0, 0.0], [1.0, 0.0]],
+        ),
+    ];
+    for (pos, vel, vels) in shapes {
+        for lookahead in [1.0, 2.0, 10.0] {
+            let c = F64Case {
+                lookahead,
+                buff,
+                fac: 1e-4,
+                pos: pos.to_vec(),
+                vel: vel.to_vec(),
+                verts: square.to_vec(),
+                vels: vels.to_vec(),
+                slab: None,
+            };
+            let q = c.exact::<Q>().expect("valid case");
+            assert_eq!(paper_detect(&q), paper_detect_unfiltered(&q), "{c:?}");
+            assert_eq!(truth(&q), truth_unfiltered(&q), "{c:?}");
+        }
+    }
+}

@@ -26,7 +26,7 @@ pub struct AssureArgs {
     #[command(subcommand)]
     pub merge: Option<MergeCommand>,
     /// How many cases (the default takes about a minute on 2 cores).
-    #[arg(long, default_value_t = 4_000)]
+    #[arg(long, default_value_t = 250_000)]
     pub cases: u64,
     /// The campaign's seed: case k is the same for every thread count and shard.
     #[arg(long, default_value_t = 1)]

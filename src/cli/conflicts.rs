@@ -1,0 +1,429 @@
+//! `polyguard conflicts SCENARIO`: Paper B Algorithm 1 on a scenario GeoJSON
+//! (shared/spec/scenario.md), writing the answer JSON of that spec.
+
+use crate::conflict::{pipeline, stage4::Method, Motion, Object};
+use crate::earth::{inverse_mercator, Merc};
+use crate::scenario::{self, Scenario, ScenarioError};
+use serde_json::{json, Value};
+use std::fmt::Write as _;
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::Instant;
+
+/// Inputs with at least this many objects get a progress display (on a terminal).
+const PROGRESS_MIN_OBJECTS: usize = 10_000;
+
+/// Exit code when some features were rejected (the answer is still written).
+const EXIT_BAD_FEATURES: u8 = 1;
+/// Exit code when the scenario cannot be read at all.
+const EXIT_FATAL: u8 = 2;
+
+/// Arguments of `polyguard conflicts`.
+#[derive(clap::Args, Debug, Clone)]
+pub struct ConflictsArgs {
+    /// Scenario GeoJSON (shared/spec/scenario.md); `-` reads standard input.
+    pub scenario: PathBuf,
+    /// Write the answer here instead of standard output.
+    #[arg(long, short)]
+    pub output: Option<PathBuf>,
+    /// Draw areas, tracks, swept hulls and conflict regions (like the paper's Figs 2–5).
+    #[arg(long)]
+    pub svg: Option<PathBuf>,
+    /// Stage 4 time tolerance in seconds.
+    #[arg(long, default_value_t = 1.0)]
+    pub tolerance_s: f64,
+    /// Pretty-print the answer.
+    #[arg(long)]
+    pub pretty: bool,
+    /// No progress display.
+    #[arg(long)]
+    pub quiet: bool,
+    /// Leave out the conflict regions (`"region": null`) and the paper's projection
+    /// windows: the answer of a 10⁶-object scenario is otherwise gigabytes of coordinates.
+    #[arg(long)]
+    pub no_regions: bool,
+}
+
+/// A JSON number, or `null` for the unbounded ends of always-present areas.
+fn num(out: &mut String, x: f64) {
+    if x.is_finite() {
+        let _ = write!(out, "{x}");
+    } else {
+        out.push_str("null");
+    }
+}
+
+/// A JSON string literal.
+fn string(out: &mut String, s: &str) {
+    out.push_str(&Value::from(s).to_string());
+}
+
+/// Region coordinates are written with this many decimals of a degree: 1e-7° ≈ 1.1 cm,
+/// far below the stage tolerances, and a fixed-point writer is several times faster than
+/// shortest round-trip formatting on the megabytes of a large answer.
+const REGION_DECIMALS: u32 = 7;
+
+fn coord(out: &mut String, x: f64) {
+    let scale = 10i64.pow(REGION_DECIMALS);
+    let v = (x * scale as f64).round() as i64;
+    if v < 0 {
+        out.push('-');
+    }
+    let a = v.unsigned_abs();
+    let (int, frac) = (a / scale as u64, a % scale as u64);
+    let _ = write!(
+        out,
+        "{int}.{frac:0width$}",
+        width = REGION_DECIMALS as usize
+    );
+}
+
+fn ring_lonlat(out: &mut String, ring: &[Merc]) {
+    out.push('[');
+    for (k, &m) in ring.iter().chain(ring.first()).enumerate() {
+        let (lon, lat) = inverse_mercator(m).to_degrees();
+        if k > 0 {
+            out.push(',');
+        }
+        out.push('[');
+        coord(out, lon);
+        out.push(',');
+        coord(out, lat);
+        out.push(']');
+    }
+    out.push(']');
+}
+
+/// The answer JSON of the spec for a pipeline result, written directly (the answer of a
+/// large scenario holds megabytes of region coordinates; building a `serde_json::Value`
+/// first costs more than the four stages).
+pub fn answer(
+    scenario: &Scenario,
+    conflicts: &[pipeline::Conflict],
+    stats: &pipeline::Stats,
+    errors: &[ScenarioError],
+    extra_ms: (f64, f64, f64),
+    regions: bool,
+) -> String {
+    let per = if regions { 640 } else { 200 };
+    let mut out = String::with_capacity(1024 + conflicts.len() * per);
+    out.push_str("{\"conflicts\":[");
+    for (k, c) in conflicts.iter().enumerate() {
+        if k > 0 {
+            out.push(',');
+        }
+        let (decided_by, method) = match c.method {
+            Method::AreaOverlap => ("area_overlap", "area_overlap"),
+            Method::Linear => ("time_of_intersection", "exact_linear"),
+            Method::Advancement => ("time_of_intersection", "certified_advancement"),
+        };
+        out.push_str("\n{\"a\":");
+        string(&mut out, &scenario.features[c.a as usize].id);
+        out.push_str(",\"b\":");
+        string(&mut out, &scenario.features[c.b as usize].id);
+        out.push_str(",\"t_start\":");
+        num(&mut out, c.t_start);
+        out.push_str(",\"t_end\":");
+        num(&mut out, c.t_end);
+        let _ = write!(
+            out,
+            ",\"decided_by\":\"{decided_by}\",\"method\":\"{method}\",\"projection_windows\":["
+        );
+        for (i, w) in c.paper.iter().enumerate() {
+            if i > 0 {
+                out.push(',');
+            }
+            match w {
+                Some((a, b)) => {
+                    out.push('[');
+                    num(&mut out, *a);
+                    out.push(',');
+                    num(&mut out, *b);
+                    out.push(']');
+                }
+                None => out.push_str("null"),
+            }
+        }
+        out.push_str("],\"region\":");
+        match if regions { c.rings.len() } else { 0 } {
+            0 => out.push_str("null"),
+            1 => {
+                out.push_str("{\"type\":\"Polygon\",\"coordinates\":[");
+                ring_lonlat(&mut out, &c.rings[0]);
+                out.push_str("]}");
+            }
+            _ => {
+                out.push_str("{\"type\":\"MultiPolygon\",\"coordinates\":[");
+                for (i, r) in c.rings.iter().enumerate() {
+                    if i > 0 {
+                        out.push(',');
+                    }
+                    out.push('[');
+                    ring_lonlat(&mut out, r);
+                    out.push(']');
+                }
+                out.push_str("]}");
+            }
+        }
+        out.push('}');
+    }
+    let (parse_ms, objects_ms, total_ms) = extra_ms;
+    let stats_v = json!({
+        "objects": scenario.features.len(),
+        "stage_objects": stats.objects,
+        "candidate_pairs": stats.candidate_pairs,
+        "region_pairs": stats.region_pairs,
+        "window_pairs": stats.window_pairs,
+        "interval_pairs": stats.interval_pairs,
+        "exact_linear_pairs": stats.linear_pairs,
+        "advancement_pairs": stats.advancement_pairs,
+        "conflicts": conflicts.len(),
+        "rejected_features": errors.len(),
+        "timings_ms": {
+            "parse": parse_ms,
+            "objects": objects_ms,
+            "stage1": stats.stage1_ms,
+            "stage2": stats.stage2_ms,
+            "stage3": stats.stage3_ms,
+            "stage4": stats.stage4_ms,
+            "total": total_ms,
+        }
+    });
+    let errors_v: Vec<Value> = errors
+        .iter()
+        .map(|e| json!({"index": e.index, "id": e.id, "field": e.field, "message": e.to_string()}))
+        .collect();
+    let _ = write!(
+        out,
+        "],\n\"stats\":{stats_v},\n\"errors\":{}}}",
+        Value::from(errors_v)
+    );
+    out
+}
+
+/// Everything `conflicts` computes for one scenario.
+pub struct Analysis {
+    /// The answer JSON text.
+    pub answer: String,
+    /// Rejected features.
+    pub errors: Vec<ScenarioError>,
+    /// The valid features.
+    pub scenario: Scenario,
+    /// Their stage objects.
+    pub objects: Vec<Object>,
+    /// The conflicts.
+    pub conflicts: Vec<pipeline::Conflict>,
+}
+
+/// Paper B Algorithm 1 on scenario text.
+pub fn analyse(text: &str, tolerance_h: f64, progress: bool) -> Result<Analysis, ScenarioError> {
+    analyse_with(text, tolerance_h, progress, true)
+}
+
+/// [`analyse`], optionally without the regions in the answer.
+pub fn analyse_with(
+    text: &str,
+    tolerance_h: f64,
+    progress: bool,
+    regions: bool,
+) -> Result<Analysis, ScenarioError> {
+    let t_all = Instant::now();
+    let (sc, errors) = scenario::parse(text)?;
+    let parse_ms = t_all.elapsed().as_secs_f64() * 1e3;
+    let t_obj = Instant::now();
+    let objects = scenario::objects(&sc);
+    let objects_ms = t_obj.elapsed().as_secs_f64() * 1e3;
+    let bar = (progress && objects.len() >= PROGRESS_MIN_OBJECTS).then(|| {
+        let b = indicatif::ProgressBar::new_spinner();
+        b.set_message(format!("four stages over {} objects", objects.len()));
+        b.enable_steady_tick(std::time::Duration::from_millis(200));
+        b
+    });
+    let (conflicts, stats) = pipeline::run(
+        &objects,
+        pipeline::Options {
+            tolerance_h,
+            details: regions,
+        },
+    );
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
+    let total_ms = t_all.elapsed().as_secs_f64() * 1e3;
+    let answer = answer(
+        &sc,
+        &conflicts,
+        &stats,
+        &errors,
+        (parse_ms, objects_ms, total_ms),
+        regions,
+    );
+    Ok(Analysis {
+        answer,
+        errors,
+        scenario: sc,
+        objects,
+        conflicts,
+    })
+}
+
+/// An SVG drawing in the Mercator plane: areas blue, track rectangles' swept hulls dashed
+/// green with the reference track solid, conflict regions red.
+pub fn svg(sc: &Scenario, objects: &[Object], conflicts: &[pipeline::Conflict]) -> String {
+    let mut b = [
+        f64::INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NEG_INFINITY,
+    ];
+    for o in objects {
+        b[0] = b[0].min(o.aabb[0]);
+        b[1] = b[1].min(o.aabb[1]);
+        b[2] = b[2].max(o.aabb[2]);
+        b[3] = b[3].max(o.aabb[3]);
+    }
+    let size = 1000.0;
+    let span = (b[2] - b[0]).max(b[3] - b[1]).max(f64::MIN_POSITIVE);
+    let k = size / span;
+    let pt = |p: Merc| ((p[0] - b[0]) * k, (b[3] - p[1]) * k);
+    let path = |ring: &[Merc]| {
+        let mut s = String::new();
+        for (i, &p) in ring.iter().enumerate() {
+            let (x, y) = pt(p);
+            let _ = write!(s, "{}{x:.2},{y:.2} ", if i == 0 { "M" } else { "L" });
+        }
+        s.push('Z');
+        s
+    };
+    let mut out = format!(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"-10 -10 {} {}\">\n",
+        size + 20.0,
+        size + 20.0
+    );
+    // features take turns in the paper's colours (blue, green) and two more
+    const PALETTE: [&str; 4] = ["blue", "green", "purple", "darkorange"];
+    for o in objects {
+        let id = &sc.features[o.owner as usize].id;
+        let colour = PALETTE[o.owner as usize % PALETTE.len()];
+        match &o.motion {
+            Motion::Static { ring, .. } => {
+                let _ = writeln!(
+                    out,
+                    "<path d=\"{}\" fill=\"none\" stroke=\"{colour}\"><title>{id}</title></path>",
+                    path(ring)
+                );
+            }
+            Motion::Moving(leg) => {
+                let _ = writeln!(
+                    out,
+                    "<path d=\"{}\" fill=\"none\" stroke=\"{colour}\" stroke-dasharray=\"4 3\"><title>{id}</title></path>",
+                    path(&o.sweep)
+                );
+                let (x0, y0) = pt(crate::earth::mercator(leg.start));
+                let (x1, y1) = pt(crate::earth::mercator(leg.end));
+                let _ = writeln!(
+                    out,
+                    "<line x1=\"{x0:.2}\" y1=\"{y0:.2}\" x2=\"{x1:.2}\" y2=\"{y1:.2}\" stroke=\"{colour}\"/>"
+                );
+                for t in [leg.t0, leg.t1] {
+                    let _ = writeln!(
+                        out,
+                        "<path d=\"{}\" fill=\"none\" stroke=\"{colour}\"/>",
+                        path(&leg.merc_vertices_at(t))
+                    );
+                }
+            }
+        }
+    }
+    for c in conflicts {
+        for r in &c.rings {
+            let _ = writeln!(
+                out,
+                "<path d=\"{}\" fill=\"red\" fill-opacity=\"0.3\" stroke=\"red\" stroke-dasharray=\"2 2\"/>",
+                path(r)
+            );
+        }
+    }
+    out.push_str("</svg>\n");
+    out
+}
+
+/// Runs `polyguard conflicts`.
+pub fn run(args: &ConflictsArgs) -> ExitCode {
+    let text = if args.scenario.as_os_str() == "-" {
+        let mut s = String::new();
+        match std::io::Read::read_to_string(&mut std::io::stdin(), &mut s) {
+            Ok(_) => s,
+            Err(e) => {
+                eprintln!("polyguard conflicts: reading standard input: {e}");
+                return ExitCode::from(EXIT_FATAL);
+            }
+        }
+    } else {
+        match std::fs::read_to_string(&args.scenario) {
+            Ok(s) => s,
+            Err(e) => {
+                eprintln!("polyguard conflicts: {}: {e}", args.scenario.display());
+                return ExitCode::from(EXIT_FATAL);
+            }
+        }
+    };
+    if !(args.tolerance_s.is_finite() && args.tolerance_s > 0.0) {
+        eprintln!("polyguard conflicts: --tolerance-s must be a positive number");
+        return ExitCode::from(EXIT_FATAL);
+    }
+    let Analysis {
+        answer,
+        errors,
+        scenario: sc,
+        objects,
+        conflicts,
+    } = match analyse_with(
+        &text,
+        args.tolerance_s / 3600.0,
+        !args.quiet,
+        !args.no_regions,
+    ) {
+        Ok(r) => r,
+        Err(e) => {
+            eprintln!("polyguard conflicts: {}: {e}", args.scenario.display());
+            return ExitCode::from(EXIT_FATAL);
+        }
+    };
+    for e in &errors {
+        eprintln!("polyguard conflicts: {e}");
+    }
+    let text = if args.pretty {
+        serde_json::from_str::<Value>(&answer)
+            .and_then(|v| serde_json::to_string_pretty(&v))
+            .unwrap_or(answer)
+    } else {
+        answer
+    };
+    let mut text = text;
+    text.push('\n');
+    let written = match &args.output {
+        Some(p) => std::fs::write(p, &text),
+        // one write: stdout is line-buffered and the answer has a line per conflict
+        None => std::io::Write::write_all(&mut std::io::stdout().lock(), text.as_bytes()),
+    };
+    if let Err(e) = written {
+        eprintln!("polyguard conflicts: writing the answer: {e}");
+        return ExitCode::from(EXIT_FATAL);
+    }
+    if let Some(p) = &args.svg {
+        if let Err(e) = std::fs::write(p, svg(&sc, &objects, &conflicts)) {
+            eprintln!("polyguard conflicts: writing {}: {e}", p.display());
+            return ExitCode::from(EXIT_FATAL);
+        }
+    }
+    let code = if errors.is_empty() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(EXIT_BAD_FEATURES)
+    };
+    // The process ends right after: freeing millions of small allocations one by one would
+    // cost more than the four stages on large inputs, and the OS reclaims them at once.
+    std::mem::forget((sc, objects, conflicts));
+    code
+}

@@ -1,0 +1,673 @@
+//! Paper B, Section V: geography on the sphere (Mercator, rhumb lines).
+//!
+//! Conventions (all internal quantities):
+//! * longitudes/latitudes in **radians** ([`LonLat`]); the scenario file speaks degrees;
+//! * the Mercator plane in radians: `x = λ`, `y = ψ(φ)` (eqs 25–26). Paper defect: a
+//!   Mercator plane with `x` in degrees and `y` in radians is not conformal, rhumb lines
+//!   are still straight but the rectangles are distorted and true conflicts are rejected;
+//! * distances in nautical miles, speeds in knots, times in hours;
+//! * the Earth is the sphere of radius [`EARTH_RADIUS_NM`] (the paper's model).
+//!
+//! Longitudes are not wrapped: the Mercator plane is the unrolled strip, so a track may
+//! run past ±180° (the scaling generator relies on this; see `cli::generate`).
+
+use core::f64::consts::{FRAC_PI_2, PI};
+
+/// Paper B eqs 23–24, R: the mean Earth radius 6371.0088 km expressed in nautical miles
+/// (1 nm = 1.852 km exactly), the sphere of the paper's own model (issue 5).
+pub const EARTH_RADIUS_NM: f64 = 3440.065;
+
+/// Below this latitude difference (radians) `Δψ` is evaluated by the atanh difference
+/// formula instead of `ψ(φ2) − ψ(φ1)`: 0.1 rad keeps the atanh argument below
+/// `sin 0.1 / (…)`, far from 1 where atanh loses accuracy, while above it the plain
+/// difference loses at most one bit to cancellation.
+const DPSI_SMALL_DPHI: f64 = 0.1;
+
+/// Smallest latitude step (radians) for which [`Leg::merc_vertices_at`] takes the mean of
+/// sec as the plain quotient `(ψ(φ+h) − ψ(φ))/h`: with |ψ| ≤ 3.2 (|φ| ≤ 85°) the
+/// difference carries ≤ 2 ulp(3.2) ≈ 9e-16 absolute error, ≤ 1e-12 relative for
+/// |h| ≥ 1e-3, i.e. ≤ 1e-14 rad on a vertex offset of ≤ 0.01 rad (≈ 60 nm). Smaller steps
+/// use the cancellation-free [`mean_sec`].
+const FAST_MEAN_SEC_MIN_H: f64 = 1e-3;
+
+/// Relative safety factor applied to derived speed bounds so that the rounding of the
+/// few f64 operations that evaluate them (a dozen, each ≤ 2⁻⁵³ relative) can never make a
+/// bound too small: 1e-9 ≫ 12 · 2⁻⁵³ ≈ 1.3e-15.
+pub const BOUND_SAFETY: f64 = 1.0 + 1e-9;
+
+/// A point on the sphere, radians.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LonLat {
+    /// Longitude λ, radians (not wrapped).
+    pub lon: f64,
+    /// Latitude φ, radians.
+    pub lat: f64,
+}
+
+impl LonLat {
+    /// A point from degrees `(lon, lat)`.
+    pub fn from_degrees(lon: f64, lat: f64) -> Self {
+        LonLat {
+            lon: lon.to_radians(),
+            lat: lat.to_radians(),
+        }
+    }
+    /// `(lon, lat)` in degrees.
+    pub fn to_degrees(self) -> (f64, f64) {
+        (self.lon.to_degrees(), self.lat.to_degrees())
+    }
+}
+
+/// A point of the Mercator plane (radians): `[x, y]`.
+pub type Merc = [f64; 2];
+
+/// Paper B eq 26: `ψ(φ) = ln tan(π/4 + φ/2)`, evaluated as `asinh(tan φ)` (the same
+/// function, without the cancellation of `ln` near the equator).
+pub fn mercator_y(lat: f64) -> f64 {
+    lat.tan().asinh()
+}
+
+/// Paper B eqs 25–26: Mercator forward, `x = λ`, `y = ψ(φ)` (radians).
+pub fn mercator(p: LonLat) -> Merc {
+    [p.lon, mercator_y(p.lat)]
+}
+
+/// Paper B Algorithm 4 (inverse Mercator): `φ = 2 atan(tanh(y/2))`, evaluated as the
+/// equivalent `atan(sinh y)` (inverse Gudermannian).
+pub fn mercator_lat(y: f64) -> f64 {
+    y.sinh().atan()
+}
+
+/// Paper B Algorithm 4: inverse Mercator, `λ = x`, `φ = gd(y)`.
+pub fn inverse_mercator(m: Merc) -> LonLat {
+    LonLat {
+        lon: m[0],
+        lat: mercator_lat(m[1]),
+    }
+}
+
+/// Paper B eq 24 / Algorithm 4: `Δψ = ψ(φ2) − ψ(φ1)`. For small `Δφ` it uses
+/// `atanh((sin φ2 − sin φ1)/(1 − sin φ1 sin φ2))` with both numerator and denominator
+/// written without cancellation, so `Δψ` keeps full relative accuracy as `Δφ → 0`.
+pub fn delta_psi(lat1: f64, lat2: f64) -> f64 {
+    let dphi = lat2 - lat1;
+    if dphi.abs() < DPSI_SMALL_DPHI {
+        let half = 0.5 * dphi;
+        let sh = half.sin();
+        let num = 2.0 * (lat1 + half).cos() * sh;
+        let den = 2.0 * sh * sh + lat1.cos() * lat2.cos();
+        (num / den).atanh()
+    } else {
+        mercator_y(lat2) - mercator_y(lat1)
+    }
+}
+
+/// Paper B Algorithm 4, `w`: the ratio `Δφ/Δψ` (the mean of `cos` in the sense of
+/// eq 24), with its east–west limit `cos φ1` when `Δφ = 0`. Paper defect: eqs 24, 27 and
+/// 29 write `tan θ · Δψ`, which is `∞ · 0` on east–west bearings; this ratio is the limit.
+pub fn rhumb_q(lat1: f64, lat2: f64) -> f64 {
+    let dphi = lat2 - lat1;
+    if dphi == 0.0 {
+        lat1.cos()
+    } else {
+        dphi / delta_psi(lat1, lat2)
+    }
+}
+
+/// Paper B eq 24 read as a mean: `M(φ, h) = (ψ(φ+h) − ψ(φ))/h`, the mean of `sec` over
+/// `[φ, φ+h]` (`sec φ` when `h = 0`); `1/rhumb_q`.
+pub fn mean_sec(lat: f64, h: f64) -> f64 {
+    // the step actually taken between the two f64 latitudes (a tiny `h` may vanish)
+    let lat2 = lat + h;
+    let dphi = lat2 - lat;
+    if dphi == 0.0 {
+        1.0 / lat.cos()
+    } else {
+        delta_psi(lat, lat2) / dphi
+    }
+}
+
+/// Paper B eqs 23–24 (with the east–west limit): the point reached from `p` by a rhumb
+/// line of bearing `bearing` (radians, clockwise from north) and length `dist_nm`.
+/// `φ2 = φ1 + d cos θ / R`, `λ2 = λ1 + d sin θ / (R · Δφ/Δψ)`.
+pub fn rhumb_destination(p: LonLat, bearing: f64, dist_nm: f64) -> LonLat {
+    let dlat = dist_nm * bearing.cos() / EARTH_RADIUS_NM;
+    let lat2 = p.lat + dlat;
+    let q = rhumb_q(p.lat, lat2);
+    LonLat {
+        lon: p.lon + dist_nm * bearing.sin() / (EARTH_RADIUS_NM * q),
+        lat: lat2,
+    }
+}
+
+/// Paper B Algorithm 4 (distance part) and eq 24 inverted: rhumb-line distance (nm) and
+/// bearing (radians) from `a` to `b`: `θ = atan2(Δλ, Δψ)`,
+/// `d = R √(Δφ² + w² Δλ²)` with `w = Δφ/Δψ` (`cos φ` on east–west lines).
+pub fn rhumb_inverse(a: LonLat, b: LonLat) -> (f64, f64) {
+    let dlat = b.lat - a.lat;
+    let dlon = b.lon - a.lon;
+    let dpsi = delta_psi(a.lat, b.lat);
+    let q = if dlat == 0.0 {
+        a.lat.cos()
+    } else {
+        dlat / dpsi
+    };
+    (EARTH_RADIUS_NM * dlat.hypot(q * dlon), dlon.atan2(dpsi))
+}
+
+/// Paper B Algorithm 4 (distance part): the rhumb-line distance (nm) from `a` to `b`,
+/// `R √(Δφ² + w² Δλ²)` with `w = Δφ/Δψ` (`cos φ` on east–west lines).
+pub fn rhumb_distance(a: LonLat, b: LonLat) -> f64 {
+    let dlat = b.lat - a.lat;
+    let q = rhumb_q(a.lat, b.lat);
+    EARTH_RADIUS_NM * dlat.hypot(q * (b.lon - a.lon))
+}
+
+/// Paper B Table 2: front, back and side distances (nm) of a track's rectangle.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RectDims {
+    /// `d_f`: reference point to the front edge.
+    pub front: f64,
+    /// `d_b`: reference point to the back edge.
+    pub back: f64,
+    /// `d_s`: reference point to each side edge.
+    pub side: f64,
+}
+
+/// Paper B Table 2: the two rhumb steps `(d, ψ)` to each vertex, in **ring order**
+/// 1-2-4-3. Paper defect: taking the table's rows 1-2-3-4 as a ring gives a bow-tie
+/// (1 and 2 are the front corners, 3 and 4 the back ones, both listed right then left).
+pub fn table2_steps(dims: RectDims, bearing: f64) -> [[(f64, f64); 2]; 4] {
+    let right = (dims.side, bearing + FRAC_PI_2);
+    let left = (dims.side, bearing - FRAC_PI_2);
+    let front = (dims.front, bearing);
+    let back = (dims.back, bearing + PI);
+    [
+        [front, right], // vertex 1
+        [front, left],  // vertex 2
+        [back, left],   // vertex 4
+        [back, right],  // vertex 3
+    ]
+}
+
+/// Paper B eqs 29–30: a vertex reached from the reference point `c` (at the *current*
+/// time: the paper's eq 29 writes `c_x(t0)`, a typo for `c_x(t)`) by successive rhumb steps.
+pub fn vertex_by_steps(c: LonLat, steps: &[(f64, f64)]) -> LonLat {
+    steps
+        .iter()
+        .fold(c, |p, &(d, psi)| rhumb_destination(p, psi, d))
+}
+
+/// Paper B Section V, eqs 23–30 and Algorithm 4: one straight Mercator segment of a track,
+/// the rectangle's reference point moving at constant speed along one rhumb line.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Leg {
+    /// Reference point at `t0`.
+    pub start: LonLat,
+    /// Reference point at `t1`.
+    pub end: LonLat,
+    /// Rhumb bearing θ (radians).
+    pub bearing: f64,
+    /// Rhumb length (nm).
+    pub length_nm: f64,
+    /// Speed `s` (knots), > 0.
+    pub speed_kn: f64,
+    /// Time the reference point is at `start` (h).
+    pub t0: f64,
+    /// Time the reference point reaches `end` (h): `t0 + length/speed`.
+    pub t1: f64,
+    /// Rectangle of Table 2.
+    pub dims: RectDims,
+    /// Table 2 steps, ring order.
+    pub steps: [[(f64, f64); 2]; 4],
+    /// `c_m(t0)`, `c_m(tf)`: the ends in the Mercator plane (eqs 25–26).
+    pub merc: [Merc; 2],
+    /// `(cos θ, sin θ)`.
+    cos_sin: [f64; 2],
+    /// Per vertex (ring order), the constants of eqs 29–30:
+    /// `[a, b, d1 sin ψ1 / R, d2 sin ψ2 / R]` with `a = d1 cos ψ1 / R`, `b = d2 cos ψ2 / R`.
+    step_consts: [[f64; 4]; 4],
+}
+
+impl Leg {
+    /// Paper B Section V: a leg from `start` to `end` leaving at `t0` with speed `speed_kn`.
+    pub fn new(start: LonLat, end: LonLat, speed_kn: f64, t0: f64, dims: RectDims) -> Leg {
+        let (length_nm, bearing) = rhumb_inverse(start, end);
+        let steps = table2_steps(dims, bearing);
+        let step_consts = steps.map(|[(d1, p1), (d2, p2)]| {
+            [
+                d1 * p1.cos() / EARTH_RADIUS_NM,
+                d2 * p2.cos() / EARTH_RADIUS_NM,
+                d1 * p1.sin() / EARTH_RADIUS_NM,
+                d2 * p2.sin() / EARTH_RADIUS_NM,
+            ]
+        });
+        Leg {
+            start,
+            end,
+            bearing,
+            length_nm,
+            speed_kn,
+            t0,
+            t1: t0 + length_nm / speed_kn,
+            dims,
+            steps,
+            step_consts,
+            merc: [mercator(start), mercator(end)],
+            cos_sin: [bearing.cos(), bearing.sin()],
+        }
+    }
+
+    /// Paper B eqs 23–24: the reference point `c_s(t)` (t clamped to the leg's life).
+    pub fn reference_at(&self, t: f64) -> LonLat {
+        self.reference_with_psi(t).0
+    }
+
+    /// Paper B eqs 23–24 and 26: `c_s(t)` and `ψ(φ_c(t))`, with the bearing's cosine and
+    /// sine and `ψ(φ_c(t0))` precomputed (the same formula as [`rhumb_destination`]).
+    fn reference_with_psi(&self, t: f64) -> (LonLat, f64) {
+        let t = t.clamp(self.t0, self.t1);
+        if t == self.t1 {
+            return (self.end, self.merc[1][1]);
+        }
+        let d = self.speed_kn * (t - self.t0);
+        let lat = self.start.lat + d * self.cos_sin[0] / EARTH_RADIUS_NM;
+        let psi = mercator_y(lat);
+        let dphi = lat - self.start.lat;
+        let m = if dphi.abs() >= FAST_MEAN_SEC_MIN_H {
+            (psi - self.merc[0][1]) / dphi
+        } else {
+            mean_sec(self.start.lat, dphi)
+        };
+        let lon = self.start.lon + d * self.cos_sin[1] / EARTH_RADIUS_NM * m;
+        (LonLat { lon, lat }, psi)
+    }
+
+    /// Paper B eqs 27–28: the reference point in the Mercator plane.
+    pub fn reference_merc_at(&self, t: f64) -> Merc {
+        mercator(self.reference_at(t))
+    }
+
+    /// Paper B eqs 29–30 and Table 2: the rectangle's vertices at time `t`, ring order 1-2-4-3.
+    pub fn vertices_at(&self, t: f64) -> [LonLat; 4] {
+        let c = self.reference_at(t);
+        self.steps.map(|s| vertex_by_steps(c, &s))
+    }
+
+    /// Paper B eqs 29–30 in the Mercator plane (eqs 25–26), evaluated with the step
+    /// constants precomputed: vertex `k` is `x = λ_c + s1·M(u, a) + s2·M(u+a, b)`,
+    /// `y = ψ(u + a + b)` with `u = φ_c(t)` (the same formulas as [`Leg::vertices_at`]
+    /// followed by [`mercator`], sharing the front and back steps' means).
+    pub fn merc_vertices_at(&self, t: f64) -> [Merc; 4] {
+        let (c, psi_u) = self.reference_with_psi(t);
+        let u = c.lat;
+        // M(φ, h) from ψ values already at hand when h is large enough for the plain
+        // difference (see FAST_MEAN_SEC_MIN_H), else the cancellation-free form.
+        let mean = |lat: f64, psi_lat: f64, h: f64, psi_end: f64| {
+            let dphi = (lat + h) - lat;
+            if dphi.abs() >= FAST_MEAN_SEC_MIN_H {
+                (psi_end - psi_lat) / dphi
+            } else {
+                mean_sec(lat, h)
+            }
+        };
+        let (af, ab) = (self.step_consts[0][0], self.step_consts[2][0]);
+        let (psi_f, psi_b) = (mercator_y(u + af), mercator_y(u + ab));
+        let front = mean(u, psi_u, af, psi_f);
+        let back = mean(u, psi_u, ab, psi_b);
+        let mut out = [[0.0; 2]; 4];
+        for (k, o) in out.iter_mut().enumerate() {
+            let [a, b, s1, s2] = self.step_consts[k];
+            let (m1, psi_mid) = if k < 2 { (front, psi_f) } else { (back, psi_b) };
+            let mid = u + a;
+            let y = mercator_y(mid + b);
+            *o = [c.lon + s1 * m1 + s2 * mean(mid, psi_mid, b, y), y];
+        }
+        out
+    }
+
+    /// Paper B Section V: a leg is *linear* (eq 20 applies) when it runs due east or west:
+    /// the latitude is constant, so every vertex translates along x at a constant rate.
+    pub fn is_east_west(&self) -> bool {
+        self.start.lat == self.end.lat
+    }
+
+    /// Paper B eq 20: for an east–west leg, the constant Mercator velocity of every vertex
+    /// (radians of x per hour); `None` otherwise.
+    pub fn linear_velocity(&self) -> Option<Merc> {
+        if !self.is_east_west() || self.t1 <= self.t0 {
+            return None;
+        }
+        Some([(self.end.lon - self.start.lon) / (self.t1 - self.t0), 0.0])
+    }
+
+    /// Latitude offsets of the two steps of vertex `k`: `(a, a + b)` with
+    /// `a = d1 cos ψ1 / R`, `b = d2 cos ψ2 / R` (eq 30), independent of time.
+    fn lat_offsets(&self, k: usize) -> (f64, f64) {
+        let [(d1, p1), (d2, p2)] = self.steps[k];
+        let a = d1 * p1.cos() / EARTH_RADIUS_NM;
+        (a, a + d2 * p2.cos() / EARTH_RADIUS_NM)
+    }
+
+    /// Largest |latitude| reached by the reference point, the step points and the vertices
+    /// during the leg (latitudes are `u + const` with `u` linear in t, so the extremes are
+    /// at the ends).
+    pub fn max_abs_lat(&self) -> f64 {
+        let mut m: f64 = 0.0;
+        for u in [self.start.lat, self.end.lat] {
+            m = m.max(u.abs());
+            for k in 0..4 {
+                let (a, ab) = self.lat_offsets(k);
+                m = m.max((u + a).abs()).max((u + ab).abs());
+            }
+        }
+        m
+    }
+
+    /// Paper B eqs 27–30 differentiated: an upper bound on the Mercator speed (radians/h)
+    /// of every vertex during the leg. With `u = φ_c(t)`, `u' = s cos θ / R`:
+    /// `x_c' = s sin θ sec u / R`; vertex `y_k = ψ(u + a + b)`, `y_k' = sec(u+a+b) u'`;
+    /// `x_k = x_c + (d1 sin ψ1/R) M(u, a) + (d2 sin ψ2/R) M(u+a, b)` with
+    /// `|∂M/∂u| ≤ sec Φ tan Φ` (M is the mean of sec, its derivative the mean of sec·tan).
+    pub fn merc_speed_bound(&self) -> f64 {
+        let phi = self.max_abs_lat();
+        let (sec, tan) = (1.0 / phi.cos(), phi.tan());
+        let s = self.speed_kn / EARTH_RADIUS_NM;
+        let (st, ct) = (self.bearing.sin().abs(), self.bearing.cos().abs());
+        let steps = (self.dims.front.max(self.dims.back) + self.dims.side) / EARTH_RADIUS_NM;
+        let vx = s * (st * sec + ct * steps * sec * tan);
+        let vy = s * ct * sec;
+        vx.hypot(vy) * BOUND_SAFETY
+    }
+
+    /// Paper B eqs 27–28 differentiated: the reference point's Mercator velocity is
+    /// `sec φ_c(t) · e` with the constant `e = (s/R)(sin θ, cos θ)`. Returns `e` and the
+    /// range `[sec_min, sec_max]` of `sec φ_c` over the leg (φ_c is linear in t).
+    pub fn reference_velocity_envelope(&self) -> (Merc, f64, f64) {
+        let s = self.speed_kn / EARTH_RADIUS_NM;
+        let e = [s * self.bearing.sin(), s * self.bearing.cos()];
+        let (a, b) = (self.start.lat, self.end.lat);
+        let sec_hi = 1.0 / a.abs().max(b.abs()).cos() * BOUND_SAFETY;
+        let sec_lo = if a.signum() != b.signum() {
+            1.0
+        } else {
+            1.0 / a.abs().min(b.abs()).cos() / BOUND_SAFETY
+        };
+        (e, sec_lo, sec_hi)
+    }
+
+    /// Paper B eqs 29–30 differentiated: a bound on `|v_k(t) − v_c(t)|`, the speed of any
+    /// vertex relative to the reference point. From [`Leg::merc_speed_bound`]'s terms:
+    /// the x part is `u' Σ (d_m sin ψ_m / R) ∂M/∂u` and the y part `u'(sec(u+δ) − sec u)`,
+    /// each at most `|u'| sec Φ tan Φ · (Σ d_m)/R`.
+    pub fn deformation_speed_bound(&self) -> f64 {
+        let phi = self.max_abs_lat();
+        let steps = (self.dims.front.max(self.dims.back) + self.dims.side) / EARTH_RADIUS_NM;
+        let du = self.speed_kn / EARTH_RADIUS_NM * self.bearing.cos().abs();
+        2.0 * du * steps * phi.tan() / phi.cos() * BOUND_SAFETY
+    }
+
+    /// Paper B eq 7 made conservative: for each vertex (ring order) a box
+    /// `[xmin, xmax] × [ymin, ymax]` containing its Mercator offset from the reference
+    /// point over the whole leg. Paper defect: eq 7's hull of the rectangles at `t0` and
+    /// `tf` assumes linear vertex motion; here the offsets change with `sec φ`. Each offset
+    /// term is `h·M(u + e, h)`, monotone in `u` on either side of `u = −e − h/2`, so its
+    /// range over `[u0, u1]` is reached at the ends or at that point (interval sums).
+    pub fn offset_boxes(&self) -> [[f64; 4]; 4] {
+        let (u0, u1) = if self.start.lat <= self.end.lat {
+            (self.start.lat, self.end.lat)
+        } else {
+            (self.end.lat, self.start.lat)
+        };
+        let (e0, e1) = (self.offset_terms(u0), self.offset_terms(u1));
+        let mut out = [[0.0; 4]; 4];
+        for (k, o) in out.iter_mut().enumerate() {
+            let [a, b, s1, s2] = self.step_consts[k];
+            // range of term `j` = c·M(u + e, h) over [u0, u1]: the ends, and the
+            // critical point u = −e − h/2 when inside
+            let range = |j: usize, c: f64, e: f64, h: f64| -> (f64, f64) {
+                let (mut lo, mut hi) = (e0[k][j].min(e1[k][j]), e0[k][j].max(e1[k][j]));
+                let crit = -e - 0.5 * h;
+                if crit > u0 && crit < u1 {
+                    let v = c * mean_sec(crit + e, h);
+                    lo = lo.min(v);
+                    hi = hi.max(v);
+                }
+                (lo, hi)
+            };
+            let (x1l, x1h) = range(0, s1, 0.0, a);
+            let (x2l, x2h) = range(1, s2, a, b);
+            let (yl, yh) = range(2, a + b, 0.0, a + b);
+            let pad = |lo: f64, hi: f64| {
+                let m = (hi - lo).abs().max(hi.abs().max(lo.abs())) * (BOUND_SAFETY - 1.0);
+                (lo - m, hi + m)
+            };
+            let (xl, xh) = pad(x1l + x2l, x1h + x2h);
+            let (yl, yh) = pad(yl, yh);
+            *o = [xl, xh, yl, yh];
+        }
+        out
+    }
+
+    /// Paper B eqs 29–30: the three terms of each vertex's Mercator offset from a reference
+    /// point at latitude `u`: `[s1·M(u, a), s2·M(u+a, b), ψ(u+a+b) − ψ(u)]` (as
+    /// [`Leg::merc_vertices_at`] evaluates them).
+    fn offset_terms(&self, u: f64) -> [[f64; 3]; 4] {
+        let psi_u = mercator_y(u);
+        let mean = |lat: f64, psi_lat: f64, h: f64, psi_end: f64| {
+            let dphi = (lat + h) - lat;
+            if dphi.abs() >= FAST_MEAN_SEC_MIN_H {
+                (psi_end - psi_lat) / dphi
+            } else {
+                mean_sec(lat, h)
+            }
+        };
+        let (af, ab) = (self.step_consts[0][0], self.step_consts[2][0]);
+        let (psi_f, psi_b) = (mercator_y(u + af), mercator_y(u + ab));
+        let front = mean(u, psi_u, af, psi_f);
+        let back = mean(u, psi_u, ab, psi_b);
+        let mut out = [[0.0; 3]; 4];
+        for (k, o) in out.iter_mut().enumerate() {
+            let [a, b, s1, s2] = self.step_consts[k];
+            let (m1, psi_mid) = if k < 2 { (front, psi_f) } else { (back, psi_b) };
+            let mid = u + a;
+            let y = mercator_y(mid + b);
+            *o = [s1 * m1, s2 * mean(mid, psi_mid, b, y), y - psi_u];
+        }
+        out
+    }
+
+    /// Paper B Algorithm 4 with its defects fixed: the time at which the reference point is
+    /// at fraction `rho` of the leg's Mercator segment. The printed algorithm drops `R`
+    /// and `t0` (`t = d/s`); here `t = t0 + sign(ρ) · R·d/s` (`d` in radians of arc), so
+    /// fractions before the start give times before `t0`.
+    pub fn track_time(&self, rho: f64) -> f64 {
+        let [c0, c1] = self.merc;
+        let q = [c0[0] + rho * (c1[0] - c0[0]), c0[1] + rho * (c1[1] - c0[1])];
+        let qs = inverse_mercator(q);
+        let d = rhumb_distance(self.start, qs);
+        self.t0 + rho.signum() * d / self.speed_kn
+    }
+}
+
+/// Paper B Section III ("piece-wise straight line segments") and Section V: a track of
+/// several waypoints split into legs, each a straight Mercator segment, back to back in
+/// time from `t0`. Zero-length legs (repeated waypoints) are skipped.
+pub fn track_legs(waypoints: &[LonLat], speed_kn: f64, t0: f64, dims: RectDims) -> Vec<Leg> {
+    let mut legs = Vec::with_capacity(waypoints.len().saturating_sub(1));
+    let mut t = t0;
+    for w in waypoints.windows(2) {
+        if w[0] == w[1] {
+            continue;
+        }
+        let leg = Leg::new(w[0], w[1], speed_kn, t, dims);
+        t = leg.t1;
+        legs.push(leg);
+    }
+    legs
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn mercator_round_trip() {
+        for d in [-84.0f64, -30.0, 0.0, 1e-9, 29.0, 60.0, 84.9] {
+            let lat = d.to_radians();
+            let back = mercator_lat(mercator_y(lat));
+            assert!((back - lat).abs() <= 4.0 * f64::EPSILON * lat.abs().max(1e-300));
+        }
+    }
+
+    #[test]
+    fn delta_psi_agrees_with_difference() {
+        for (a, b) in [(0.1, 0.3), (0.5, 0.5000001), (-0.2, 0.25), (1.0, 1.05)] {
+            // the plain difference carries the absolute rounding error of ψ itself
+            let direct = mercator_y(b) - mercator_y(a);
+            let scale = mercator_y(a).abs().max(mercator_y(b).abs()).max(1.0);
+            assert!((delta_psi(a, b) - direct).abs() <= 8.0 * f64::EPSILON * scale);
+        }
+    }
+
+    #[test]
+    fn east_west_destination_uses_the_limit() {
+        let p = LonLat::from_degrees(39.0, 30.0);
+        let q = rhumb_destination(p, FRAC_PI_2, 60.0);
+        // 60 nm along a parallel at 30°: Δλ = 60 / (R cos 30°)
+        let want = 60.0 / (EARTH_RADIUS_NM * 30f64.to_radians().cos());
+        assert!((q.lon - p.lon - want).abs() < 1e-15);
+        assert!((q.lat - p.lat).abs() < 1e-15);
+    }
+
+    #[test]
+    fn rhumb_inverse_inverts_destination() {
+        let p = LonLat::from_degrees(-30.0, 10.0);
+        for b in [0.3f64, 1.2, 2.0, -2.5, FRAC_PI_2, -FRAC_PI_2] {
+            let q = rhumb_destination(p, b, 75.0);
+            let (d, th) = rhumb_inverse(p, q);
+            assert!((d - 75.0).abs() < 1e-9, "{d}");
+            assert!((th - b).abs() < 1e-9, "{th} {b}");
+        }
+    }
+
+    #[test]
+    fn table2_ring_is_convex_and_ccw_free_of_bowtie() {
+        let leg = Leg::new(
+            LonLat::from_degrees(39.0, 29.0),
+            LonLat::from_degrees(41.0, 31.0),
+            15.0,
+            0.0,
+            RectDims {
+                front: 10.0,
+                back: 10.0,
+                side: 10.0,
+            },
+        );
+        let v = leg.merc_vertices_at(1.0);
+        let mut signs = [0.0; 4];
+        for i in 0..4 {
+            let (a, b, c) = (v[i], v[(i + 1) % 4], v[(i + 2) % 4]);
+            signs[i] = (b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0]);
+        }
+        assert!(signs.iter().all(|s| *s > 0.0) || signs.iter().all(|s| *s < 0.0));
+    }
+
+    #[test]
+    fn fast_vertices_match_reference() {
+        let dims = RectDims {
+            front: 20.0,
+            back: 12.0,
+            side: 30.0,
+        };
+        let north = Leg::new(
+            LonLat::from_degrees(-40.0, 2.0),
+            LonLat::from_degrees(-39.0, 28.0),
+            15.0,
+            0.0,
+            dims,
+        );
+        let east = Leg::new(
+            LonLat::from_degrees(39.0, 30.0),
+            LonLat::from_degrees(41.0, 30.0),
+            15.0,
+            0.0,
+            dims,
+        );
+        let due_north = Leg::new(
+            LonLat::from_degrees(39.0, 30.0),
+            LonLat::from_degrees(39.0, 31.0),
+            15.0,
+            0.0,
+            dims,
+        );
+        for leg in [north, east, due_north] {
+            fast_vertices_case(&leg);
+        }
+    }
+
+    fn fast_vertices_case(leg: &Leg) {
+        for i in 0..=10 {
+            let t = leg.t1 * i as f64 / 10.0;
+            let a = leg.merc_vertices_at(t);
+            let b = leg.vertices_at(t).map(mercator);
+            for k in 0..4 {
+                // FAST_MEAN_SEC_MIN_H's bound (1e-14 rad) plus a few roundings
+                assert!((a[k][0] - b[k][0]).abs() < 4e-14 && (a[k][1] - b[k][1]).abs() < 4e-14);
+            }
+        }
+    }
+
+    #[test]
+    fn speed_bound_holds_on_samples() {
+        let leg = Leg::new(
+            LonLat::from_degrees(-40.0, 2.0),
+            LonLat::from_degrees(-39.0, 28.0),
+            15.0,
+            0.0,
+            RectDims {
+                front: 20.0,
+                back: 20.0,
+                side: 20.0,
+            },
+        );
+        let v = leg.merc_speed_bound();
+        let n = 200;
+        let h = (leg.t1 - leg.t0) / n as f64;
+        for i in 0..n {
+            let a = leg.merc_vertices_at(leg.t0 + i as f64 * h);
+            let b = leg.merc_vertices_at(leg.t0 + (i + 1) as f64 * h);
+            for k in 0..4 {
+                let d = (b[k][0] - a[k][0]).hypot(b[k][1] - a[k][1]);
+                assert!(d <= v * h, "vertex {k} moved {d} > {}", v * h);
+            }
+        }
+    }
+
+    #[test]
+    fn offset_boxes_contain_sampled_offsets() {
+        let leg = Leg::new(
+            LonLat::from_degrees(-40.0, -1.0),
+            LonLat::from_degrees(-39.0, 1.5),
+            15.0,
+            0.0,
+            RectDims {
+                front: 20.0,
+                back: 15.0,
+                side: 30.0,
+            },
+        );
+        let boxes = leg.offset_boxes();
+        for i in 0..=100 {
+            let t = leg.t0 + (leg.t1 - leg.t0) * i as f64 / 100.0;
+            let c = leg.reference_merc_at(t);
+            for (k, v) in leg.merc_vertices_at(t).iter().enumerate() {
+                let (dx, dy) = (v[0] - c[0], v[1] - c[1]);
+                let b = boxes[k];
+                let slack = 1e-15;
+                assert!(dx >= b[0] - slack && dx <= b[1] + slack, "x {k} {dx} {b:?}");
+                assert!(dy >= b[2] - slack && dy <= b[3] + slack, "y {k} {dy} {b:?}");
+            }
+        }
+    }
+}

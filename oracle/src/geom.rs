@@ -10,25 +10,9 @@ use std::cmp::Ordering;
 /// A rational point.
 pub type P = [BigRational; 2];
 
-/// The exact value of a finite f64 (`None` for NaN/∞).
-pub fn q(x: f64) -> Option<BigRational> {
-    BigRational::from_float(x)
-}
-
-/// A rational rounded to f64 (for reporting and comparisons with tolerance).
-pub fn to_f64(x: &BigRational) -> f64 {
-    num_traits::ToPrimitive::to_f64(x).unwrap_or(f64::NAN)
-}
-
-/// The exact point of an f64 pair.
-pub fn point(p: [f64; 2]) -> Option<P> {
-    Some([q(p[0])?, q(p[1])?])
-}
-
-/// Exact points of an f64 ring (`None` if any coordinate is not finite).
-pub fn points(ring: &[[f64; 2]]) -> Option<Vec<P>> {
-    ring.iter().map(|&p| point(p)).collect()
-}
+// Conversions between the engine's binary floats and rationals live in convert.rs,
+// the oracle's one module that touches floats (re-exported here under their old names).
+pub use crate::convert::{exact_point as point, exact_points as points, q, to_float as to_f64};
 
 /// Paper B eq 9: twice the signed area of `abc`.
 pub fn orient(a: &P, b: &P, c: &P) -> BigRational {
@@ -240,29 +224,37 @@ pub fn linear_window(
 mod tests {
     use super::*;
 
-    fn sq(x0: f64, y0: f64, s: f64) -> Vec<P> {
-        points(&[[x0, y0], [x0 + s, y0], [x0 + s, y0 + s], [x0, y0 + s]]).unwrap()
+    /// The square [x0, x0 + s] × [y0, y0 + s], exactly.
+    fn sq(x0: (i64, i64), y0: (i64, i64), s: i64) -> Vec<P> {
+        let r = |(n, d): (i64, i64)| BigRational::new(n.into(), d.into());
+        let (x, y, s) = (r(x0), r(y0), BigRational::from_integer(s.into()));
+        vec![
+            [x.clone(), y.clone()],
+            [&x + &s, y.clone()],
+            [&x + &s, &y + &s],
+            [x, y + s],
+        ]
     }
 
     #[test]
     fn clip_area_exact() {
-        let c = clip_convex(&sq(0.0, 0.0, 2.0), &sq(1.0, 1.0, 2.0));
+        let c = clip_convex(&sq((0, 1), (0, 1), 2), &sq((1, 1), (1, 1), 2));
         assert_eq!(signed_area(&c), q(1.0).unwrap());
     }
 
     #[test]
     fn touching_squares_meet() {
-        assert!(rings_intersect(&sq(0.0, 0.0, 1.0), &sq(1.0, 0.0, 1.0)));
-        assert!(!rings_intersect(&sq(0.0, 0.0, 1.0), &sq(1.5, 0.0, 1.0)));
+        assert!(rings_intersect(&sq((0, 1), (0, 1), 1), &sq((1, 1), (0, 1), 1)));
+        assert!(!rings_intersect(&sq((0, 1), (0, 1), 1), &sq((3, 2), (0, 1), 1)));
     }
 
     #[test]
     fn linear_window_of_sliding_squares() {
         // a moves right at 1/h from x = -3, b fixed at [0, 1]²: meet for t in [2, 4]
         let w = linear_window(
-            &sq(-3.0, 0.0, 1.0),
+            &sq((-3, 1), (0, 1), 1),
             &point([1.0, 0.0]).unwrap(),
-            &sq(0.0, 0.0, 1.0),
+            &sq((0, 1), (0, 1), 1),
             &point([0.0, 0.0]).unwrap(),
             &q(0.0).unwrap(),
             &q(0.0).unwrap(),

@@ -244,8 +244,14 @@ mod tests {
 
     #[test]
     fn touching_squares_meet() {
-        assert!(rings_intersect(&sq((0, 1), (0, 1), 1), &sq((1, 1), (0, 1), 1)));
-        assert!(!rings_intersect(&sq((0, 1), (0, 1), 1), &sq((3, 2), (0, 1), 1)));
+        assert!(rings_intersect(
+            &sq((0, 1), (0, 1), 1),
+            &sq((1, 1), (0, 1), 1)
+        ));
+        assert!(!rings_intersect(
+            &sq((0, 1), (0, 1), 1),
+            &sq((3, 2), (0, 1), 1)
+        ));
     }
 
     #[test]

@@ -94,52 +94,33 @@ pub fn num_cross<P: VertexSeq + ?Sized>(p: &P, s: Vect2) -> usize {
 /// P*_BUFF, and the ray from s crosses P*_BUFF an even number of times.
 ///
 /// One pass does steps 2–4: an edge of P*_BUFF whose two ends were not perturbed is the
-/// same edge of P, so its near_edge test is not repeated.
+/// same edge of P, so its near_edge test is not repeated. Each edge reads and perturbs its
+/// two ends afresh; near_edge's own bounding-box filter rejects far edges cheaply.
+///
+/// No bounding-box pass over all vertices runs first. It used to, and at opt-level 3
+/// (thin LTO, one codegen unit) LLVM 22 (rustc 1.95 and 1.97-nightly) vectorised its
+/// min/max loop and then reloaded vertex 0, kept in a vector register across that loop,
+/// from a 64-bit spill slot: its y came back as 0. The last edge then ended at (x₀, 0),
+/// which turned points outside into "not definitely outside" (far false alarms) and, in
+/// fuzzing builds, points inside into misses (tests/regressions/*.jsonl hold both). The
+/// plain per-edge loop below keeps no vector value alive across a vectorised loop.
 #[inline]
 pub fn definitely_outside<P: VertexSeq + ?Sized>(p: &P, s: Vect2, buff: f64) -> bool {
     let n = p.count();
-    if n == 0 {
-        return true;
-    }
-    // Filter: s farther than BUFF outside P's bounding box. Then s is farther than BUFF
-    // from every edge of P; no vertex is perturbed except, when s is below the box, ones
-    // whose y stays above s_y + BUFF, so P*_BUFF's edges are far too; and the upward ray
-    // misses the box or crosses the whole closed curve, an even number of times.
-    let first = p.vertex(0);
-    let (mut lo, mut hi) = (first, first);
-    for i in 1..n {
-        let q = p.vertex(i);
-        lo = Vect2::new(lo.x.min(q.x), lo.y.min(q.y));
-        hi = Vect2::new(hi.x.max(q.x), hi.y.max(q.y));
-    }
-    let twice = 2.0 * buff;
-    if pr::ranges_apart(lo.x, hi.x, s.x, s.x, twice)
-        || pr::ranges_apart(lo.y, hi.y, s.y, s.y, twice)
-    {
-        return true;
-    }
     let mut crossings = 0usize;
-    let first_star = perturb(first, s, buff);
-    let mut a = first;
-    let mut a_star = first_star;
     for i in 0..n {
-        let (b, b_star) = if i + 1 == n {
-            (first, first_star)
-        } else {
-            let b = p.vertex(i + 1);
-            (b, perturb(b, s, buff))
-        };
+        let a = p.vertex(i);
+        let b = p.vertex(p.next(i));
         if near_edge(a, b, s, buff) {
             return false;
         }
+        let (a_star, b_star) = (perturb(a, s, buff), perturb(b, s, buff));
         if (a_star != a || b_star != b) && near_edge(a_star, b_star, s, buff) {
             return false;
         }
         if edge_crosses_ray(a_star, b_star, s) {
             crossings += 1;
         }
-        a = b;
-        a_star = b_star;
     }
     crossings % 2 == 0
 }
@@ -206,6 +187,29 @@ mod tests {
         assert!(!definitely_outside(&tri[..], s, 0.1)); // inside: odd count
                                                         // A point above the apex: zero crossings, outside.
         assert!(definitely_outside(&tri[..], v(2.0, 5.0), 0.1));
+    }
+
+    #[test]
+    fn outside_pentagon_whose_vertex_0_is_on_the_ray() {
+        // tests/regressions/assure-seed7.jsonl, false_alarm_far-2861536: s = (0.73, 0.005)
+        // is 0.17 below-left of the edge (0.5,−0.3)→(0.73,0.2) and far from every other
+        // edge; vertex 0 = (0.73, 0.2) is straight above s, within BUFF of the ray, so it
+        // moves to (0.71, 0.2) and no edge of P*_BUFF crosses the ray: outside. An
+        // optimised build that read vertex 0 as (0.73, 0) on the last edge (the LLVM 22
+        // miscompile described above) put s within BUFF of that edge and answered false.
+        let p = [
+            v(0.73, 0.2),
+            v(-0.3, -0.5),
+            v(0.04, -0.7),
+            v(0.3, -0.5),
+            v(0.5, -0.3),
+        ];
+        let s = v(0.73, 0.005);
+        assert!(definitely_outside(&p[..], s, 0.01));
+        assert!(!near_edge(p[4], p[0], s, 0.01));
+        assert!(near_edge(p[4], v(0.73, 0.0), s, 0.01));
+        // Slid up into the pentagon (below the apex, left of the edge 4→0): inside.
+        assert!(!definitely_outside(&p[..], v(0.6, 0.05), 0.01));
     }
 
     #[test]

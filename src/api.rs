@@ -273,6 +273,10 @@ pub struct Case {
     point: MovingPoint,
     polygon: MovingPolygon,
     params: Params,
+    /// The polygon's vertices and the point's position moved so that the point starts at
+    /// the origin: what [`detected`] hands to the paper's functions (see [`Case::new`]).
+    local_vertices: Vec<Vect2>,
+    local_pos: Vect2,
 }
 
 impl Case {
@@ -299,11 +303,29 @@ impl Case {
             }
             _ => {}
         }
+        // The paper's functions are translation invariant, but their rounding is not:
+        // detect_3D re-bases the case at the slab window's start (s + a·v, P + a·V) and
+        // detect_same_2D moves it to T, both in absolute coordinates, so at an offset of
+        // 10⁷ a rounding (an ulp of 10⁷ is 1.9e-9) can exceed a small BUFF and lose a true
+        // contact (tests/regressions/assure-seed7.jsonl). With the point's position as the
+        // origin those sums are formed at the scale of the encounter. p − s is what every
+        // proximity test computes anyway: exact when p is within a factor 2 of s
+        // (Sterbenz), otherwise off by at most half an ulp of the original magnitude.
+        // An overflowing difference keeps the absolute coordinates.
+        let origin = point.pos;
+        let local: Vec<Vect2> = polygon.vertices.iter().map(|&p| p - origin).collect();
+        let (local_vertices, local_pos) = if local.iter().all(|p| p.is_finite()) {
+            (local, Vect2::new(0.0, 0.0))
+        } else {
+            (polygon.vertices.clone(), point.pos)
+        };
         Ok(Case {
             lookahead,
             point,
             polygon,
             params,
+            local_vertices,
+            local_pos,
         })
     }
 
@@ -369,11 +391,12 @@ pub struct Detection {
     pub well_formed: bool,
 }
 
-/// The decision alone (no well_formed check): the engine's hot path.
+/// The decision alone (no well_formed check): the engine's hot path. The paper's functions
+/// see the case translated so that the point starts at the origin (see [`Case::new`]).
 pub fn detected(case: &Case) -> bool {
-    let p = &case.polygon.vertices[..];
+    let p = &case.local_vertices[..];
     let vels = &case.polygon.velocities[..];
-    let (s, v, t) = (case.point.pos, case.point.vel, case.lookahead);
+    let (s, v, t) = (case.local_pos, case.point.vel, case.lookahead);
     let (buff, fac) = (case.params.buff, case.params.fac);
     match (case.point.z, case.polygon.slab) {
         (Some((sz, vz)), Some(slab)) => detect_3d(

@@ -140,6 +140,28 @@ pub fn parse_rational<F: ExactField>(s: &str) -> Option<F> {
     F::from_int_strs(&num, &den)
 }
 
+/// The exact value of a finite f64 as a BigRational (`None` for NaN/∞): paper B's exact
+/// geometry (geom.rs) reads the engine's coordinates through this.
+pub fn q(x: f64) -> Option<num_rational::BigRational> {
+    num_rational::BigRational::from_float(x)
+}
+
+/// A rational rounded to the nearest f64, for reports and tolerance comparisons only
+/// (never for a decision).
+pub fn to_float(x: &num_rational::BigRational) -> f64 {
+    num_traits::ToPrimitive::to_f64(x).unwrap_or(f64::NAN)
+}
+
+/// The exact point of an f64 pair (`None` if a coordinate is not finite).
+pub fn exact_point(p: [f64; 2]) -> Option<[num_rational::BigRational; 2]> {
+    Some([q(p[0])?, q(p[1])?])
+}
+
+/// Exact points of an f64 ring (`None` if any coordinate is not finite).
+pub fn exact_points(ring: &[[f64; 2]]) -> Option<Vec<[num_rational::BigRational; 2]>> {
+    ring.iter().map(|&p| exact_point(p)).collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -175,26 +197,4 @@ mod tests {
             assert_eq!(h(bad), None, "{bad}");
         }
     }
-}
-
-/// The exact value of a finite f64 as a BigRational (`None` for NaN/∞): paper B's exact
-/// geometry (geom.rs) reads the engine's coordinates through this.
-pub fn q(x: f64) -> Option<num_rational::BigRational> {
-    num_rational::BigRational::from_float(x)
-}
-
-/// A rational rounded to the nearest f64, for reports and tolerance comparisons only
-/// (never for a decision).
-pub fn to_float(x: &num_rational::BigRational) -> f64 {
-    num_traits::ToPrimitive::to_f64(x).unwrap_or(f64::NAN)
-}
-
-/// The exact point of an f64 pair (`None` if a coordinate is not finite).
-pub fn exact_point(p: [f64; 2]) -> Option<[num_rational::BigRational; 2]> {
-    Some([q(p[0])?, q(p[1])?])
-}
-
-/// Exact points of an f64 ring (`None` if any coordinate is not finite).
-pub fn exact_points(ring: &[[f64; 2]]) -> Option<Vec<[num_rational::BigRational; 2]>> {
-    ring.iter().map(|&p| exact_point(p)).collect()
 }

@@ -1,0 +1,10 @@
+//! Engine vs exact oracle on boundary-biased 3D cases decoded from the input;
+//! aborts on missed_detection and false_alarm_far (see fuzz/README.md).
+#![no_main]
+
+use libfuzzer_sys::fuzz_target;
+use polyguard::harness::gen::Shape;
+
+fuzz_target!(|data: &[u8]| {
+    polyguard_fuzz::differential(data, Shape::ThreeD);
+});

@@ -1,0 +1,128 @@
+//! Shared code of polyguard's fuzz targets (see README.md).
+//!
+//! - [`differential`]: decode the fuzzer's bytes into a boundary-biased case through the
+//!   harness's generators (the same ones `polyguard assure` and the proptest suites use),
+//!   compare the f64 engine with paper A in exact arithmetic and the exact truth, and
+//!   abort on the two failures (`missed_detection`, `false_alarm_far`) with the case as a
+//!   line of the case format, ready for `tests/regressions/`.
+//! - [`Num`]: an `arbitrary` f64 that favours the values that break float code (NaN, ±∞,
+//!   ±0, subnormals, the overflow and underflow thresholds of a square).
+
+use arbitrary::{Arbitrary, Unstructured};
+use polyguard::harness::classify::{self, Class};
+use polyguard::harness::gen::{self, Bytes, Mode, Shape, Source};
+
+/// The snake_case name of a shape, as the target names use it.
+pub fn shape_name(shape: Shape) -> &'static str {
+    match shape {
+        Shape::Static => "same_2d",
+        Shape::Warping => "diff_2d",
+        Shape::ThreeD => "3d",
+    }
+}
+
+/// The body of the differential targets: one case of `shape` decoded from `data`.
+///
+/// The first draw picks the generator mode, the rest steer the case (polygon, scale,
+/// offset, ε, trajectory). Cases the engine or the oracle reject, and cases whose truth
+/// is undefined, are skipped. Panics (which libFuzzer reports as a crash and saves the
+/// input for) on [`Class::MissedDetection`] and [`Class::FalseAlarmFar`].
+pub fn differential(data: &[u8], shape: Shape) {
+    let mut src = Bytes::new(data);
+    let mode = src.pick(&Mode::ALL);
+    let (raw, eps) = gen::case(&mut src, shape, mode);
+    let Ok(verdict) = classify::compare(&raw) else {
+        return;
+    };
+    if !verdict.class.is_failure() {
+        return;
+    }
+    let class = verdict.class;
+    let why = format!(
+        "cargo-fuzz diff_{}, generator mode {}, eps {:e}: engine {}, paper-exact {}, truth {}{}",
+        shape_name(shape),
+        mode.name(),
+        eps,
+        verdict.engine,
+        verdict.paper,
+        match verdict.truth {
+            Some(true) => "enters",
+            Some(false) => "misses",
+            None => "undefined",
+        },
+        verdict
+            .entry_time
+            .as_deref()
+            .map(|t| format!(" at t = {t}"))
+            .unwrap_or_default(),
+    );
+    let id = format!("fuzz-{}-{}", shape_name(shape), mode.name());
+    let line = raw.to_json_line(
+        &id,
+        &[
+            ("class", class.name().into()),
+            ("why", why.into()),
+            ("method", verdict.method.name().into()),
+        ],
+    );
+    match class {
+        Class::MissedDetection => panic!("missed_detection (truth enters, engine no):\n{line}"),
+        _ => panic!("{} (engine alarm far from any band):\n{line}", class.name()),
+    }
+}
+
+/// An f64 for `arbitrary` that is often one of the values float code gets wrong.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Num(pub f64);
+
+/// The values [`Num`] picks a quarter of the time.
+pub const SPECIAL: [f64; 24] = [
+    0.0,
+    -0.0,
+    1.0,
+    -1.0,
+    0.5,
+    2.0,
+    f64::NAN,
+    f64::INFINITY,
+    f64::NEG_INFINITY,
+    f64::MIN_POSITIVE,
+    f64::MIN_POSITIVE / 2.0, // subnormal
+    -f64::MIN_POSITIVE / 4.0,
+    5e-324, // the smallest subnormal
+    f64::MAX,
+    f64::MIN,
+    f64::EPSILON,
+    1.0 + f64::EPSILON,
+    1e154, // its square is near the overflow threshold
+    1.5e154,
+    1e-162, // its square is subnormal
+    1e300,
+    -1e300,
+    1e7,
+    1e-7,
+];
+
+impl<'a> Arbitrary<'a> for Num {
+    fn arbitrary(u: &mut Unstructured<'a>) -> arbitrary::Result<Self> {
+        let tag: u8 = u.arbitrary()?;
+        let x = match tag % 4 {
+            0 => SPECIAL[usize::from(tag / 4) % SPECIAL.len()],
+            // Small dyadic numbers: exact arithmetic, many ties and zeros.
+            1 => f64::from(u.arbitrary::<i16>()?) / 8.0,
+            // Any bit pattern (NaN payloads, subnormals, huge exponents).
+            2 => f64::from_bits(u.arbitrary::<u64>()?),
+            // A moderate mantissa at any decimal scale.
+            _ => {
+                let m = f64::from(u.arbitrary::<i32>()?);
+                let k = i32::from(u.arbitrary::<i16>()? % 330);
+                m * 10f64.powi(k)
+            }
+        };
+        Ok(Num(x))
+    }
+
+    fn size_hint(_depth: usize) -> (usize, Option<usize>) {
+        (1, Some(9))
+    }
+}

@@ -21,9 +21,15 @@ if ! cargo fuzz --version >/dev/null 2>&1; then
 fi
 
 "${cargo_fuzz[@]}" build
-# parse_jsonl starts from every case file the project has.
+# Seeds: parse_jsonl starts from every case file the project has; the differential
+# targets from each regression case, one line a file (an input starting with '{' is read
+# as a case line).
 mkdir -p corpus/parse_jsonl
 cp ../examples/*.jsonl ../tests/regressions/*.jsonl corpus/parse_jsonl/ 2>/dev/null || true
+for t in diff_same_2d diff_diff_2d diff_3d; do
+  mkdir -p "corpus/$t"
+  cat ../tests/regressions/*.jsonl | awk -v dir="corpus/$t" 'NF { print > (dir "/regression-" NR ".json") }'
+done
 for t in "${targets[@]}"; do
   echo "=== fuzz $t (${secs}s)"
   "${cargo_fuzz[@]}" run "$t" -- -max_total_time="$secs" -print_final_stats=1 2>&1 |

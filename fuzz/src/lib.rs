@@ -9,8 +9,10 @@
 //!   ±0, subnormals, the overflow and underflow thresholds of a square).
 
 use arbitrary::{Arbitrary, Unstructured};
+use polyguard::case::parse_line;
 use polyguard::harness::classify::{self, Class};
 use polyguard::harness::gen::{self, Bytes, Mode, Shape, Source};
+use polyguard::harness::spec::RawCase;
 
 /// The snake_case name of a shape, as the target names use it.
 pub fn shape_name(shape: Shape) -> &'static str {
@@ -28,9 +30,22 @@ pub fn shape_name(shape: Shape) -> &'static str {
 /// is undefined, are skipped. Panics (which libFuzzer reports as a crash and saves the
 /// input for) on [`Class::MissedDetection`] and [`Class::FalseAlarmFar`].
 pub fn differential(data: &[u8], shape: Shape) {
-    let mut src = Bytes::new(data);
-    let mode = src.pick(&Mode::ALL);
-    let (raw, eps) = gen::case(&mut src, shape, mode);
+    // An input that starts with '{' is one case line of the case format: the seed corpus
+    // is tests/regressions/*.jsonl, one line a file (see ci.sh), and libFuzzer mutates it.
+    let (raw, origin) = if data.first() == Some(&b'{') {
+        let Ok(text) = std::str::from_utf8(data) else {
+            return;
+        };
+        let Ok(case) = parse_line(text.lines().next().unwrap_or(""), 1).case else {
+            return;
+        };
+        (RawCase::from_api(&case), "a case line".to_string())
+    } else {
+        let mut src = Bytes::new(data);
+        let mode = src.pick(&Mode::ALL);
+        let (raw, eps) = gen::case(&mut src, shape, mode);
+        (raw, format!("generator mode {}, eps {eps:e}", mode.name()))
+    };
     let Ok(verdict) = classify::compare(&raw) else {
         return;
     };
@@ -39,10 +54,9 @@ pub fn differential(data: &[u8], shape: Shape) {
     }
     let class = verdict.class;
     let why = format!(
-        "cargo-fuzz diff_{}, generator mode {}, eps {:e}: engine {}, paper-exact {}, truth {}{}",
+        "cargo-fuzz diff_{}, {}: engine {}, paper-exact {}, truth {}{}",
         shape_name(shape),
-        mode.name(),
-        eps,
+        origin,
         verdict.engine,
         verdict.paper,
         match verdict.truth {
@@ -56,7 +70,7 @@ pub fn differential(data: &[u8], shape: Shape) {
             .map(|t| format!(" at t = {t}"))
             .unwrap_or_default(),
     );
-    let id = format!("fuzz-{}-{}", shape_name(shape), mode.name());
+    let id = format!("fuzz-{}", shape_name(shape));
     let line = raw.to_json_line(
         &id,
         &[

@@ -95,17 +95,12 @@ pub fn num_cross<P: VertexSeq + ?Sized>(p: &P, s: Vect2) -> usize {
 ///
 /// One pass does steps 2–4: an edge of P*_BUFF whose two ends were not perturbed is the
 /// same edge of P, so its near_edge test is not repeated. Each edge reads and perturbs its
-/// two ends afresh; near_edge's own bounding-box filter rejects far edges cheaply.
-///
-/// No bounding-box pass over all vertices runs first. It used to, and at opt-level 3
-/// (thin LTO, one codegen unit) LLVM 22 (rustc 1.95 and 1.97-nightly) vectorised its
-/// min/max loop and then reloaded vertex 0, kept in a vector register across that loop,
-/// from a 64-bit spill slot: its y came back as 0. The last edge then ended at (x₀, 0),
-/// which turned points outside into "not definitely outside" (far false alarms) and, in
-/// fuzzing builds, points inside into misses (tests/regressions/*.jsonl hold both). The
-/// plain per-edge loop below keeps no vector value alive across a vectorised loop.
+/// two ends afresh.
 #[inline]
 pub fn definitely_outside<P: VertexSeq + ?Sized>(p: &P, s: Vect2, buff: f64) -> bool {
+    if beyond_bounding_box(p, s, buff) {
+        return true;
+    }
     let n = p.count();
     let mut crossings = 0usize;
     for i in 0..n {
@@ -123,6 +118,38 @@ pub fn definitely_outside<P: VertexSeq + ?Sized>(p: &P, s: Vect2, buff: f64) -> 
         }
     }
     crossings % 2 == 0
+}
+
+/// Filter in front of definitely_outside: every vertex is more than 2·BUFF beyond s on
+/// one side, in x or in y (the exact answer is then "outside").
+///
+/// Then s is farther than BUFF from every edge of P; no vertex is perturbed except, when
+/// s is below P, ones whose y stays above s_y + BUFF, so P*_BUFF's edges are far too; and
+/// the upward ray misses P or crosses the whole closed curve, an even number of times.
+/// fl(s_x − q_x) is monotone in q_x, so the test per vertex equals the bounding-box test.
+///
+/// Written as a loop that leaves as soon as no side is left, not as a min/max reduction
+/// over the vertices followed by the edge loop: at opt-level 3 LLVM 22 (rustc 1.95,
+/// 1.97-nightly) vectorised that reduction and reloaded vertex 0, kept in a vector
+/// register across it, from a 64-bit spill slot, so its y read as 0 on the last edge:
+/// far false alarms in release builds and missed detections in fuzzing builds
+/// (tests/regressions/*.jsonl). Nothing here stays alive across the loop but s and BUFF.
+#[inline]
+fn beyond_bounding_box<P: VertexSeq + ?Sized>(p: &P, s: Vect2, buff: f64) -> bool {
+    let twice = 2.0 * buff;
+    // Bits: all left, all right, all below, all above (by more than 2·BUFF).
+    let mut sides = 0b1111u8;
+    for i in 0..p.count() {
+        let q = p.vertex(i);
+        sides &= u8::from(pr::gap_exceeds(q.x, s.x, twice))
+            | u8::from(pr::gap_exceeds(s.x, q.x, twice)) << 1
+            | u8::from(pr::gap_exceeds(q.y, s.y, twice)) << 2
+            | u8::from(pr::gap_exceeds(s.y, q.y, twice)) << 3;
+        if sides == 0 {
+            return false;
+        }
+    }
+    sides != 0 && p.count() > 0
 }
 
 #[cfg(test)]

@@ -165,6 +165,13 @@ pub fn same_velocity(a: Vect2, b: Vect2) -> bool {
 
 // ---------------------------------------------------------------- filters
 
+/// §II.E filter, one vertex: hi − lo > 2·m (the same rigorous margin as
+/// [`ranges_apart`], which this is with one-point ranges). NaN → false (no filtering).
+#[inline(always)]
+pub fn gap_exceeds(lo: f64, hi: f64, twice_margin: f64) -> bool {
+    hi - lo > twice_margin
+}
+
 /// A cheap, rigorous "far apart" test: the x-ranges [a_lo, a_hi] and [b_lo, b_hi] are
 /// separated by more than `margin`, judged from one rounded subtraction each.
 ///

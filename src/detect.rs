@@ -292,6 +292,14 @@ pub fn edge_detect_simp(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2, f: f
 /// midpoint along the edge and F·‖aa‖ across it, so within 2F·‖aa(t)‖ ≤ 2F·L of the edge,
 /// with L = max(‖aa(0)‖₁, ‖aa(T)‖₁) (a norm is convex in t; ‖·‖₁ ≥ ‖·‖₂). The margin is
 /// doubled for [`pr::ranges_apart`] and widened by [`pr::SWEEP_ROUNDING`] for rounding.
+///
+/// The one exception is an edge that collapses to a point at some t ∈ [0, T] (a repeated
+/// vertex, or p_j − p_i + t·(v_j − v_i) = 0): inequalities (1) read 0 ≤ 0 there, so the
+/// paper's edge_detect_simp accepts wherever the point is, and this filter rejects when the
+/// point is far. That acceptance is a false alarm of the paper on an edge that is not an
+/// edge (such a polygon is not well formed, §II.J step 1); a point that really enters
+/// crosses a proper edge or the collapsed point, which the neighbouring edges contain.
+/// tests/functions_vs_oracle.rs checks that this is the only difference.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
 fn swept_boxes_apart(

@@ -3,6 +3,7 @@
 
 use std::collections::BTreeMap;
 use std::fs;
+use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -230,33 +231,10 @@ pub fn run(args: &AssureArgs) -> ExitCode {
     finish(&report, &args.out)
 }
 
+/// Writes `DIR/report.json`, then prints the summary. The report is written first and a
+/// closed standard output (`polyguard assure | head`) is not an error: the campaign's
+/// result must not depend on who reads the summary.
 fn finish(report: &Report, out: &Path) -> ExitCode {
-    print!("{}", report.table());
-    if report.rejected > 0 {
-        println!(
-            "{} generated cases were rejected by the engine or the oracle",
-            report.rejected
-        );
-    }
-    let mut by_mode: BTreeMap<&str, u64> = BTreeMap::new();
-    for (mode, counts) in &report.by_mode {
-        let bad: u64 = counts
-            .iter()
-            .filter(|(c, _)| c.is_failure())
-            .map(|(_, n)| n)
-            .sum();
-        by_mode.insert(mode, bad);
-    }
-    for k in &report.kept {
-        println!(
-            "kept {} ({}, {}): {} {}",
-            k.class.name(),
-            k.method,
-            k.mode,
-            k.case_file,
-            k.svg_file
-        );
-    }
     let path = out.join("report.json");
     match serde_json::to_string_pretty(report) {
         Ok(json) => {
@@ -270,8 +248,38 @@ fn finish(report: &Report, out: &Path) -> ExitCode {
             return ExitCode::from(2);
         }
     }
-    println!("report: {}", path.display());
+    let mut text = report.table();
+    if report.rejected > 0 {
+        text += &format!(
+            "{} generated cases were rejected by the engine or the oracle\n",
+            report.rejected
+        );
+    }
+    for k in &report.kept {
+        text += &format!(
+            "kept {} ({}, {}): {} {}\n",
+            k.class.name(),
+            k.method,
+            k.mode,
+            k.case_file,
+            k.svg_file
+        );
+    }
+    text += &format!("report: {}\n", path.display());
+    let mut stdout = std::io::stdout().lock();
+    let _ = stdout
+        .write_all(text.as_bytes())
+        .and_then(|()| stdout.flush());
     if report.has_failures() {
+        let mut by_mode: BTreeMap<&str, u64> = BTreeMap::new();
+        for (mode, counts) in &report.by_mode {
+            let bad: u64 = counts
+                .iter()
+                .filter(|(c, _)| c.is_failure())
+                .map(|(_, n)| n)
+                .sum();
+            by_mode.insert(mode, bad);
+        }
         let modes: Vec<String> = by_mode
             .iter()
             .filter(|(_, n)| **n > 0)

@@ -18,7 +18,8 @@
 
 use std::vec::Vec;
 
-use crate::detect::{detect_3d, detect_diff_2d, detect_same_2d, statically_shaped};
+use crate::ball::Tri;
+use crate::detect::{detect_3d_tri, detect_diff_2d_tri, detect_same_2d_tri, statically_shaped};
 use crate::error::CaseError;
 use crate::vect2::Vect2;
 use crate::well_formed::well_formed;
@@ -273,10 +274,6 @@ pub struct Case {
     point: MovingPoint,
     polygon: MovingPolygon,
     params: Params,
-    /// The polygon's vertices and the point's position moved so that the point starts at
-    /// the origin: what [`detected`] hands to the paper's functions (see [`Case::new`]).
-    local_vertices: Vec<Vect2>,
-    local_pos: Vect2,
 }
 
 impl Case {
@@ -303,29 +300,11 @@ impl Case {
             }
             _ => {}
         }
-        // The paper's functions are translation invariant, but their rounding is not:
-        // detect_3D re-bases the case at the slab window's start (s + a·v, P + a·V) and
-        // detect_same_2D moves it to T, both in absolute coordinates, so at an offset of
-        // 10⁷ a rounding (an ulp of 10⁷ is 1.9e-9) can exceed a small BUFF and lose a true
-        // contact (tests/regressions/assure-seed7.jsonl). With the point's position as the
-        // origin those sums are formed at the scale of the encounter. p − s is what every
-        // proximity test computes anyway: exact when p is within a factor 2 of s
-        // (Sterbenz), otherwise off by at most half an ulp of the original magnitude.
-        // An overflowing difference keeps the absolute coordinates.
-        let origin = point.pos;
-        let local: Vec<Vect2> = polygon.vertices.iter().map(|&p| p - origin).collect();
-        let (local_vertices, local_pos) = if local.iter().all(|p| p.is_finite()) {
-            (local, Vect2::new(0.0, 0.0))
-        } else {
-            (polygon.vertices.clone(), point.pos)
-        };
         Ok(Case {
             lookahead,
             point,
             polygon,
             params,
-            local_vertices,
-            local_pos,
         })
     }
 
@@ -379,11 +358,35 @@ impl Method {
     }
 }
 
+/// Which kind of answer a [`Detection`] is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Kind {
+    /// Every comparison behind the answer was certified: paper A computed without
+    /// rounding gives the same answer.
+    Exact,
+    /// A "yes" taken on a comparison that f64 could not decide (within rounding of one
+    /// of paper A's thresholds); paper A without rounding may answer no. Never a "no".
+    Conservative,
+}
+
+impl Kind {
+    /// "exact" or "conservative".
+    pub fn name(self) -> &'static str {
+        match self {
+            Kind::Exact => "exact",
+            Kind::Conservative => "conservative",
+        }
+    }
+}
+
 /// The answer of [`detect`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Detection {
-    /// The point comes within BUFF (or the F slack) of the polygon within [0, T].
+    /// The point comes within BUFF (or the F slack) of the polygon within [0, T], or a
+    /// comparison on the way could not be decided (then `kind` is `Conservative`).
     pub detected: bool,
+    /// Certified, or a conservative "yes".
+    pub kind: Kind,
     /// Which paper function decided.
     pub method: Method,
     /// §II.J at t = 0, for information only: a polygon that is not well formed is still
@@ -391,15 +394,16 @@ pub struct Detection {
     pub well_formed: bool,
 }
 
-/// The decision alone (no well_formed check): the engine's hot path. The paper's functions
-/// see the case translated so that the point starts at the origin (see [`Case::new`]).
-pub fn detected(case: &Case) -> bool {
-    let p = &case.local_vertices[..];
+/// The three-valued decision: `Yes`/`No` certified, `Unsure` when a comparison could
+/// not be decided. The paper's functions see the case's own coordinates: every decision
+/// is taken on differences from the point, so no rounded translation is needed.
+pub fn decide(case: &Case) -> Tri {
+    let p = &case.polygon.vertices[..];
     let vels = &case.polygon.velocities[..];
-    let (s, v, t) = (case.local_pos, case.point.vel, case.lookahead);
+    let (s, v, t) = (case.point.pos, case.point.vel, case.lookahead);
     let (buff, fac) = (case.params.buff, case.params.fac);
     match (case.point.z, case.polygon.slab) {
-        (Some((sz, vz)), Some(slab)) => detect_3d(
+        (Some((sz, vz)), Some(slab)) => detect_3d_tri(
             t,
             s,
             v,
@@ -415,25 +419,71 @@ pub fn detected(case: &Case) -> bool {
         ),
         _ => {
             if statically_shaped(vels) {
-                detect_same_2d(t, s, v, p, vels, buff)
+                detect_same_2d_tri(t, s, v, p, vels, buff)
             } else {
-                detect_diff_2d(t, s, v, p, vels, fac, buff)
+                detect_diff_2d_tri(t, s, v, p, vels, fac, buff)
             }
         }
     }
 }
 
+/// The decision alone (no well_formed check): the engine's hot path. Never `false` when
+/// paper A without rounding says yes.
+pub fn detected(case: &Case) -> bool {
+    decide(case).or_true()
+}
+
 /// Paper A end to end: detect_3D for a 3D case, else detect_same_2D when all vertex
 /// velocities are equal, else detect_diff_2D; plus well_formed (§II.J) for information.
 pub fn detect(case: &Case) -> Detection {
+    let tri = decide(case);
     Detection {
-        detected: detected(case),
+        detected: tri.or_true(),
+        kind: if tri == Tri::Unsure {
+            Kind::Conservative
+        } else {
+            Kind::Exact
+        },
         method: case.method(),
         well_formed: well_formed(
             &case.polygon.vertices[..],
             case.params.buff,
             case.params.cos_kappa,
         ),
+    }
+}
+
+/// The plain f64 transcription's answer (feature `plain`), for comparison only: it
+/// can miss true entries (see [`crate::plain`]).
+#[cfg(feature = "plain")]
+pub fn detected_plain(case: &Case) -> bool {
+    use crate::plain::detect as pd;
+    let p = &case.polygon.vertices[..];
+    let vels = &case.polygon.velocities[..];
+    let (s, v, t) = (case.point.pos, case.point.vel, case.lookahead);
+    let (buff, fac) = (case.params.buff, case.params.fac);
+    match (case.point.z, case.polygon.slab) {
+        (Some((sz, vz)), Some(slab)) => pd::detect_3d(
+            t,
+            s,
+            v,
+            sz,
+            vz,
+            p,
+            vels,
+            slab.bottom,
+            slab.top,
+            slab.vz,
+            buff,
+            fac,
+        ),
+        _ => {
+            if pd::statically_shaped(vels) {
+                pd::detect_same_2d(t, s, v, p, vels, buff)
+            } else {
+                pd::detect_diff_2d(t, s, v, p, vels, fac, buff)
+            }
+        }
     }
 }
 

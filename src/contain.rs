@@ -1,8 +1,13 @@
 //! Paper A §II.B–§II.E: is the point s definitely outside the polygon P?
+//!
+//! The certified forms work in the point's frame: [`RelPoly`] hands out each vertex
+//! minus the point as a ball (and, where it can, as exact terms), so that the same code
+//! serves P at time 0, P + T·V at the lookahead and P + a·V at a slab window's start,
+//! and every radius is on the scale of the encounter rather than of the coordinates.
 
+use crate::ball::{BallV, Tri};
 use crate::polygon::VertexSeq;
-use crate::predicates as pr;
-use crate::quad::quad_min_le_d;
+use crate::predicates::{self as pr, Terms};
 use crate::vect2::Vect2;
 
 /// Paper A §II.B: vertex i of P*_BUFF. A vertex with p_y ≥ s_y − BUFF and
@@ -10,9 +15,11 @@ use crate::vect2::Vect2;
 ///
 /// The OCR'd text lost both minus signs ("s_y BUFF", "p(i) (2BUFF, 0)"). Moving left by
 /// 2·BUFF puts the vertex at x ≤ s_x − BUFF < s_x, off the upward ray, as §II.D needs.
-#[inline(always)]
+/// The decision is exact (a sum of three floats); the moved x is rounded once.
+#[inline]
 pub fn perturb(p: Vect2, s: Vect2, buff: f64) -> Vect2 {
-    if pr::perturbs(p, s, buff) {
+    let q = BallV::diff(p, s);
+    if pr::perturbs(q, || Some(Terms::diff(p, s)), buff) == Tri::Yes {
         Vect2::new(p.x - 2.0 * buff, p.y)
     } else {
         p
@@ -38,29 +45,114 @@ impl<P: VertexSeq> VertexSeq for Perturbed<P> {
     }
 }
 
+/// A polygon seen from the moving point: vertex i minus the point, as a ball, and as
+/// exact terms when the vertex is a simple enough expression of the inputs.
+pub trait RelPoly {
+    /// Number of vertices.
+    fn count(&self) -> usize;
+    /// Vertex i relative to the point.
+    fn rel(&self, i: usize) -> BallV;
+    /// Vertex i relative to the point as exact sums of floats, if it is one.
+    fn terms(&self, i: usize) -> Option<Terms>;
+    /// The vertex after i, cyclically.
+    #[inline(always)]
+    fn next(&self, i: usize) -> usize {
+        if i + 1 == self.count() {
+            0
+        } else {
+            i + 1
+        }
+    }
+}
+
+/// P + t·V seen from s + t·v, for an exact float time t (t = 0: P seen from s).
+#[derive(Clone, Copy, Debug)]
+pub struct AtTime<'a, P: ?Sized, V: ?Sized> {
+    pub p: &'a P,
+    pub vels: &'a V,
+    pub s: Vect2,
+    pub v: Vect2,
+    /// The time, as a ball (an exact float when its radius is 0).
+    pub t: crate::ball::Ball,
+}
+
+impl<P: VertexSeq + ?Sized, V: VertexSeq + ?Sized> RelPoly for AtTime<'_, P, V> {
+    #[inline(always)]
+    fn count(&self) -> usize {
+        self.p.count()
+    }
+    /// (p_i − s) + t·(v_i − v).
+    #[inline(always)]
+    fn rel(&self, i: usize) -> BallV {
+        let d = BallV::diff(self.p.vertex(i), self.s);
+        if self.t.z == 0.0 && self.t.r == 0.0 {
+            return d;
+        }
+        let w = BallV::diff(self.vels.vertex(i), self.v);
+        d.add(w.scale(self.t))
+    }
+    #[inline(always)]
+    fn terms(&self, i: usize) -> Option<Terms> {
+        let t = Terms::diff(self.p.vertex(i), self.s);
+        if self.t.z == 0.0 && self.t.r == 0.0 {
+            return Some(t);
+        }
+        if self.t.r != 0.0 {
+            return None;
+        }
+        t.plus_scaled(self.t.z, self.vels.vertex(i))?
+            .plus_scaled(-self.t.z, self.v)
+    }
+}
+
+/// Paper A §II.C near_edge in the point's frame: is the origin closer than BUFF to the
+/// segment a b? Step 1 tests the ends, step 2 the interior minimum of the quadratic
+/// (see [`pr::interior_closer_than`] for why that is quad_min_le_D's step 2).
+///
+/// A filter goes first: the origin farther than BUFF from the segment's bounding box
+/// (enlarged by the radii) is certainly not near it.
+///
+/// `terms` gives the ends' exact terms (relative to the point) for the comparisons the
+/// balls cannot settle; it is called only then.
+#[inline]
+pub fn near_edge_rel(
+    a: BallV,
+    b: BallV,
+    buff: f64,
+    terms: impl Fn() -> Option<(Terms, Terms)>,
+) -> Tri {
+    let t = crate::ball::up(buff + a.r.max(b.r));
+    if a.v.x.min(b.v.x) > t
+        || a.v.x.max(b.v.x) < -t
+        || a.v.y.min(b.v.y) > t
+        || a.v.y.max(b.v.y) < -t
+    {
+        return Tri::No;
+    }
+    let ends =
+        pr::closer_than(a, buff, || terms().map(|t| t.0))
+            .or(pr::closer_than(b, buff, || terms().map(|t| t.1)));
+    if ends == Tri::Yes {
+        return Tri::Yes;
+    }
+    ends.or(pr::interior_closer_than(a, b, buff, terms))
+}
+
 /// Paper A §II.C near_edge: is s closer than BUFF to some point of the segment p_i p_j?
 ///
-/// ‖p_i + r(p_j − p_i) − s‖² = (p_j − p_i)²·r² + 2(p_i − s)·(p_j − p_i)·r + (p_i − s)²,
-/// a quadratic in r handed to quad_min_le_D with D = BUFF².
+/// Certified: `false` only when the exact answer is false; `true` when it is true or
+/// when a comparison could not be decided in f64 (see [`near_edge_tri`]).
 #[inline]
 pub fn near_edge(pi: Vect2, pj: Vect2, s: Vect2, buff: f64) -> bool {
-    // Filter: s farther than BUFF from the segment's bounding box in x or y (exact
-    // answer false; the paper's formulas, rounded, could only add a false alarm here).
-    let twice = 2.0 * buff;
-    if pr::ranges_apart(pi.x.min(pj.x), pi.x.max(pj.x), s.x, s.x, twice)
-        || pr::ranges_apart(pi.y.min(pj.y), pi.y.max(pj.y), s.y, s.y, twice)
-    {
-        return false;
-    }
-    if pr::within_buff(pi, s, buff) || pr::within_buff(pj, s, buff) {
-        return true;
-    }
-    if pr::distinct(pi, pj) {
-        let e = pj - pi;
-        let w = pi - s;
-        return quad_min_le_d(e.sq(), 2.0 * w.dot(e), w.sq(), buff * buff);
-    }
-    false
+    near_edge_tri(pi, pj, s, buff).or_true()
+}
+
+/// Paper A §II.C near_edge, three-valued (see [`near_edge`]).
+#[inline]
+pub fn near_edge_tri(pi: Vect2, pj: Vect2, s: Vect2, buff: f64) -> Tri {
+    near_edge_rel(BallV::diff(pi, s), BallV::diff(pj, s), buff, || {
+        Some((Terms::diff(pi, s), Terms::diff(pj, s)))
+    })
 }
 
 /// Paper A §II.D: does edge p_i→p_j cross the upward ray {(s_x, s_y + z) : z ≥ 0}?
@@ -68,12 +160,20 @@ pub fn near_edge(pi: Vect2, pj: Vect2, s: Vect2, buff: f64) -> bool {
 /// The printed rules read "p_ix ≥ s_x and p_ix ≥ s_x" (the j was lost): an edge whose
 /// ends are both at or right of s_x, or both left of it, does not cross. Otherwise the
 /// ends straddle x = s_x (so p_jx ≠ p_ix) and the crossing height z ≥ 0 is
-/// (p_jx − p_ix)·((s − p_i)·(p_j − p_i)⊥) ≥ 0.
-#[inline(always)]
+/// (p_jx − p_ix)·((s − p_i)·(p_j − p_i)⊥) ≥ 0. Decided exactly (an orientation of three
+/// float points, by expansion when the ball cannot tell); `true` also when it overflows.
+#[inline]
 pub fn edge_crosses_ray(pi: Vect2, pj: Vect2, s: Vect2) -> bool {
-    let ri = pr::at_or_right_of(pi, s);
-    let rj = pr::at_or_right_of(pj, s);
-    ri != rj && pr::ray_crosses(pi, pj, s)
+    pr::crosses_ray(
+        BallV::diff(pi, s),
+        BallV::diff(pj, s),
+        false,
+        false,
+        || Some(Terms::diff(pi, s)),
+        || Some(Terms::diff(pj, s)),
+        0.0,
+    )
+    .or_true()
 }
 
 /// Paper A §II.D num_cross: how many edges of P cross the upward ray from s.
@@ -81,70 +181,122 @@ pub fn edge_crosses_ray(pi: Vect2, pj: Vect2, s: Vect2) -> bool {
 #[inline]
 pub fn num_cross<P: VertexSeq + ?Sized>(p: &P, s: Vect2) -> usize {
     let n = p.count();
-    let mut count = 0;
-    for i in 0..n {
-        if edge_crosses_ray(p.vertex(i), p.vertex(p.next(i)), s) {
-            count += 1;
-        }
-    }
-    count
+    (0..n)
+        .filter(|&i| edge_crosses_ray(p.vertex(i), p.vertex(p.next(i)), s))
+        .count()
 }
 
-/// Paper A §II.E definitely_outside: s is farther than BUFF from every edge of P and of
-/// P*_BUFF, and the ray from s crosses P*_BUFF an even number of times.
+/// Paper A §II.E definitely_outside(P, s, BUFF): s is farther than BUFF from every edge
+/// of P and of P*_BUFF, and the ray from s crosses P*_BUFF an even number of times.
 ///
-/// One pass does steps 2–4: an edge of P*_BUFF whose two ends were not perturbed is the
-/// same edge of P, so its near_edge test is not repeated. Each edge reads and perturbs its
-/// two ends afresh.
+/// Certified: `true` only when the exact answer is true (see [`definitely_outside_rel`]).
 #[inline]
 pub fn definitely_outside<P: VertexSeq + ?Sized>(p: &P, s: Vect2, buff: f64) -> bool {
-    if beyond_bounding_box(p, s, buff) {
-        return true;
-    }
-    let n = p.count();
-    let mut crossings = 0usize;
-    for i in 0..n {
-        let a = p.vertex(i);
-        let b = p.vertex(p.next(i));
-        if near_edge(a, b, s, buff) {
-            return false;
-        }
-        let (a_star, b_star) = (perturb(a, s, buff), perturb(b, s, buff));
-        if (a_star != a || b_star != b) && near_edge(a_star, b_star, s, buff) {
-            return false;
-        }
-        if edge_crosses_ray(a_star, b_star, s) {
-            crossings += 1;
-        }
-    }
-    crossings % 2 == 0
+    let rel = AtTime {
+        p,
+        vels: p,
+        s,
+        v: Vect2::ZERO,
+        t: crate::ball::Ball::exact(0.0),
+    };
+    definitely_outside_rel(&rel, buff) == Tri::Yes
 }
 
-/// Filter in front of definitely_outside: every vertex is more than 2·BUFF beyond s on
-/// one side, in x or in y (the exact answer is then "outside").
+/// Paper A §II.E definitely_outside in the point's frame, three-valued: `Yes` when s is
+/// certainly definitely outside, `No` when certainly not, `Unsure` otherwise (which the
+/// detectors read as "not outside", towards detection).
 ///
-/// Then s is farther than BUFF from every edge of P; no vertex is perturbed except, when
-/// s is below P, ones whose y stays above s_y + BUFF, so P*_BUFF's edges are far too; and
-/// the upward ray misses P or crosses the whole closed curve, an even number of times.
-/// fl(s_x − q_x) is monotone in q_x, so the test per vertex equals the bounding-box test.
+/// One pass does steps 2–4: an edge of P*_BUFF whose two ends were not perturbed is the
+/// same edge of P, so its near_edge test is not repeated. An undecided perturbation
+/// leaves P*_BUFF unknown, and the answer can then only be `No` or `Unsure`.
+pub fn definitely_outside_rel<R: RelPoly + ?Sized>(p: &R, buff: f64) -> Tri {
+    let n = p.count();
+    if beyond_bounding_box(p, buff) {
+        return Tri::Yes;
+    }
+    let mut acc = Tri::Yes;
+    let mut odd = false;
+    let mut parity_known = true;
+    for i in 0..n {
+        let j = p.next(i);
+        let (a, b) = (p.rel(i), p.rel(j));
+        let (ta, tb) = (|| p.terms(i), || p.terms(j));
+        match near_edge_rel(a, b, buff, || Some((ta()?, tb()?))) {
+            Tri::Yes => return Tri::No,
+            Tri::Unsure => acc = Tri::Unsure,
+            Tri::No => {}
+        }
+        let pa = pr::perturbs(a, ta, buff);
+        let pb = pr::perturbs(b, tb, buff);
+        if pa == Tri::Unsure || pb == Tri::Unsure {
+            acc = Tri::Unsure;
+            parity_known = false;
+            continue;
+        }
+        let (pa, pb) = (pa == Tri::Yes, pb == Tri::Yes);
+        let a_star = if pa { shift_left(a, buff) } else { a };
+        let b_star = if pb { shift_left(b, buff) } else { b };
+        let star = |t: Option<Terms>, moved: bool| {
+            if moved {
+                t?.shift_x(-2.0 * buff)
+            } else {
+                t
+            }
+        };
+        if pa || pb {
+            let terms = || Some((star(ta(), pa)?, star(tb(), pb)?));
+            match near_edge_rel(a_star, b_star, buff, terms) {
+                Tri::Yes => return Tri::No,
+                Tri::Unsure => acc = Tri::Unsure,
+                Tri::No => {}
+            }
+        }
+        match pr::crosses_ray(a_star, b_star, pa, pb, ta, tb, buff) {
+            Tri::Yes => odd = !odd,
+            Tri::No => {}
+            Tri::Unsure => parity_known = false,
+        }
+    }
+    let even = if parity_known {
+        Tri::from_bool(!odd)
+    } else {
+        Tri::Unsure
+    };
+    acc.and(even)
+}
+
+/// q − (2·BUFF, 0), the perturbed vertex of §II.B, as a ball.
+#[inline(always)]
+fn shift_left(q: BallV, buff: f64) -> BallV {
+    q.sub(BallV::exact(Vect2::new(2.0 * buff, 0.0)))
+}
+
+/// Filter in front of definitely_outside: every vertex is certainly more than 2·BUFF
+/// beyond the point on one side, in x or in y (the exact answer is then "outside").
+///
+/// Then the point is farther than BUFF from every edge of P; no vertex is perturbed
+/// except, when the point is below P, ones whose y stays above it by more than 2·BUFF,
+/// so P*_BUFF's edges are far too; and the upward ray misses P or crosses the whole
+/// closed curve, an even number of times. "Certainly": the vertex's computed coordinate
+/// clears up(2·BUFF + r), an upper bound of 2·BUFF plus its radius.
 ///
 /// Written as a loop that leaves as soon as no side is left, not as a min/max reduction
 /// over the vertices followed by the edge loop: at opt-level 3 LLVM 22 (rustc 1.95,
 /// 1.97-nightly) vectorised that reduction and reloaded vertex 0, kept in a vector
-/// register across it, from a 64-bit spill slot, so its y read as 0 on the last edge:
-/// far false alarms in release builds and missed detections in fuzzing builds
-/// (tests/regressions/*.jsonl). Nothing here stays alive across the loop but s and BUFF.
+/// register across it, from a 64-bit spill slot, so its y read as 0 on the last edge
+/// (tests/regressions/*.jsonl). Nothing here stays alive across the loop but BUFF.
 #[inline]
-fn beyond_bounding_box<P: VertexSeq + ?Sized>(p: &P, s: Vect2, buff: f64) -> bool {
+fn beyond_bounding_box<R: RelPoly + ?Sized>(p: &R, buff: f64) -> bool {
     let twice = 2.0 * buff;
-    // Bits: all left, all right, all below, all above (by more than 2·BUFF).
+    // Bits: all left, all right, all below, all above.
     let mut sides = 0b1111u8;
     for i in 0..p.count() {
-        let q = p.vertex(i);
-        sides &= u8::from(pr::gap_exceeds(q.x, s.x, twice))
-            | u8::from(pr::gap_exceeds(s.x, q.x, twice)) << 1
-            | u8::from(pr::gap_exceeds(q.y, s.y, twice)) << 2
-            | u8::from(pr::gap_exceeds(s.y, q.y, twice)) << 3;
+        let q = p.rel(i);
+        let m = crate::ball::up(twice + q.r);
+        sides &= u8::from(q.v.x < -m)
+            | u8::from(q.v.x > m) << 1
+            | u8::from(q.v.y < -m) << 2
+            | u8::from(q.v.y > m) << 3;
         if sides == 0 {
             return false;
         }
@@ -155,7 +307,6 @@ fn beyond_bounding_box<P: VertexSeq + ?Sized>(p: &P, s: Vect2, buff: f64) -> boo
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::contain::Perturbed;
 
     fn v(x: f64, y: f64) -> Vect2 {
         Vect2::new(x, y)
@@ -183,7 +334,10 @@ mod tests {
     #[test]
     fn near_edge_is_strict_at_exactly_buff() {
         // s = (2, 1) is exactly 1 from the edge (0,0)-(4,0): not nearer than BUFF = 1.
-        assert!(!near_edge(v(0.0, 0.0), v(4.0, 0.0), v(2.0, 1.0), 1.0));
+        assert_eq!(
+            near_edge_tri(v(0.0, 0.0), v(4.0, 0.0), v(2.0, 1.0), 1.0),
+            Tri::No
+        );
         assert!(near_edge(v(0.0, 0.0), v(4.0, 0.0), v(2.0, 0.75), 1.0));
         // Beyond the end: distance to (4,0) from (4.5, 0.5) is √0.5 ≈ 0.707.
         assert!(near_edge(v(0.0, 0.0), v(4.0, 0.0), v(4.5, 0.5), 0.75));
@@ -194,13 +348,21 @@ mod tests {
     }
 
     #[test]
+    fn near_edge_on_a_long_segment_keeps_its_precision() {
+        // A segment 10⁶ long and a point 1e-7 + 2⁻³⁰ beside its middle, BUFF = 1e-7.
+        // The paper's quadratic in f64 cancels 10¹² against 10¹² and cannot see 1e-14;
+        // the certified form measures the distance to the line directly.
+        let (a, b) = (v(-5e5, 0.0), v(5e5, 0.0));
+        let buff = 1e-7;
+        assert_eq!(near_edge_tri(a, b, v(3.0, buff - 1e-15), buff), Tri::Yes);
+        assert_eq!(near_edge_tri(a, b, v(3.0, buff + 1e-15), buff), Tri::No);
+    }
+
+    #[test]
     fn ray_through_a_vertex_before_and_after_perturbation() {
         // Triangle with apex (2, 4) straight above s = (2, 1): the ray passes exactly
-        // through the apex. Unperturbed: (0,0)→(4,0) straddles x = 2 but lies below s
-        // (4·((2,1)·(0,−4)) = −16 < 0); (4,0)→(2,4) has both ends at x ≥ 2: no; (2,4)→(0,0)
-        // straddles and −2·((0,−3)·(−4,2)) = 12 ≥ 0: one crossing. Perturbed (BUFF 0.1) the
-        // apex moves to (1.8, 4), strictly left of the ray; now (4,0)→(1.8,4) crosses
-        // (−2.2·((−2,1)·(4,2.2)) = 12.76 ≥ 0) and (1.8,4)→(0,0) does not: again one.
+        // through the apex. Unperturbed: one crossing ((2,4)→(0,0)); perturbed (BUFF
+        // 0.1) the apex moves to (1.8, 4) and (4,0)→(1.8,4) crosses instead: again one.
         let tri = [v(0.0, 0.0), v(4.0, 0.0), v(2.0, 4.0)];
         let s = v(2.0, 1.0);
         assert_eq!(num_cross(&tri[..], s), 1);
@@ -212,18 +374,13 @@ mod tests {
         assert_eq!(star.vertex(2), v(1.8, 4.0));
         assert_eq!(num_cross(&star, s), 1);
         assert!(!definitely_outside(&tri[..], s, 0.1)); // inside: odd count
-                                                        // A point above the apex: zero crossings, outside.
         assert!(definitely_outside(&tri[..], v(2.0, 5.0), 0.1));
     }
 
     #[test]
     fn outside_pentagon_whose_vertex_0_is_on_the_ray() {
-        // tests/regressions/assure-seed7.jsonl, false_alarm_far-2861536: s = (0.73, 0.005)
-        // is 0.17 below-left of the edge (0.5,−0.3)→(0.73,0.2) and far from every other
-        // edge; vertex 0 = (0.73, 0.2) is straight above s, within BUFF of the ray, so it
-        // moves to (0.71, 0.2) and no edge of P*_BUFF crosses the ray: outside. An
-        // optimised build that read vertex 0 as (0.73, 0) on the last edge (the LLVM 22
-        // miscompile described above) put s within BUFF of that edge and answered false.
+        // tests/regressions/assure-seed7.jsonl, false_alarm_far-2861536 (an LLVM 22
+        // miscompile read vertex 0 as (0.73, 0) on the last edge): s is outside.
         let p = [
             v(0.73, 0.2),
             v(-0.3, -0.5),
@@ -235,7 +392,6 @@ mod tests {
         assert!(definitely_outside(&p[..], s, 0.01));
         assert!(!near_edge(p[4], p[0], s, 0.01));
         assert!(near_edge(p[4], v(0.73, 0.0), s, 0.01));
-        // Slid up into the pentagon (below the apex, left of the edge 4→0): inside.
         assert!(!definitely_outside(&p[..], v(0.6, 0.05), 0.01));
     }
 
@@ -245,9 +401,8 @@ mod tests {
         assert!(!definitely_outside(sq, v(2.0, 2.0), 0.1)); // inside
         assert!(definitely_outside(sq, v(6.0, 2.0), 0.1)); // outside
         assert!(definitely_outside(sq, v(2.0, -1.0), 0.1)); // below: ray crosses twice
-        assert!(!definitely_outside(sq, v(4.05, 2.0), 0.1)); // within BUFF of the right edge
-                                                             // The point exactly BUFF = 0.5 from the right edge (exact in binary).
-        assert!(definitely_outside(sq, v(4.5, 2.0), 0.5));
+        assert!(!definitely_outside(sq, v(4.05, 2.0), 0.1)); // within BUFF of the edge
+        assert!(definitely_outside(sq, v(4.5, 2.0), 0.5)); // exactly BUFF away
         assert!(!definitely_outside(sq, v(4.25, 2.0), 0.5));
     }
 }

@@ -1,9 +1,20 @@
 //! Paper A §II.H (statically shaped polygons), §II.I (warping polygons) and §III (3D).
+//!
+//! Every detector has a three-valued form (`*_tri`) that carries [`Tri`] through the
+//! algorithm: `No` only when paper A computed without rounding answers no, `Yes` only
+//! when it answers yes, `Unsure` when some comparison on the way could not be decided in
+//! f64. The boolean form reads `Unsure` as a detection, so it never misses what paper A
+//! in exact arithmetic detects.
+//!
+//! The detectors never form s + T·v or P + T·V in absolute coordinates: each decision
+//! is taken on differences from the point (see [`crate::contain::RelPoly`]), so the
+//! error bounds are on the scale of the encounter, whatever the offsets.
 
-use crate::contain::definitely_outside;
-use crate::polygon::{Moved, VertexSeq};
-use crate::predicates as pr;
-use crate::proximity::segments_close;
+use crate::ball::{exact, nonnegative, positive, round_down, round_up, Ball, BallV, Tri};
+use crate::contain::{definitely_outside_rel, AtTime};
+use crate::polygon::VertexSeq;
+use crate::predicates::{self as pr, Terms, SWEEP_ROUNDING};
+use crate::proximity::segments_close_rel;
 use crate::vect2::{sqrt, Vect2};
 
 // ===================================================================== §II.H
@@ -13,45 +24,105 @@ use crate::vect2::{sqrt, Vect2};
 ///
 /// Step 1: s not definitely outside P → true. Step 2: s + T·v not definitely outside
 /// P + T·V → true. Step 3: some edge with segments_close(s, s + T·(v − v_i), p_i, p_j,
-/// BUFF) → true.
+/// BUFF) → true. Certified: `false` only when the exact answer is false.
 #[inline]
 pub fn detect_same_2d<P, V>(t: f64, s: Vect2, v: Vect2, p: &P, vels: &V, buff: f64) -> bool
 where
     P: VertexSeq + ?Sized,
     V: VertexSeq + ?Sized,
 {
+    detect_same_2d_tri(t, s, v, p, vels, buff).or_true()
+}
+
+/// Paper A §II.H detect_same_2D, three-valued (see [`detect_same_2d`]).
+#[inline]
+pub fn detect_same_2d_tri<P, V>(t: f64, s: Vect2, v: Vect2, p: &P, vels: &V, buff: f64) -> Tri
+where
+    P: VertexSeq + ?Sized,
+    V: VertexSeq + ?Sized,
+{
+    same_window(Ball::exact(0.0), Ball::exact(t), s, v, p, vels, buff)
+}
+
+/// detect_same_2D over the time window [ta, tb] of the original motion, which is what
+/// paper A §III runs: detect_same_2D(tb − ta, s + ta·v, v, P + ta·V, V, BUFF). The
+/// window's ends are balls (a slab window's ends are quotients).
+///
+/// In the point's frame (origin s, each velocity relative to v): step 1 is
+/// definitely_outside of (p_i − s) + ta·(v_i − v), step 2 the same at tb, and step 3
+/// translates segments_close by s + ta·v_i: the relative path runs from ta·(v − v_i) to
+/// tb·(v − v_i), the edge from p_i − s to p_j − s + ta·(v_j − v_i).
+#[allow(clippy::too_many_arguments)]
+fn same_window<P, V>(ta: Ball, tb: Ball, s: Vect2, v: Vect2, p: &P, vels: &V, buff: f64) -> Tri
+where
+    P: VertexSeq + ?Sized,
+    V: VertexSeq + ?Sized,
+{
     let n = p.count();
     if n == 0 {
-        return false;
+        return Tri::No;
     }
-    if !definitely_outside(p, s, buff) {
-        return true;
+    let mut acc = Tri::No;
+    for t in [ta, tb] {
+        match definitely_outside_rel(&AtTime { p, vels, s, v, t }, buff) {
+            Tri::No => return Tri::Yes,
+            Tri::Unsure => acc = Tri::Unsure,
+            Tri::Yes => {}
+        }
     }
-    let at_t = Moved { p, v: vels, t };
-    if !definitely_outside(&at_t, s.at(v, t), buff) {
-        return true;
-    }
-    // Each vertex's side of the relative path's line is computed once and carried to the
-    // next edge: an edge with both ends beyond BUFF on one side is not close (the same
-    // rigorous test segments_close starts with, done n instead of 2n times).
+    // The relative path of the common velocity v_0, and each vertex's side of its line
+    // (computed once, carried to the next edge): an edge with both ends certainly beyond
+    // BUFF on one side is not close, the same certain test segments_close starts with.
     let v0 = vels.vertex(0);
-    let path_end = s.at(v - v0, t);
-    let mut side_i = pr::line_side(s, path_end, p.vertex(0), buff);
+    let rel0 = BallV::diff(v, v0);
+    let (pa0, pb0) = (rel0.scale(ta), rel0.scale(tb));
+    let m0 = pb0.sub(pa0);
+    let mut side_i = pr::side_beyond(pa0, m0, BallV::diff(p.vertex(0), s), buff);
     for i in 0..n {
         let j = p.next(i);
-        let side_j = pr::line_side(s, path_end, p.vertex(j), buff);
-        let vi = vels.vertex(i);
-        let skip = side_i != 0 && side_i == side_j && pr::same_velocity(vi, v0);
+        let (vi, vj) = (vels.vertex(i), vels.vertex(j));
+        let qj = BallV::diff(p.vertex(j), s);
+        let side_j = pr::side_beyond(pa0, m0, qj, buff);
+        let same_i = pr::same_velocity(vi, v0);
+        let skip = side_i != 0 && side_i == side_j && same_i && pr::same_velocity(vj, vi);
         side_i = side_j;
         if skip {
             continue;
         }
-        let rel_end = s.at(v - vi, t);
-        if segments_close(s, rel_end, p.vertex(i), p.vertex(j), buff) {
-            return true;
+        let (pa, pb) = if same_i {
+            (pa0, pb0)
+        } else {
+            let rel = BallV::diff(v, vi);
+            (rel.scale(ta), rel.scale(tb))
+        };
+        let edge_j = if ta.is_exact_zero() || pr::same_velocity(vj, vi) {
+            qj
+        } else {
+            qj.add(BallV::diff(vj, vi).scale(ta))
+        };
+        let qi = BallV::diff(p.vertex(i), s);
+        // Exact terms when both window ends are exact floats (always, but for a slab
+        // window's quotients): the path from ta·(v − v_i) to tb·(v − v_i).
+        let terms = || {
+            if ta.r != 0.0 || tb.r != 0.0 {
+                return None;
+            }
+            let path = |k: f64| Terms::ZERO.plus_scaled(k, v)?.plus_scaled(-k, vi);
+            let ej = Terms::diff(p.vertex(j), s);
+            let ej = if ta.is_exact_zero() || pr::same_velocity(vj, vi) {
+                ej
+            } else {
+                ej.plus_scaled(ta.z, vj)?.plus_scaled(-ta.z, vi)?
+            };
+            Some([path(ta.z)?, path(tb.z)?, Terms::diff(p.vertex(i), s), ej])
+        };
+        match segments_close_rel(pa, pb, qi, edge_j, buff, terms) {
+            Tri::Yes => return Tri::Yes,
+            Tri::Unsure => acc = Tri::Unsure,
+            Tri::No => {}
         }
     }
-    false
+    acc
 }
 
 // ===================================================================== §II.I
@@ -110,94 +181,179 @@ impl Interval {
         Interval { lb, ub }
     }
 
-    /// Does the interval contain no time?
+    /// Does the interval contain no time? (NaN ends count as non-empty: the safe side.)
     #[inline(always)]
+    #[allow(clippy::neg_cmp_op_on_partial_ord)]
     pub fn is_empty(&self) -> bool {
-        !pr::intervals_meet(self.lb, self.ub)
+        self.lb > self.ub
     }
 }
 
-/// Roots r1 ≤ r2 of A·t² + B·t + C (A ≠ 0, disc = B² − 4AC > 0), computed without
-/// cancellation: q = −(B + sgn(B)·√disc)/2, roots q/A and C/q.
-#[inline(always)]
-fn roots(a: f64, b: f64, c: f64, disc: f64) -> (f64, f64) {
-    let sq = sqrt(disc);
-    let q = if b >= 0.0 {
-        -0.5 * (b + sq)
-    } else {
-        -0.5 * (b - sq)
+/// Enclosures [lo, hi] of the smaller and the larger real root of a·t² + b·t + c
+/// (floats, a ≠ 0) for every discriminant in the enclosure of b² − 4ac clipped at 0;
+/// `None` when they are unbounded (q = 0 below).
+///
+/// Roots without cancellation: q = −(b + sgn(b)·√disc)/2, roots q/a and c/q. Each
+/// operation is rounded outward ([`round_down`], [`round_up`]), so the enclosures hold.
+fn root_bounds(a: f64, b: f64, c: f64, disc: Ball) -> Option<[(f64, f64); 2]> {
+    let order = |x1: (f64, f64), x2: (f64, f64)| {
+        if !(x1.0.is_finite() && x1.1.is_finite() && x2.0.is_finite() && x2.1.is_finite()) {
+            return None;
+        }
+        Some([
+            (x1.0.min(x2.0), x1.1.min(x2.1)),
+            (x1.0.max(x2.0), x1.1.max(x2.1)),
+        ])
     };
-    let x1 = q / a;
-    let x2 = c / q;
-    if x1 <= x2 {
-        (x1, x2)
+    if c == 0.0 {
+        // Roots 0 and −b/a, the second exact when b = 0.
+        let r = -b / a;
+        let x2 = if b == 0.0 {
+            (0.0, 0.0)
+        } else {
+            (round_down(r), round_up(r))
+        };
+        return order((0.0, 0.0), x2);
+    }
+    let d_lo = disc.lo().max(0.0);
+    let d_hi = disc.hi();
+    let s_lo = round_down(sqrt(d_lo)).max(0.0);
+    let s_hi = round_up(sqrt(d_hi));
+    let (q_lo, q_hi) = if b >= 0.0 {
+        (
+            round_down(-0.5 * round_up(b + s_hi)),
+            round_up(-0.5 * round_down(b + s_lo)),
+        )
     } else {
-        (x2, x1)
+        (
+            round_down(0.5 * round_down(s_lo - b)),
+            round_up(0.5 * round_up(s_hi - b)),
+        )
+    };
+    if !(q_lo.is_finite() && q_hi.is_finite()) {
+        return None;
+    }
+    let x1 = if a > 0.0 {
+        (round_down(q_lo / a), round_up(q_hi / a))
+    } else {
+        (round_down(q_hi / a), round_up(q_lo / a))
+    };
+    if b == 0.0 {
+        // Roots ±√disc/(2a): symmetric about 0.
+        return order(x1, (-x1.1, -x1.0));
+    }
+    if q_lo <= 0.0 && q_hi >= 0.0 {
+        return None;
+    }
+    let (y1, y2) = (c / q_lo, c / q_hi);
+    order(x1, (round_down(y1.min(y2)), round_up(y1.max(y2))))
+}
+
+/// The set {t ∈ [lo, hi] : a·t² + b·t + c ≥ 0} for floats a, b, c, enclosed from
+/// outside (`outer`: a superset) or from inside (a subset), as dot_nn_lin's two
+/// intervals: [σ = −1, σ = +1].
+///
+/// The cases of dot_nn_lin (omitted in the paper, derived here): a > 0 and disc ≤ 0:
+/// everything (σ = +1); a > 0, disc > 0: outside the roots r1 < r2 (σ = −1: t ≤ r1,
+/// σ = +1: t ≥ r2); a < 0: between the roots when disc ≥ 0 (σ = +1), else nothing;
+/// a = 0: the line b·t + c (b > 0: t ≥ −c/b, σ = +1; b < 0: t ≤ −c/b, σ = −1; b = 0:
+/// everything when c ≥ 0, σ = +1). a is compared with zero exactly: treating a small a
+/// as zero (as PolyCARP does below 1e-8) replaces a parabola by a line and loses real
+/// roots on long lookaheads. An undecided discriminant makes the outer set everything
+/// and the inner one the widest possible gap, so both enclosures hold whatever it is.
+fn float_set(a: f64, b: f64, c: f64, lo: f64, hi: f64, outer: bool) -> [Interval; 2] {
+    let full = Interval::new(lo, hi);
+    let none = Interval::EMPTY;
+    if !(a.is_finite() && b.is_finite() && c.is_finite()) {
+        return if outer { [none, full] } else { [none, none] };
+    }
+    if a == 0.0 {
+        if b == 0.0 {
+            return if c >= 0.0 { [none, full] } else { [none, none] };
+        }
+        let root = -c / b;
+        let (rl, rh) = (round_down(root), round_up(root));
+        return if b > 0.0 {
+            [none, Interval::new(lo.max(if outer { rl } else { rh }), hi)]
+        } else {
+            [Interval::new(lo, hi.min(if outer { rh } else { rl })), none]
+        };
+    }
+    let disc = Ball::exact(b)
+        .sq()
+        .sub(Ball::exact(a).mul(Ball::exact(c)).scale(4.0));
+    let pos = positive(disc);
+    if a > 0.0 {
+        if pos == Tri::No || (outer && pos == Tri::Unsure) {
+            return if pos == Tri::No || outer {
+                [none, full]
+            } else {
+                [none, none]
+            };
+        }
+        let Some([r1, r2]) = root_bounds(a, b, c, disc) else {
+            return if outer { [none, full] } else { [none, none] };
+        };
+        if outer {
+            [
+                Interval::new(lo, hi.min(r1.1)),
+                Interval::new(lo.max(r2.0), hi),
+            ]
+        } else {
+            [
+                Interval::new(lo, hi.min(r1.0)),
+                Interval::new(lo.max(r2.1), hi),
+            ]
+        }
+    } else {
+        if nonnegative(disc) == Tri::No || (!outer && pos != Tri::Yes) {
+            return [none, none];
+        }
+        let Some([r1, r2]) = root_bounds(a, b, c, disc) else {
+            return if outer { [none, full] } else { [none, none] };
+        };
+        if outer {
+            [none, Interval::new(lo.max(r1.0), hi.min(r2.1))]
+        } else {
+            [none, Interval::new(lo.max(r1.1), hi.min(r2.0))]
+        }
     }
 }
 
-/// Paper A §II.I dot_nn_lin (omitted in the paper, derived here): one of the two
-/// intervals whose union is {t ∈ [0, T] : (ww + t·vv)·(aa + t·bb) ≥ 0}.
+/// The set {t ∈ [lo, hi] : A·t² + B·t + C ≥ 0} for ball coefficients (lo ≥ 0):
+/// the outer enclosure uses the upper ends of the coefficients (for t ≥ 0 the exact
+/// quadratic is at most A⁺t² + B⁺t + C⁺), the inner one the lower ends.
+#[inline]
+fn ball_set(a: Ball, b: Ball, c: Ball, lo: f64, hi: f64, outer: bool) -> [Interval; 2] {
+    // An empty (or NaN) window: nothing.
+    if lo > hi || lo.is_nan() || hi.is_nan() {
+        return [Interval::EMPTY; 2];
+    }
+    if outer {
+        float_set(a.hi(), b.hi(), c.hi(), lo, hi, true)
+    } else {
+        float_set(a.lo(), b.lo(), c.lo(), lo, hi, false)
+    }
+}
+
+/// Coefficients (t², t, 1) of (ww + t·vv)·(aa + t·bb) as balls.
+#[inline(always)]
+fn dot_coeffs(ww: BallV, vv: BallV, aa: BallV, bb: BallV) -> [Ball; 3] {
+    [vv.dot(bb), ww.dot(bb).add(vv.dot(aa)), ww.dot(aa)]
+}
+
+/// Paper A §II.I dot_nn_lin (omitted in the paper, derived in [`float_set`]): one of the
+/// two intervals whose union is {t ∈ [0, T] : (ww + t·vv)·(aa + t·bb) ≥ 0}.
 ///
-/// Derivation. f(t) = (ww + t·vv)·(aa + t·bb) = A·t² + B·t + C with A = vv·bb,
-/// B = ww·bb + vv·aa, C = ww·aa. Its non-negative set in ℝ is, by the sign of A:
-/// - A = 0, B = 0: all of ℝ when C ≥ 0, else nothing → σ = +1 gets [0, T] or ∅.
-/// - A = 0, B > 0: t ≥ −C/B → σ = +1 gets [max(0, −C/B), T].
-/// - A = 0, B < 0: t ≤ −C/B → σ = −1 gets [0, min(T, −C/B)].
-/// - A > 0, disc = B² − 4AC ≤ 0: all of ℝ → σ = +1 gets [0, T].
-/// - A > 0, disc > 0: outside the roots r1 < r2 → σ = −1 gets [0, min(T, r1)],
-///   σ = +1 gets [max(0, r2), T].
-/// - A < 0, disc < 0: nothing.
-/// - A < 0, disc = 0: the double root r = −B/(2A) → σ = +1 gets [max(0,r), min(T,r)].
-/// - A < 0, disc > 0: between the roots → σ = +1 gets [max(0, r1), min(T, r2)].
-///
-/// The sign not named in a case gets ∅. A is compared with zero exactly: treating a
-/// small A as zero (as PolyCARP does below 1e-8) replaces a parabola by a line and loses
-/// real roots on long lookaheads.
+/// Certified as an outer enclosure: the returned interval contains the exact one.
 #[inline]
 pub fn dot_nn_lin(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2, sigma: Sign) -> Interval {
-    let a = vv.dot(bb);
-    let b = ww.dot(bb) + vv.dot(aa);
-    let c = ww.dot(aa);
-    match pr::sign(a) {
-        0 => match (pr::sign(b), sigma) {
-            (0, Sign::Pos) if pr::nonnegative(c) => Interval::new(0.0, t),
-            (1, Sign::Pos) => Interval::new((-c / b).max(0.0), t),
-            (-1, Sign::Neg) => Interval::new(0.0, (-c / b).min(t)),
-            _ => Interval::EMPTY,
-        },
-        1 => {
-            let (disc, ds) = pr::discriminant(a, b, c);
-            if ds <= 0 {
-                match sigma {
-                    Sign::Pos => Interval::new(0.0, t),
-                    Sign::Neg => Interval::EMPTY,
-                }
-            } else {
-                let (r1, r2) = roots(a, b, c, disc);
-                match sigma {
-                    Sign::Neg => Interval::new(0.0, r1.min(t)),
-                    Sign::Pos => Interval::new(r2.max(0.0), t),
-                }
-            }
-        }
-        _ => {
-            if sigma == Sign::Neg {
-                return Interval::EMPTY;
-            }
-            let (disc, ds) = pr::discriminant(a, b, c);
-            match ds {
-                0 => {
-                    let r = -b / (2.0 * a);
-                    Interval::new(r.max(0.0), r.min(t))
-                }
-                1 => {
-                    let (r1, r2) = roots(a, b, c, disc);
-                    Interval::new(r1.max(0.0), r2.min(t))
-                }
-                _ => Interval::EMPTY,
-            }
-        }
+    let e = BallV::exact;
+    let [a, b, c] = dot_coeffs(e(ww), e(vv), e(aa), e(bb));
+    let set = ball_set(a, b, c, 0.0, t, true);
+    match sigma {
+        Sign::Neg => set[0],
+        Sign::Pos => set[1],
     }
 }
 
@@ -205,6 +361,7 @@ pub fn dot_nn_lin(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2, sigma: Sig
 ///
 /// (F·aa + σ2·ww + t(F·bb + σ2·vv))·(aa + t·bb) = F·‖aa + t·bb‖² + σ2·(ww + t·vv)·(aa + t·bb),
 /// so σ2 = +1 selects X ≥ −F·g² and σ2 = −1 selects X ≤ F·g²: together |X| ≤ F·g².
+/// Certified as an outer enclosure, with F·aa + σ2·ww formed on balls.
 #[inline]
 #[allow(clippy::too_many_arguments)]
 pub fn dot_nn(
@@ -217,63 +374,32 @@ pub fn dot_nn(
     sigma2: Sign,
     f: f64,
 ) -> Interval {
-    let s2 = sigma2.value();
-    dot_nn_lin(
-        t,
-        aa.scale(f) + ww.scale(s2),
-        bb.scale(f) + vv.scale(s2),
-        aa,
-        bb,
-        sigma1,
-    )
+    let e = BallV::exact;
+    let k = Ball::exact(f);
+    let s2 = Ball::exact(sigma2.value());
+    let w2 = e(aa).scale(k).add(e(ww).scale(s2));
+    let v2 = e(bb).scale(k).add(e(vv).scale(s2));
+    let [a, b, c] = dot_coeffs(w2, v2, e(aa), e(bb));
+    let set = ball_set(a, b, c, 0.0, t, true);
+    match sigma1 {
+        Sign::Neg => set[0],
+        Sign::Pos => set[1],
+    }
 }
 
-/// Both dot_nn intervals of one side σ2: their union is where σ2·X ≥ −F·g².
-#[inline(always)]
-fn side(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2, sigma2: Sign, f: f64) -> [Interval; 2] {
-    [
-        dot_nn(t, ww, vv, aa, bb, Sign::Neg, sigma2, f),
-        dot_nn(t, ww, vv, aa, bb, Sign::Pos, sigma2, f),
-    ]
-}
-
-/// Paper A §II.I edge_detect_simp: is there a t ∈ [0, T] with
-/// |(ww + t·vv)·(aa + t·bb)| ≤ (1 + F)·‖aa + t·bb‖² and
-/// |(ww + t·vv)·(aa⊥ + t·bb⊥)| ≤ F·‖aa⊥ + t·bb⊥‖²?
-///
-/// The paper loops over six signs ε1, ε2, ε3, σ1, σ2, σ3; the combinations with ε2 = −1
-/// (σ2 = −1) repeat those with ε2 = +1 (σ2 = +1) with the two intervals swapped, so only
-/// ε2 = σ2 = +1 is enumerated: 2⁴ interval intersections over 8 dot_nn intervals.
+/// Does some choice of one interval from each of the four pairs have a common point?
+/// (edge_detect_simp step 2: max of the lower ends ≤ min of the upper ends.)
 #[inline]
-pub fn edge_detect_simp(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2, f: f64) -> bool {
-    let (aap, bbp) = (aa.perp(), bb.perp());
-    // The perpendicular conditions first: they fail for most edges.
-    let p_pos = side(t, ww, vv, aap, bbp, Sign::Pos, f);
-    if p_pos[0].is_empty() && p_pos[1].is_empty() {
-        return false;
-    }
-    let p_neg = side(t, ww, vv, aap, bbp, Sign::Neg, f);
-    if p_neg[0].is_empty() && p_neg[1].is_empty() {
-        return false;
-    }
-    let f1 = 1.0 + f;
-    let a_pos = side(t, ww, vv, aa, bb, Sign::Pos, f1);
-    if a_pos[0].is_empty() && a_pos[1].is_empty() {
-        return false;
-    }
-    let a_neg = side(t, ww, vv, aa, bb, Sign::Neg, f1);
-    for i1 in &p_pos {
-        for i2 in &p_neg {
-            let lb12 = i1.lb.max(i2.lb);
-            let ub12 = i1.ub.min(i2.ub);
-            if !pr::intervals_meet(lb12, ub12) {
+fn some_choice_meets(sets: &[[Interval; 2]; 4]) -> bool {
+    for i1 in &sets[0] {
+        for i2 in &sets[1] {
+            let (lb12, ub12) = (i1.lb.max(i2.lb), i1.ub.min(i2.ub));
+            if lb12 > ub12 {
                 continue;
             }
-            for i3 in &a_pos {
-                for i4 in &a_neg {
-                    let lb = lb12.max(i3.lb).max(i4.lb);
-                    let ub = ub12.min(i3.ub).min(i4.ub);
-                    if pr::intervals_meet(lb, ub) {
+            for i3 in &sets[2] {
+                for i4 in &sets[3] {
+                    if lb12.max(i3.lb).max(i4.lb) <= ub12.min(i3.ub).min(i4.ub) {
                         return true;
                     }
                 }
@@ -283,27 +409,113 @@ pub fn edge_detect_simp(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2, f: f
     false
 }
 
-/// Filter in front of edge_detect: the boxes swept by the point over [0, T] and by the
-/// edge over [0, T] are farther apart than any time edge_detect_simp could accept.
+/// Paper A §II.I edge_detect_simp: is there a t ∈ [0, T] with
+/// |(ww + t·vv)·(aa + t·bb)| ≤ (1 + F)·‖aa + t·bb‖² and
+/// |(ww + t·vv)·(aa⊥ + t·bb⊥)| ≤ F·‖aa⊥ + t·bb⊥‖²? Certified (see
+/// [`edge_detect_simp_tri`]).
+#[inline]
+pub fn edge_detect_simp(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2, f: f64) -> bool {
+    let e = BallV::exact;
+    edge_detect_simp_tri(
+        Ball::exact(0.0),
+        Ball::exact(t),
+        e(ww),
+        e(vv),
+        e(aa),
+        e(bb),
+        f,
+    )
+    .or_true()
+}
+
+/// Paper A §II.I edge_detect_simp over the time window [ta, tb], three-valued, on balls.
 ///
-/// The edge at time t lies in the box of p_i, p_j, p_i + T·v_i, p_j + T·v_j (each end moves
-/// on a segment, the edge is their convex combination), the point in the box of s and
-/// s + T·v. A time accepted by edge_detect_simp puts the point within (1 + F)·‖aa‖ of the
-/// midpoint along the edge and F·‖aa‖ across it, so within 2F·‖aa(t)‖ ≤ 2F·L of the edge,
-/// with L = max(‖aa(0)‖₁, ‖aa(T)‖₁) (a norm is convex in t; ‖·‖₁ ≥ ‖·‖₂). The margin is
-/// doubled for [`pr::ranges_apart`] and widened by [`pr::SWEEP_ROUNDING`] for rounding.
+/// The paper loops over six signs and intersects four dot_nn intervals per choice. A
+/// choice meets exactly when some t lies in all four unions, i.e. when the four
+/// quadratics (1 + F)‖a‖² ∓ w·a and F‖a‖² ∓ w×a (a = aa + t·bb, w = ww + t·vv; w·a⊥ =
+/// w × a) are all ≥ 0 at one t. Their coefficients share nine dot and cross products,
+/// formed once. Each quadratic's set is enclosed from outside and from inside
+/// ([`ball_set`]): no meeting of the outer sets is a certain `No`, a meeting of the inner
+/// sets a certain `Yes`, anything between is `Unsure`. The perpendicular conditions go
+/// first: they fail for most edges.
+#[allow(clippy::too_many_arguments)]
+pub fn edge_detect_simp_tri(
+    ta: Ball,
+    tb: Ball,
+    ww: BallV,
+    vv: BallV,
+    aa: BallV,
+    bb: BallV,
+    f: f64,
+) -> Tri {
+    let (one_f, err) = exact::two_sum(1.0, f);
+    let k1 = Ball {
+        z: one_f,
+        r: err.abs(),
+    };
+    let kf = Ball::exact(f);
+    let g = [bb.sq(), aa.dot(bb).scale(2.0), aa.sq()];
+    let x = dot_coeffs(ww, vv, aa, bb);
+    let y = [vv.cross(bb), ww.cross(bb).add(vv.cross(aa)), ww.cross(aa)];
+    let quad = |k: Ball, h: &[Ball; 3], sigma: f64, outer: bool, lo: f64, hi: f64| {
+        let c = |i: usize| k.mul(g[i]).add(h[i].scale(sigma));
+        ball_set(c(0), c(1), c(2), lo, hi, outer)
+    };
+    let (lo, hi) = (ta.lo().max(0.0), tb.hi());
+    if !(lo.is_finite() && hi.is_finite()) {
+        return Tri::Unsure;
+    }
+    let empty = |s: &[Interval; 2]| s[0].is_empty() && s[1].is_empty();
+    let p_pos = quad(kf, &y, 1.0, true, lo, hi);
+    if empty(&p_pos) {
+        return Tri::No;
+    }
+    let p_neg = quad(kf, &y, -1.0, true, lo, hi);
+    if empty(&p_neg) {
+        return Tri::No;
+    }
+    let a_pos = quad(k1, &x, 1.0, true, lo, hi);
+    if empty(&a_pos) {
+        return Tri::No;
+    }
+    let a_neg = quad(k1, &x, -1.0, true, lo, hi);
+    if !some_choice_meets(&[p_pos, p_neg, a_pos, a_neg]) {
+        return Tri::No;
+    }
+    let (lo, hi) = (ta.hi().max(0.0), tb.lo());
+    let inner = [
+        quad(kf, &y, 1.0, false, lo, hi),
+        quad(kf, &y, -1.0, false, lo, hi),
+        quad(k1, &x, 1.0, false, lo, hi),
+        quad(k1, &x, -1.0, false, lo, hi),
+    ];
+    if some_choice_meets(&inner) {
+        Tri::Yes
+    } else {
+        Tri::Unsure
+    }
+}
+
+/// Filter in front of edge_detect: over the window [t0, t1], the boxes swept by the point
+/// and by the edge are farther apart than any time edge_detect_simp could accept.
 ///
-/// The one exception is an edge that collapses to a point at some t ∈ [0, T] (a repeated
-/// vertex, or p_j − p_i + t·(v_j − v_i) = 0): inequalities (1) read 0 ≤ 0 there, so the
-/// paper's edge_detect_simp accepts wherever the point is, and this filter rejects when the
-/// point is far. That acceptance is a false alarm of the paper on an edge that is not an
-/// edge (such a polygon is not well formed, §II.J step 1); a point that really enters
-/// crosses a proper edge or the collapsed point, which the neighbouring edges contain.
-/// tests/functions_vs_oracle.rs checks that this is the only difference.
+/// The edge at time t lies in the box of its ends at t0 and t1 (each end moves on a
+/// segment, the edge is their convex combination), the point in the box of its positions.
+/// A time accepted by edge_detect_simp puts the point within (1 + F)·‖aa‖ of the midpoint
+/// along the edge and F·‖aa‖ across it, so within 2F·‖aa(t)‖ ≤ 2F·L of the edge, with
+/// L = max of ‖edge‖₁ at t0 and t1 (a norm is convex in t; ‖·‖₁ ≥ ‖·‖₂). The margin is
+/// doubled for [`pr::ranges_apart`] and widened by [`SWEEP_ROUNDING`]·M, M bounding every
+/// magnitude (the inputs included, so that p + t·v's cancellation is covered).
+///
+/// The one exception is an edge that collapses to a point at some t of the window:
+/// inequalities (1) read 0 ≤ 0 there, so paper A accepts wherever the point is. The
+/// filter therefore only rejects an edge that provably never collapses
+/// ([`never_collapses`]).
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
 fn swept_boxes_apart(
-    t: f64,
+    t0: f64,
+    t1: f64,
     s: Vect2,
     v: Vect2,
     pi: Vect2,
@@ -312,51 +524,67 @@ fn swept_boxes_apart(
     vj: Vect2,
     f: f64,
 ) -> bool {
-    let (qi, qj, st) = (pi.at(vi, t), pj.at(vj, t), s.at(v, t));
-    let l0 = (pj.x - pi.x).abs() + (pj.y - pi.y).abs();
-    let l1 = (qj.x - qi.x).abs() + (qj.y - qi.y).abs();
-    let ex_lo = pi.x.min(pj.x).min(qi.x.min(qj.x));
-    let ex_hi = pi.x.max(pj.x).max(qi.x.max(qj.x));
-    let ey_lo = pi.y.min(pj.y).min(qi.y.min(qj.y));
-    let ey_hi = pi.y.max(pj.y).max(qi.y.max(qj.y));
-    let (sx_lo, sx_hi) = (s.x.min(st.x), s.x.max(st.x));
-    let (sy_lo, sy_hi) = (s.y.min(st.y), s.y.max(st.y));
-    let m = ex_lo
-        .abs()
-        .max(ex_hi.abs())
-        .max(ey_lo.abs().max(ey_hi.abs()))
-        .max(
-            sx_lo
-                .abs()
-                .max(sx_hi.abs())
-                .max(sy_lo.abs().max(sy_hi.abs())),
-        );
-    let twice = 2.0 * (2.0 * f * l0.max(l1)) + pr::SWEEP_ROUNDING * m;
+    let (ai, bi, aj, bj) = (pi.at(vi, t0), pi.at(vi, t1), pj.at(vj, t0), pj.at(vj, t1));
+    let (s0, s1) = (s.at(v, t0), s.at(v, t1));
+    let l0 = (aj.x - ai.x).abs() + (aj.y - ai.y).abs();
+    let l1 = (bj.x - bi.x).abs() + (bj.y - bi.y).abs();
+    let ex_lo = ai.x.min(aj.x).min(bi.x.min(bj.x));
+    let ex_hi = ai.x.max(aj.x).max(bi.x.max(bj.x));
+    let ey_lo = ai.y.min(aj.y).min(bi.y.min(bj.y));
+    let ey_hi = ai.y.max(aj.y).max(bi.y.max(bj.y));
+    let (sx_lo, sx_hi) = (s0.x.min(s1.x), s0.x.max(s1.x));
+    let (sy_lo, sy_hi) = (s0.y.min(s1.y), s0.y.max(s1.y));
+    let big = |q: Vect2| q.x.abs().max(q.y.abs());
+    let m = big(ai)
+        .max(big(bi))
+        .max(big(aj).max(big(bj)))
+        .max(big(s0).max(big(s1)))
+        .max(big(pi).max(big(pj)).max(big(s)));
+    let slack = 2.0 * f * l0.max(l1) + SWEEP_ROUNDING * m;
+    let twice = 2.0 * slack;
     if pr::ranges_apart(ex_lo, ex_hi, sx_lo, sx_hi, twice)
         || pr::ranges_apart(ey_lo, ey_hi, sy_lo, sy_hi, twice)
     {
         return true;
     }
-    // The four swept corners on one side of the point's path line, beyond 2F·L: the
-    // edge (in their convex hull at every t) never comes within the F slack of the path.
-    // The rounded corners and path end are within a few 2⁻⁵³·M of the exact ones, which
-    // SWEEP_ROUNDING·M covers.
-    if s != st {
-        let slack = 2.0 * f * l0.max(l1) + pr::SWEEP_ROUNDING * m;
-        let side = pr::line_side(s, st, pi, slack);
+    // The four swept corners certainly on one side of the point's path line, beyond the
+    // slack: the edge (in their convex hull at every t) never comes near the path. The
+    // computed corners and path ends are within SWEEP_ROUNDING·M of the exact ones.
+    if s0 != s1 {
+        let r = SWEEP_ROUNDING * m;
+        let ball = |q: Vect2| BallV { v: q, r };
+        let (o, dir) = (ball(s0), ball(s1).sub(ball(s0)));
+        let side = pr::side_beyond(o, dir, ball(ai), slack);
         return side != 0
-            && side == pr::line_side(s, st, pj, slack)
-            && side == pr::line_side(s, st, qi, slack)
-            && side == pr::line_side(s, st, qj, slack);
+            && side == pr::side_beyond(o, dir, ball(aj), slack)
+            && side == pr::side_beyond(o, dir, ball(bi), slack)
+            && side == pr::side_beyond(o, dir, ball(bj), slack);
     }
     false
+}
+
+/// The edge p_j − p_i + t·(v_j − v_i) is certainly non-zero on [t0, t1]: one coordinate
+/// has the same strict sign at both ends (it is linear in t).
+#[inline(always)]
+fn never_collapses(t0: f64, t1: f64, pi: Vect2, pj: Vect2, vi: Vect2, vj: Vect2) -> bool {
+    let e = BallV::diff(pj, pi);
+    let w = BallV::diff(vj, vi);
+    let (e0, e1) = (
+        e.add(w.scale(Ball::exact(t0))),
+        e.add(w.scale(Ball::exact(t1))),
+    );
+    let strict = |x0: Ball, x1: Ball| {
+        (positive(x0) == Tri::Yes && positive(x1) == Tri::Yes)
+            || (positive(x0.neg()) == Tri::Yes && positive(x1.neg()) == Tri::Yes)
+    };
+    strict(e0.x(), e1.x()) || strict(e0.y(), e1.y())
 }
 
 /// Paper A §II.I eq (2) edge_detect: does s + t·v meet the moving segment
 /// (p_i + t·v_i, p_j + t·v_j) for some t ∈ [0, T] (within the F slack)?
 ///
 /// edge_detect_simp(T, s − (½p_j + ½p_i), v − (½v_j + ½v_i), ½p_j − ½p_i, ½v_j − ½v_i, F):
-/// positions relative to the edge's midpoint, against the half-edge vector.
+/// positions relative to the edge's midpoint, against the half-edge vector. Certified.
 #[inline]
 #[allow(clippy::too_many_arguments)]
 pub fn edge_detect(
@@ -369,18 +597,43 @@ pub fn edge_detect(
     vj: Vect2,
     f: f64,
 ) -> bool {
-    if swept_boxes_apart(t, s, v, pi, pj, vi, vj, f) {
-        return false;
+    edge_detect_window(Ball::exact(0.0), Ball::exact(t), s, v, pi, pj, vi, vj, f).or_true()
+}
+
+/// edge_detect over the window [ta, tb] of the original motion, three-valued: the
+/// paper's edge_detect(tb − ta, s + ta·v, v, p_i + ta·v_i, …) asks for a time of
+/// [ta, tb] at which the same four quadratics of t hold.
+///
+/// ww = −((p_i − s) + (p_j − s))/2, vv = −((v_i − v) + (v_j − v))/2, aa = (p_j − p_i)/2,
+/// bb = (v_j − v_i)/2, each on balls.
+#[allow(clippy::too_many_arguments)]
+fn edge_detect_window(
+    ta: Ball,
+    tb: Ball,
+    s: Vect2,
+    v: Vect2,
+    pi: Vect2,
+    pj: Vect2,
+    vi: Vect2,
+    vj: Vect2,
+    f: f64,
+) -> Tri {
+    let (t0, t1) = (ta.lo().max(0.0), tb.hi());
+    if swept_boxes_apart(t0, t1, s, v, pi, pj, vi, vj, f) && never_collapses(t0, t1, pi, pj, vi, vj)
+    {
+        return Tri::No;
     }
-    let ww = s - (pj.scale(0.5) + pi.scale(0.5));
-    let vv = v - (vj.scale(0.5) + vi.scale(0.5));
-    let aa = pj.scale(0.5) - pi.scale(0.5);
-    let bb = vj.scale(0.5) - vi.scale(0.5);
-    edge_detect_simp(t, ww, vv, aa, bb, f)
+    let (qi, qj) = (BallV::diff(pi, s), BallV::diff(pj, s));
+    let (ui, uj) = (BallV::diff(vi, v), BallV::diff(vj, v));
+    let ww = qi.add(qj).half().neg();
+    let vv = ui.add(uj).half().neg();
+    let aa = BallV::diff(pj, pi).half();
+    let bb = BallV::diff(vj, vi).half();
+    edge_detect_simp_tri(ta, tb, ww, vv, aa, bb, f)
 }
 
 /// Paper A §II.I detect_diff_2D: s not definitely outside P, or some moving edge met by
-/// s + t·v within [0, T] (edge_detect).
+/// s + t·v within [0, T] (edge_detect). Certified: `false` only when the exact answer is.
 #[inline]
 #[allow(clippy::too_many_arguments)]
 pub fn detect_diff_2d<P, V>(t: f64, s: Vect2, v: Vect2, p: &P, vels: &V, f: f64, buff: f64) -> bool
@@ -388,60 +641,185 @@ where
     P: VertexSeq + ?Sized,
     V: VertexSeq + ?Sized,
 {
+    detect_diff_2d_tri(t, s, v, p, vels, f, buff).or_true()
+}
+
+/// Paper A §II.I detect_diff_2D, three-valued (see [`detect_diff_2d`]).
+#[inline]
+#[allow(clippy::too_many_arguments)]
+pub fn detect_diff_2d_tri<P, V>(
+    t: f64,
+    s: Vect2,
+    v: Vect2,
+    p: &P,
+    vels: &V,
+    f: f64,
+    buff: f64,
+) -> Tri
+where
+    P: VertexSeq + ?Sized,
+    V: VertexSeq + ?Sized,
+{
+    diff_window(Ball::exact(0.0), Ball::exact(t), s, v, p, vels, f, buff)
+}
+
+/// detect_diff_2D over the window [ta, tb] of the original motion (see [`same_window`]).
+#[allow(clippy::too_many_arguments)]
+fn diff_window<P, V>(
+    ta: Ball,
+    tb: Ball,
+    s: Vect2,
+    v: Vect2,
+    p: &P,
+    vels: &V,
+    f: f64,
+    buff: f64,
+) -> Tri
+where
+    P: VertexSeq + ?Sized,
+    V: VertexSeq + ?Sized,
+{
     let n = p.count();
     if n == 0 {
-        return false;
+        return Tri::No;
     }
-    if !definitely_outside(p, s, buff) {
-        return true;
-    }
-    for i in 0..n {
-        let j = p.next(i);
-        if edge_detect(
-            t,
+    let mut acc = match definitely_outside_rel(
+        &AtTime {
+            p,
+            vels,
             s,
             v,
-            p.vertex(i),
-            p.vertex(j),
-            vels.vertex(i),
-            vels.vertex(j),
-            f,
-        ) {
-            return true;
+            t: ta,
+        },
+        buff,
+    ) {
+        Tri::No => return Tri::Yes,
+        Tri::Unsure => Tri::Unsure,
+        Tri::Yes => Tri::No,
+    };
+    for i in 0..n {
+        let j = p.next(i);
+        let (pi, pj) = (p.vertex(i), p.vertex(j));
+        let (vi, vj) = (vels.vertex(i), vels.vertex(j));
+        match edge_detect_window(ta, tb, s, v, pi, pj, vi, vj, f) {
+            Tri::Yes => return Tri::Yes,
+            Tri::Unsure => acc = Tri::Unsure,
+            Tri::No => {}
         }
     }
-    false
+    acc
 }
 
 // ===================================================================== §III
 
-/// Paper A §III step 1: the exact window [a, b] ⊆ [0, T] in which the height s_z + t·v_z
-/// lies in [pmin + t·vsp, pmax + t·vsp]; `None` when there is no such time.
+/// Paper A §III step 1 with certified ends: the window [a, b] ⊆ [0, T] in which the
+/// height s_z + t·v_z lies in [pmin + t·vsp, pmax + t·vsp], as two balls, or `None`
+/// when there is certainly no such time.
 ///
 /// With w = v_z − vsp, z0 = s_z − pmin, z1 = pmax − s_z the conditions are z0 + t·w ≥ 0
-/// and z1 − t·w ≥ 0: for w = 0 both must hold at once; for w > 0,
-/// t ∈ [−z0/w, z1/w]; for w < 0, t ∈ [z1/w, −z0/w].
-#[inline]
-pub fn slab_window(t: f64, sz: f64, vz: f64, pmin: f64, pmax: f64, vsp: f64) -> Option<(f64, f64)> {
-    let w = vz - vsp;
-    let z0 = sz - pmin;
-    let z1 = pmax - sz;
-    let (a, b) = match pr::sign(w) {
-        0 => {
-            if pr::nonnegative(z0) && pr::nonnegative(z1) {
-                (0.0, t)
-            } else {
-                return None;
+/// and z1 − t·w ≥ 0. Every decision is exact: the signs of w, z0 and z1 are signs of
+/// float differences, and the comparisons of the crossing times with T are signs of
+/// sums of a few floats and products (z0 + T·w and z1 − T·w, by expansion). Only the
+/// crossing times themselves, quotients, are enclosed in balls.
+pub fn slab_window_balls(
+    t: f64,
+    sz: f64,
+    vz: f64,
+    pmin: f64,
+    pmax: f64,
+    vsp: f64,
+) -> Option<(Ball, Ball)> {
+    if pmin > pmax {
+        return None;
+    }
+    let zero = Ball::exact(0.0);
+    let whole = Ball::exact(t);
+    if vz == vsp {
+        return (sz >= pmin && sz <= pmax).then_some((zero, whole));
+    }
+    // σ·(z + σ'·T·w) by expansion: z0 + T·w = sz − pmin + T·vz − T·vsp.
+    let sign_at_t = |z: [f64; 2], sigma: f64| -> Option<i8> {
+        let mut sum = exact::Sum::default();
+        sum.add(z[0]);
+        sum.add(z[1]);
+        sum.add_prod(sigma * t, vz);
+        sum.add_prod(-sigma * t, vsp);
+        sum.sign()
+    };
+    let z0_at_t = sign_at_t([sz, -pmin], 1.0); // sign of z0 + T·w
+    let z1_at_t = sign_at_t([pmax, -sz], -1.0); // sign of z1 − T·w
+                                                // A quotient x/y of two float differences with x ≥ 0, y > 0, enclosed (exactly,
+                                                // when both are exact floats and the division is: q·y − x = 0 by two-product).
+    let quotient = |x: Ball, y: Ball| {
+        if x.r == 0.0 && y.r == 0.0 {
+            let q = x.z / y.z;
+            if exact::two_prod(q, y.z) == Some((x.z, 0.0)) {
+                return Ball::exact(q.min(t));
             }
         }
-        1 => ((-z0 / w).max(0.0), (z1 / w).min(t)),
-        _ => ((z1 / w).max(0.0), (-z0 / w).min(t)),
+        let (x_lo, x_hi, y_lo, y_hi) = (x.lo().max(0.0), x.hi(), y.lo(), y.hi());
+        if y_lo <= 0.0 || y_lo.is_nan() {
+            return Ball::from_interval(0.0, t);
+        }
+        let lo = round_down(x_lo / y_hi).max(0.0);
+        let hi = round_up(x_hi / y_lo).min(t);
+        if lo <= hi {
+            Ball::from_interval(lo, hi)
+        } else {
+            Ball::exact(lo.min(t))
+        }
     };
-    if pr::window_nonempty(a, b) {
+    // A float difference: exact when two-sum leaves no error.
+    let d = |p: f64, q: f64| {
+        let (z, e) = exact::two_sum(p, -q);
+        Ball { z, r: e.abs() }
+    };
+    if vz > vsp {
+        // Enters at −z0/w, leaves at z1/w.
+        let Some(s0) = z0_at_t else {
+            return Some((zero, whole));
+        };
+        if pmax < sz || s0 < 0 {
+            return None;
+        }
+        let a = if sz >= pmin {
+            zero
+        } else {
+            quotient(d(pmin, sz), d(vz, vsp))
+        };
+        let b = match z1_at_t {
+            Some(x) if x >= 0 => whole,
+            Some(_) => quotient(d(pmax, sz), d(vz, vsp)),
+            None => whole,
+        };
         Some((a, b))
     } else {
-        None
+        // w < 0: enters at z1/w = (sz − pmax)/(vsp − vz), leaves at −z0/w.
+        let Some(s1) = z1_at_t else {
+            return Some((zero, whole));
+        };
+        if sz < pmin || s1 < 0 {
+            return None;
+        }
+        let a = if sz <= pmax {
+            zero
+        } else {
+            quotient(d(sz, pmax), d(vsp, vz))
+        };
+        let b = match z0_at_t {
+            Some(x) if x >= 0 => whole,
+            Some(_) => quotient(d(sz, pmin), d(vsp, vz)),
+            None => whole,
+        };
+        Some((a, b))
     }
+}
+
+/// Paper A §III step 1: the window [a, b] ⊆ [0, T] of the slab, as an outer enclosure
+/// (a rounded down, b rounded up); `None` when there is certainly no such time.
+#[inline]
+pub fn slab_window(t: f64, sz: f64, vz: f64, pmin: f64, pmax: f64, vsp: f64) -> Option<(f64, f64)> {
+    slab_window_balls(t, sz, vz, pmin, pmax, vsp).map(|(a, b)| (a.lo().max(0.0), b.hi().min(t)))
 }
 
 /// Are all vertex velocities equal (a statically shaped polygon, §II.F)?
@@ -457,9 +835,7 @@ pub fn statically_shaped<V: VertexSeq + ?Sized>(vels: &V) -> bool {
 
 /// Paper A §III detect_3D: 2D detection (detect_same_2D when all vertex velocities are
 /// equal, detect_diff_2D otherwise) from s + a·v and P + a·V over the lookahead b − a,
-/// where [a, b] is the slab window of [`slab_window`].
-///
-/// When a = 0 the inputs are used unshifted, so no rounding is added.
+/// where [a, b] is the slab window of [`slab_window_balls`]. Certified.
 #[inline]
 #[allow(clippy::too_many_arguments)]
 pub fn detect_3d<P, V>(
@@ -480,51 +856,56 @@ where
     P: VertexSeq + ?Sized,
     V: VertexSeq + ?Sized,
 {
-    let Some((a, b)) = slab_window(t, sz, vz, pmin, pmax, vsp) else {
-        return false;
-    };
-    let same = statically_shaped(vels);
-    if a == 0.0 {
-        if same {
-            detect_same_2d(b, s, v, p, vels, buff)
-        } else {
-            detect_diff_2d(b, s, v, p, vels, f, buff)
-        }
-    } else {
-        let sa = s.at(v, a);
-        let n = p.count();
-        if n <= SHIFT_BUFFER {
-            // P + a·V once, on the stack (no heap), instead of on every vertex access.
-            let mut buf = [Vect2::ZERO; SHIFT_BUFFER];
-            for (i, q) in buf.iter_mut().enumerate().take(n) {
-                *q = p.vertex(i).at(vels.vertex(i), a);
-            }
-            let pa = &buf[..n];
-            if same {
-                detect_same_2d(b - a, sa, v, pa, vels, buff)
-            } else {
-                detect_diff_2d(b - a, sa, v, pa, vels, f, buff)
-            }
-        } else {
-            let pa = Moved { p, v: vels, t: a };
-            if same {
-                detect_same_2d(b - a, sa, v, &pa, vels, buff)
-            } else {
-                detect_diff_2d(b - a, sa, v, &pa, vels, f, buff)
-            }
-        }
-    }
+    detect_3d_tri(t, s, v, sz, vz, p, vels, pmin, pmax, vsp, buff, f).or_true()
 }
 
-/// Polygons up to this many vertices are shifted to the slab window's start in a stack
-/// buffer by detect_3d (1 KiB); larger ones are read through a [`Moved`] view.
-pub const SHIFT_BUFFER: usize = 64;
+/// Paper A §III detect_3D, three-valued (see [`detect_3d`]). The 2D detector runs over
+/// the window [a, b] of the original motion, never on P + a·V formed in absolute
+/// coordinates.
+#[inline]
+#[allow(clippy::too_many_arguments)]
+pub fn detect_3d_tri<P, V>(
+    t: f64,
+    s: Vect2,
+    v: Vect2,
+    sz: f64,
+    vz: f64,
+    p: &P,
+    vels: &V,
+    pmin: f64,
+    pmax: f64,
+    vsp: f64,
+    buff: f64,
+    f: f64,
+) -> Tri
+where
+    P: VertexSeq + ?Sized,
+    V: VertexSeq + ?Sized,
+{
+    let Some((a, b)) = slab_window_balls(t, sz, vz, pmin, pmax, vsp) else {
+        return Tri::No;
+    };
+    if statically_shaped(vels) {
+        same_window(a, b, s, v, p, vels, buff)
+    } else {
+        diff_window(a, b, s, v, p, vels, f, buff)
+    }
+}
 
 #[cfg(test)]
 mod tests {
     use super::*;
     fn v(x: f64, y: f64) -> Vect2 {
         Vect2::new(x, y)
+    }
+
+    /// The interval encloses [lb, ub] from outside, tightly (a few ulps).
+    fn assert_encl(i: Interval, lb: f64, ub: f64) {
+        let tight = |a: f64, b: f64| (a - b).abs() <= 1e-14 * (1.0 + b.abs());
+        assert!(
+            i.lb <= lb && i.ub >= ub && tight(i.lb, lb) && tight(i.ub, ub),
+            "{i:?} does not tightly enclose [{lb}, {ub}]"
+        );
     }
 
     /// The union of the two dot_nn_lin intervals, sampled, equals {t : f(t) ≥ 0}.
@@ -569,7 +950,7 @@ mod tests {
             v(0.0, 0.0),
             Sign::Pos,
         );
-        assert_eq!(i, Interval::new(1.0, 2.0));
+        assert_encl(i, 1.0, 2.0);
         // A = 0, B < 0: f = 1 − t ≥ 0 on [0, 1].
         let i = dot_nn_lin(
             2.0,
@@ -579,26 +960,17 @@ mod tests {
             v(0.0, 0.0),
             Sign::Neg,
         );
-        assert_eq!(i, Interval::new(0.0, 1.0));
+        assert_encl(i, 0.0, 1.0);
         // A > 0, two roots: (t − 1)(t − 3) = t² − 4t + 3 with ww = (−1,0), vv = (1,0),
         // aa = (−3,0), bb = (1,0): f = (t − 1)(t − 3).
         let (ww, vv, aa, bb) = (v(-1.0, 0.0), v(1.0, 0.0), v(-3.0, 0.0), v(1.0, 0.0));
-        assert_eq!(
-            dot_nn_lin(4.0, ww, vv, aa, bb, Sign::Neg),
-            Interval::new(0.0, 1.0)
-        );
-        assert_eq!(
-            dot_nn_lin(4.0, ww, vv, aa, bb, Sign::Pos),
-            Interval::new(3.0, 4.0)
-        );
+        assert_encl(dot_nn_lin(4.0, ww, vv, aa, bb, Sign::Neg), 0.0, 1.0);
+        assert_encl(dot_nn_lin(4.0, ww, vv, aa, bb, Sign::Pos), 3.0, 4.0);
         check_union(4.0, ww, vv, aa, bb);
         // A < 0: −(t − 1)(t − 3) ≥ 0 between the roots.
         let aa2 = v(3.0, 0.0);
         let bb2 = v(-1.0, 0.0);
-        assert_eq!(
-            dot_nn_lin(4.0, ww, vv, aa2, bb2, Sign::Pos),
-            Interval::new(1.0, 3.0)
-        );
+        assert_encl(dot_nn_lin(4.0, ww, vv, aa2, bb2, Sign::Pos), 1.0, 3.0);
         assert!(dot_nn_lin(4.0, ww, vv, aa2, bb2, Sign::Neg).is_empty());
         // A < 0, double root: −(t − 2)², ww = (−2,0), vv = (1,0), aa = (2,0), bb = (−1,0).
         let i = dot_nn_lin(
@@ -609,7 +981,9 @@ mod tests {
             v(-1.0, 0.0),
             Sign::Pos,
         );
-        assert_eq!(i, Interval::new(2.0, 2.0));
+        // A double root: its enclosure widens to about √u of the coefficients' scale
+        // (the discriminant, 0, is known to ±u·B²), around the exact time 2.
+        assert!(i.lb <= 2.0 && i.ub >= 2.0 && i.ub - i.lb < 1e-6, "{i:?}");
         // A > 0, double root: (t − 2)² ≥ 0 everywhere.
         let i = dot_nn_lin(
             4.0,
@@ -619,7 +993,7 @@ mod tests {
             v(1.0, 0.0),
             Sign::Pos,
         );
-        assert_eq!(i, Interval::new(0.0, 4.0));
+        assert_encl(i, 0.0, 4.0);
     }
 
     #[test]

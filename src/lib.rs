@@ -2,7 +2,21 @@
 //!
 //! The f64 engine of paper A (Narkawicz & Hagen): [`quad`] (§I), [`contain`] (§II.B–E),
 //! [`proximity`] (§II.G), [`detect`] (§II.H, §II.I, §III), [`well_formed`] (§II.J), every
-//! sign decision in [`predicates`]. The high-level entry point is `api::detect`.
+//! sign decision in [`predicates`], certified by the arithmetic of [`ball`]. The
+//! high-level entry point is `api::detect`.
+//!
+//! # The contract
+//! For every case with finite f64 inputs, and at every public entry point (`api::detect`,
+//! [`detect_same_2d`], [`detect_diff_2d`], [`detect_3d`] and the paper functions below
+//! them): **if paper A computed without rounding answers yes, the engine answers yes.**
+//! The exact oracle (`polyguard-oracle`) executes the PVS theorem that a point which
+//! really enters is detected by paper A, so the engine never misses a true entry.
+//!
+//! Every comparison is certified ([`ball::Tri`]): `No` and `Yes` hold for the exact
+//! inputs. A comparison that f64 cannot decide is resolved towards detection, so an
+//! engine "yes" where paper A says no happens only on an undecided comparison, within
+//! rounding of one of paper A's thresholds; `api::Detection::kind` says when that was
+//! the case (`Kind::Conservative`), and the `*_tri` forms return `Tri::Unsure`.
 #![cfg_attr(not(feature = "std"), no_std)]
 
 /// The README's examples, compiled and run as doctests.
@@ -26,9 +40,12 @@ pub mod harness;
 
 #[cfg(feature = "std")]
 pub mod api;
+pub mod ball;
 pub mod contain;
 pub mod detect;
 pub mod error;
+#[cfg(feature = "plain")]
+pub mod plain;
 pub mod polygon;
 pub mod predicates;
 pub mod proximity;
@@ -36,10 +53,11 @@ pub mod quad;
 pub mod vect2;
 pub mod well_formed;
 
+pub use ball::Tri;
 pub use contain::{definitely_outside, near_edge, num_cross, perturb};
 pub use detect::{
-    detect_3d, detect_diff_2d, detect_same_2d, dot_nn, dot_nn_lin, edge_detect, edge_detect_simp,
-    Interval, Sign,
+    detect_3d, detect_3d_tri, detect_diff_2d, detect_diff_2d_tri, detect_same_2d,
+    detect_same_2d_tri, dot_nn, dot_nn_lin, edge_detect, edge_detect_simp, Interval, Sign,
 };
 pub use proximity::segments_close;
 pub use quad::{quad_min_box_le_d, quad_min_le_d};

@@ -1,64 +1,91 @@
 //! Paper A §II.G: do two segments come within BUFF of each other?
 
-use crate::contain::near_edge;
-use crate::predicates as pr;
-use crate::quad::quad_min_box_le_d;
+use crate::ball::{BallV, Tri};
+use crate::contain::near_edge_rel;
+use crate::predicates::{self as pr, Terms};
 use crate::vect2::Vect2;
 
 /// Paper A §II.G segments_close: is segment c d closer than BUFF to segment e f?
 ///
-/// Steps 1–2 test the four ends with near_edge; step 4 asks quad_min_box_le_D whether
-/// ‖(c + r·u) − (e + t·w)‖² = u²r² + w²t² − 2(u·w)rt + 2(q·u)r − 2(q·w)t + q² is below
-/// BUFF² for some r, t ∈ [0, 1], with q = c − e, u = d − c, w = f − e.
+/// Certified: `false` only when the exact answer is false (see [`segments_close_rel`]).
 #[inline]
 pub fn segments_close(c: Vect2, d: Vect2, e: Vect2, f: Vect2, buff: f64) -> bool {
-    // Filter: bounding boxes more than BUFF apart in x or y (see predicates::ranges_apart).
-    let twice = 2.0 * buff;
-    if pr::ranges_apart(
-        c.x.min(d.x),
-        c.x.max(d.x),
-        e.x.min(f.x),
-        e.x.max(f.x),
-        twice,
-    ) || pr::ranges_apart(
-        c.y.min(d.y),
-        c.y.max(d.y),
-        e.y.min(f.y),
-        e.y.max(f.y),
-        twice,
-    ) {
-        return false;
-    }
-    // Filter: both ends of one segment beyond BUFF on one side of the other's line.
-    if lines_separate(c, d, e, f, buff) || lines_separate(e, f, c, d, buff) {
-        return false;
-    }
-    if near_edge(e, f, c, buff) || near_edge(e, f, d, buff) {
-        return true;
-    }
-    if near_edge(c, d, e, buff) || near_edge(c, d, f, buff) {
-        return true;
-    }
-    let q = c - e;
-    let u = d - c;
-    let w = f - e;
-    quad_min_box_le_d(
-        u.sq(),
-        w.sq(),
-        -2.0 * u.dot(w),
-        2.0 * q.dot(u),
-        -2.0 * q.dot(w),
-        q.sq(),
-        buff * buff,
+    segments_close_tri(c, d, e, f, buff).or_true()
+}
+
+/// Paper A §II.G segments_close, three-valued, for exact float ends.
+#[inline]
+pub fn segments_close_tri(c: Vect2, d: Vect2, e: Vect2, f: Vect2, buff: f64) -> Tri {
+    // The frame of c: every difference is rounded once, on the segments' own scale.
+    segments_close_rel(
+        BallV::ZERO,
+        BallV::diff(d, c),
+        BallV::diff(e, c),
+        BallV::diff(f, c),
+        buff,
+        || {
+            Some([
+                Terms::ZERO,
+                Terms::diff(d, c),
+                Terms::diff(e, c),
+                Terms::diff(f, c),
+            ])
+        },
     )
 }
 
-/// Are e and f both farther than `dist` from the line through c and d, on the same side?
-/// Then no point of segment e f is within `dist` of segment c d.
+/// Paper A §II.G segments_close on balls: steps 1–2 test the four ends with near_edge;
+/// step 4 (quad_min_box_le_D on ‖(c + r·u) − (e + t·w)‖², whose four sides are steps
+/// 1–2 again) adds the segments that cross ([`pr::segments_cross`]).
+///
+/// Two filters go first, each certain: bounding boxes more than BUFF apart (enlarged by
+/// the radii), and both ends of one segment beyond BUFF on one side of the other's line.
+/// `terms` gives the four points' exact terms, for the comparisons balls cannot settle.
+#[inline]
+pub fn segments_close_rel(
+    c: BallV,
+    d: BallV,
+    e: BallV,
+    f: BallV,
+    buff: f64,
+    terms: impl Fn() -> Option<[Terms; 4]>,
+) -> Tri {
+    let r = c.r.max(d.r).max(e.r.max(f.r));
+    let gap = crate::ball::up(2.0 * (buff + 2.0 * r));
+    let apart = |a1: f64, a2: f64, b1: f64, b2: f64| {
+        a1.min(a2) - b1.max(b2) > gap || b1.min(b2) - a1.max(a2) > gap
+    };
+    // fl(x − y) > gap implies x − y > gap·(1 − u) > BUFF + 4r, and the exact ends are
+    // within r of the computed ones: the exact gap exceeds BUFF.
+    if apart(c.v.x, d.v.x, e.v.x, f.v.x) || apart(c.v.y, d.v.y, e.v.y, f.v.y) {
+        return Tri::No;
+    }
+    if lines_separate(c, d, e, f, buff) || lines_separate(e, f, c, d, buff) {
+        return Tri::No;
+    }
+    let mut acc = Tri::No;
+    for (a, b, s) in [(2, 3, 0), (2, 3, 1), (0, 1, 2), (0, 1, 3)] {
+        let pts = [c, d, e, f];
+        let rel = || {
+            let t = terms()?;
+            Some((t[a].minus(&t[s])?, t[b].minus(&t[s])?))
+        };
+        match near_edge_rel(pts[a].sub(pts[s]), pts[b].sub(pts[s]), buff, rel) {
+            Tri::Yes => return Tri::Yes,
+            Tri::Unsure => acc = Tri::Unsure,
+            Tri::No => {}
+        }
+    }
+    acc.or(pr::segments_cross(c, d, e, f, terms))
+}
+
+/// Are e and f both certainly farther than `dist` from the line through c and d, on the
+/// same side? Then no point of segment e f is within `dist` of segment c d.
 #[inline(always)]
-fn lines_separate(c: Vect2, d: Vect2, e: Vect2, f: Vect2, dist: f64) -> bool {
-    let side = pr::line_side(c, d, e, dist);
-    side != 0 && side == pr::line_side(c, d, f, dist)
+fn lines_separate(c: BallV, d: BallV, e: BallV, f: BallV, dist: f64) -> bool {
+    let m = d.sub(c);
+    let side = pr::side_beyond(c, m, e, dist);
+    side != 0 && side == pr::side_beyond(c, m, f, dist)
 }
 
 #[cfg(test)]

@@ -1,5 +1,6 @@
 //! Paper A §I: does a quadratic dip below a threshold D on the unit interval / unit box?
 
+use crate::ball::{Ball, Tri};
 use crate::predicates as pr;
 
 /// Paper A §I: quad(a, b, c)(t) = a·t² + b·t + c.
@@ -19,9 +20,16 @@ pub fn quad2d(a: f64, b: f64, c: f64, d: f64, e: f64, f: f64, r: f64, t: f64) ->
 /// Step 1 tests the ends (quad(0) = c, quad(1) = a + b + c); step 2 the vertex
 /// t* = −b/(2a) when a > 0 and t* ∈ [0, 1], whose value c − b²/(4a) is below D exactly
 /// when b² − 4a(c − D) > 0 (the printed "b² 4a(c D) > 0" lost its minus signs).
+///
+/// Decided exactly for the given floats (sums and products as expansions,
+/// [`pr::quad_min_below_exact`]); `true` when an intermediate overflows or underflows.
 #[inline]
 pub fn quad_min_le_d(a: f64, b: f64, c: f64, d: f64) -> bool {
-    pr::value_below(c, d) || pr::value_below(a + b + c, d) || pr::interior_min_below(a, b, c, d)
+    let e = Ball::exact;
+    match pr::quad_min_below(e(a), e(b), e(c), e(d)) {
+        Tri::Unsure => pr::quad_min_below_exact(a, b, c, d).unwrap_or(true),
+        t => t == Tri::Yes,
+    }
 }
 
 /// Paper A §I quad_min_box_le_D: are there r, t ∈ [0, 1] with quad2D(a,…,f)(r, t) < D?
@@ -31,13 +39,61 @@ pub fn quad_min_le_d(a: f64, b: f64, c: f64, d: f64) -> bool {
 /// mx = 2bd − ce, my = 2ae − cd (solving ∂/∂r = 2ar + ct + d = 0 and
 /// ∂/∂t = 2bt + cr + e = 0). The printed "0 < my·disc < disc²" is read as the closed
 /// test, as for mx: the box is closed.
+///
+/// Decided on balls, and exactly (expansions) where they cannot tell: `false` only when
+/// the exact answer for these floats is false, `true` beyond it only on overflow or
+/// underflow. (The detectors do not call it: segments_close decides its step 4 in the
+/// geometric form of [`pr::segments_cross`].)
 #[inline]
 pub fn quad_min_box_le_d(a: f64, b: f64, c: f64, d: f64, e: f64, f: f64, dd: f64) -> bool {
-    quad_min_le_d(a, c + d, quad(b, e, f, 1.0), dd)
-        || quad_min_le_d(a, d, f, dd)
-        || quad_min_le_d(b, c + e, quad(a, d, f, 1.0), dd)
-        || quad_min_le_d(b, e, f, dd)
-        || pr::box_interior_min_below(a, b, c, d, e, f, dd)
+    quad_min_box_le_d_tri(a, b, c, d, e, f, dd).or_true()
+}
+
+/// Paper A §I quad_min_box_le_D, three-valued (see [`quad_min_box_le_d`]).
+#[allow(clippy::too_many_arguments)]
+pub fn quad_min_box_le_d_tri(a: f64, b: f64, c: f64, d: f64, e: f64, f: f64, dd: f64) -> Tri {
+    let x = Ball::exact;
+    let (a, b, c, d, e, f, dd) = (x(a), x(b), x(c), x(d), x(e), x(f), x(dd));
+    let one = |p: Ball, q: Ball, r: Ball| p.add(q).add(r); // quad(p, q, r)(1)
+    let sides = pr::quad_min_below(a, c.add(d), one(b, e, f), dd)
+        .or(pr::quad_min_below(a, d, f, dd))
+        .or(pr::quad_min_below(b, c.add(e), one(a, d, f), dd))
+        .or(pr::quad_min_below(b, e, f, dd));
+    if sides == Tri::Yes {
+        return Tri::Yes;
+    }
+    match sides.or(pr::box_interior_min_below(a, b, c, d, e, f, dd)) {
+        Tri::Unsure => box_exact(a.z, b.z, c.z, d.z, e.z, f.z, dd.z),
+        t => t,
+    }
+}
+
+/// quad_min_box_le_D decided exactly on expansions (steps 1–4 on the coefficient sums).
+#[cold]
+#[inline(never)]
+#[allow(clippy::too_many_arguments)]
+fn box_exact(a: f64, b: f64, c: f64, d: f64, e: f64, f: f64, dd: f64) -> Tri {
+    use crate::ball::exact::Sum;
+    let (sa, sb, sdd) = (Sum::of(&[a]), Sum::of(&[b]), Sum::of(&[dd]));
+    let sides = [
+        (&sa, Sum::of(&[c, d]), Sum::of(&[b, e, f])),
+        (&sa, Sum::of(&[d]), Sum::of(&[f])),
+        (&sb, Sum::of(&[c, e]), Sum::of(&[a, d, f])),
+        (&sb, Sum::of(&[e]), Sum::of(&[f])),
+    ];
+    let mut unsure = false;
+    for (p, q, r) in &sides {
+        match pr::quad_min_below_sums(p, q, r, &sdd) {
+            Some(true) => return Tri::Yes,
+            Some(false) => {}
+            None => unsure = true,
+        }
+    }
+    match pr::box_interior_min_below_exact(a, b, c, d, e, f, dd) {
+        Some(true) => Tri::Yes,
+        Some(false) if !unsure => Tri::No,
+        _ => Tri::Unsure,
+    }
 }
 
 #[cfg(test)]
@@ -86,7 +142,10 @@ mod tests {
         assert!(quad_min_box_le_d(a, b, c, d, e, f, 0.125));
         assert!(!quad_min_le_d(a, c + d, quad(b, e, f, 1.0), 0.125));
         assert!(!quad_min_le_d(a, d, f, 0.125));
-        assert!(!quad_min_box_le_d(a, b, c, d, e, f, 0.0)); // minimum exactly 0
+        // Minimum exactly 0, not below 0: a threshold the balls cannot certify; the
+        // exact fallback can.
+        assert_eq!(quad_min_box_le_d_tri(a, b, c, d, e, f, 0.0), Tri::No);
+        assert_eq!(quad_min_box_le_d_tri(a, b, c, d, e, f, -1e-9), Tri::No);
     }
 
     #[test]
@@ -94,7 +153,14 @@ mod tests {
         // (r − t)² = r² + t² − 2rt: disc = 4 − 4 = 0 (parallel segments); minimum 0 on
         // the diagonal, reached on the sides (r = t = 0).
         assert!(quad_min_box_le_d(1.0, 1.0, -2.0, 0.0, 0.0, 0.0, 1e-300));
-        // (r − t)² + 1: never below 1.
-        assert!(!quad_min_box_le_d(1.0, 1.0, -2.0, 0.0, 0.0, 1.0, 1.0));
+        // (r − t)² + 1: never below 1 (exactly 1 on the diagonal), nor below 1 − 2⁻³⁰.
+        assert_eq!(
+            quad_min_box_le_d_tri(1.0, 1.0, -2.0, 0.0, 0.0, 1.0, 1.0),
+            Tri::No
+        );
+        assert_eq!(
+            quad_min_box_le_d_tri(1.0, 1.0, -2.0, 0.0, 0.0, 1.0, 1.0 - 2f64.powi(-30)),
+            Tri::No
+        );
     }
 }

@@ -78,6 +78,10 @@ pub struct Verdict {
     pub class: Class,
     pub method: Method,
     pub engine: bool,
+    /// The engine's "yes" was taken on an undecided comparison (`api::Kind::Conservative`).
+    pub conservative: bool,
+    /// The plain f64 transcription's answer (the canary of the contract check).
+    pub plain: bool,
     pub paper: bool,
     /// Some(true) enters, Some(false) misses, None undefined.
     pub truth: Option<bool>,
@@ -126,8 +130,11 @@ pub fn compare(raw: &RawCase) -> Result<Verdict, CompareError> {
         .to_api()
         .map_err(|e| CompareError::Engine(e.to_string()))?;
     let clock = Instant::now();
-    let engine = api::detected(&case);
+    let tri = api::decide(&case);
     let t_engine = clock.elapsed();
+    let engine = tri.or_true();
+    let conservative = tri == crate::ball::Tri::Unsure;
+    let plain = api::detected_plain(&case);
     let clock = Instant::now();
     let exact = raw
         .exact::<Exact>()
@@ -156,6 +163,8 @@ pub fn compare(raw: &RawCase) -> Result<Verdict, CompareError> {
         class,
         method: case.method(),
         engine,
+        conservative,
+        plain,
         paper,
         truth,
         entry_time,

@@ -19,6 +19,41 @@ pub struct Kept {
     pub svg_file: String,
 }
 
+/// The contract check of an assurance run: paper A without rounding says yes ⇒ the
+/// engine says yes. Its canary is the plain f64 transcription, which breaks it.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Contract {
+    /// Cases where paper-exact says yes.
+    pub paper_yes: u64,
+    /// Paper-exact yes, engine no: must be 0.
+    pub violations: u64,
+    /// Engine answers taken on an undecided comparison (`kind: conservative`).
+    pub conservative: u64,
+    /// Of those, the ones where paper-exact says no (the price of certainty).
+    pub conservative_paper_no: u64,
+    /// Paper-exact yes, plain f64 transcription no: the canary, expected above 0 on
+    /// campaigns that reach long relative paths.
+    pub plain_violations: u64,
+}
+
+impl Contract {
+    fn add(&mut self, v: &Verdict) {
+        self.paper_yes += u64::from(v.paper);
+        self.violations += u64::from(v.paper && !v.engine);
+        self.conservative += u64::from(v.conservative);
+        self.conservative_paper_no += u64::from(v.conservative && !v.paper);
+        self.plain_violations += u64::from(v.paper && !v.plain);
+    }
+
+    fn absorb(&mut self, o: &Contract) {
+        self.paper_yes += o.paper_yes;
+        self.violations += o.violations;
+        self.conservative += o.conservative;
+        self.conservative_paper_no += o.conservative_paper_no;
+        self.plain_violations += o.plain_violations;
+    }
+}
+
 /// An assurance run's report (`report.json`).
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct Report {
@@ -37,6 +72,9 @@ pub struct Report {
     pub nanos: [u64; 3],
     /// Wall-clock seconds of the run (summed over shards when merged).
     pub wall_seconds: f64,
+    /// The contract check (absent from reports written before it existed).
+    #[serde(default)]
+    pub contract: Contract,
     pub kept: Vec<Kept>,
 }
 
@@ -59,6 +97,7 @@ impl Report {
         for k in 0..3 {
             self.nanos[k] = self.nanos[k].saturating_add(v.nanos[k]);
         }
+        self.contract.add(v);
     }
 
     /// Totals per class.
@@ -72,9 +111,9 @@ impl Report {
         t
     }
 
-    /// Any missed detection or far false alarm?
+    /// Any missed detection, far false alarm, or breach of the contract?
     pub fn has_failures(&self) -> bool {
-        self.totals().iter().any(|(c, n)| c.is_failure() && *n > 0)
+        self.contract.violations > 0 || self.totals().iter().any(|(c, n)| c.is_failure() && *n > 0)
     }
 
     /// Joins another shard's report of the same seed: every count adds exactly.
@@ -111,6 +150,7 @@ impl Report {
             self.nanos[k] = self.nanos[k].saturating_add(other.nanos[k]);
         }
         self.wall_seconds += other.wall_seconds;
+        self.contract.absorb(&other.contract);
         self.kept.extend(other.kept.iter().cloned());
     }
 
@@ -159,6 +199,25 @@ impl Report {
             self.wall_seconds,
             if self.wall_seconds > 0.0 { self.cases as f64 / self.wall_seconds } else { 0.0 },
         ));
+        let c = &self.contract;
+        let pct = |n: u64| {
+            if self.cases == 0 {
+                0.0
+            } else {
+                100.0 * n as f64 / self.cases as f64
+            }
+        };
+        out.push_str(&format!(
+            "contract paper-exact => engine: {} violations in {} paper-exact yes (canary, plain f64 transcription: {} violations)\n",
+            c.violations, c.paper_yes, c.plain_violations
+        ));
+        out.push_str(&format!(
+            "conservative answers (an undecided comparison): {} ({:.4}%), {} of them where paper-exact says no ({:.4}%)\n",
+            c.conservative,
+            pct(c.conservative),
+            c.conservative_paper_no,
+            pct(c.conservative_paper_no)
+        ));
         out
     }
 }
@@ -173,6 +232,8 @@ mod tests {
             class,
             method,
             engine: true,
+            conservative: false,
+            plain: true,
             paper: true,
             truth: Some(true),
             entry_time: None,

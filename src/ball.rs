@@ -34,28 +34,23 @@ pub const ETA: f64 = f64::MIN_POSITIVE / 8_796_093_022_208.0; // 2⁻¹⁰²² /
 pub const UP_OPS: u32 = 14;
 
 /// An upper bound of the exact value of a non-negative quantity whose computed value is
-/// `x` after at most [`UP_OPS`] roundings (see the module doc). NaN and ∞ stay; an exact
-/// 0 stays 0 (a sum of non-negative terms is 0 only when every term is).
+/// `x` after at most [`UP_OPS`] roundings (see the module doc). NaN and ∞ stay.
+///
+/// Branch-free on purpose (it is on every hot path): the ETA floor is added even to an
+/// exact 0. Exact zeros that matter (a coefficient that is exactly 0) are settled by
+/// the exact fallbacks, or tolerated by the interval enclosures, which treat a
+/// coefficient in [−ETA, ETA] as the tiny parabola it might be.
 #[inline(always)]
 pub fn up(x: f64) -> f64 {
-    if x == 0.0 {
-        0.0
-    } else {
-        x * (1.0 + 16.0 * U) + ETA
-    }
+    x * (1.0 + 16.0 * U) + ETA
 }
 
-/// The rounding error bound of a product p = fl(x·y): 2u·|p| in the normal range, plus
-/// [`ETA`] when the product may have underflowed (|p| below the normal range while both
-/// factors are non-zero). Additions need no such term: they are exact when subnormal.
+/// The rounding error bound of a product p = fl(x·y): 2u·|p| in the normal range; the
+/// at most 2⁻¹⁰⁷⁵ of an underflowing product is in the [`ETA`] that [`up`] adds.
+/// Additions need no such term: they are exact when subnormal.
 #[inline(always)]
-fn prod_err(p: f64, x: f64, y: f64) -> f64 {
-    let e = 2.0 * U * p.abs();
-    if p.abs() < f64::MIN_POSITIVE && x != 0.0 && y != 0.0 {
-        e + ETA
-    } else {
-        e
-    }
+fn prod_err(p: f64, _x: f64, _y: f64) -> f64 {
+    2.0 * U * p.abs()
 }
 
 /// A float ≥ the exact result of the one operation that produced `x` (round toward +∞).

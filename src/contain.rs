@@ -217,9 +217,22 @@ pub fn definitely_outside_rel<R: RelPoly + ?Sized>(p: &R, buff: f64) -> Tri {
     let mut acc = Tri::Yes;
     let mut odd = false;
     let mut parity_known = true;
+    // Each vertex is carried to the next edge; vertex 0 is computed afresh for the last
+    // edge rather than kept alive across the loop (see beyond_bounding_box).
+    let mut b = if n > 0 { p.rel(0) } else { BallV::ZERO };
     for i in 0..n {
         let j = p.next(i);
-        let (a, b) = (p.rel(i), p.rel(j));
+        let a = b;
+        b = p.rel(j);
+        // Both ends certainly beyond BUFF on the same side of the ray's line x = 0, or
+        // both certainly below y = −BUFF: neither end is perturbed (§II.B), the edge
+        // neither straddles the ray nor crosses it above the point (§II.D), and the
+        // point is farther than BUFF from its bounding box (§II.C): nothing to count.
+        let m = crate::ball::up(buff + a.r.max(b.r));
+        if (a.v.x > m && b.v.x > m) || (a.v.x < -m && b.v.x < -m) || (a.v.y < -m && b.v.y < -m)
+        {
+            continue;
+        }
         let (ta, tb) = (|| p.terms(i), || p.terms(j));
         match near_edge_rel(a, b, buff, || Some((ta()?, tb()?))) {
             Tri::Yes => return Tri::No,

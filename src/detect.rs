@@ -336,10 +336,19 @@ fn ball_set(a: Ball, b: Ball, c: Ball, lo: f64, hi: f64, outer: bool) -> [Interv
     }
 }
 
-/// Coefficients (t², t, 1) of (ww + t·vv)·(aa + t·bb) as balls.
+/// Coefficients (t², t, 1) of (ww + t·vv)·(aa + t·bb) as balls. `vv0`, `bb0`: vv, bb
+/// are known to be exactly 0 (from the inputs), so the terms they multiply are exact 0s.
 #[inline(always)]
-fn dot_coeffs(ww: BallV, vv: BallV, aa: BallV, bb: BallV) -> [Ball; 3] {
-    [vv.dot(bb), ww.dot(bb).add(vv.dot(aa)), ww.dot(aa)]
+fn dot_coeffs(ww: BallV, vv: BallV, aa: BallV, bb: BallV, vv0: bool, bb0: bool) -> [Ball; 3] {
+    let zero = Ball::exact(0.0);
+    let a = if vv0 || bb0 { zero } else { vv.dot(bb) };
+    let b = match (vv0, bb0) {
+        (true, true) => zero,
+        (true, false) => ww.dot(bb),
+        (false, true) => vv.dot(aa),
+        (false, false) => ww.dot(bb).add(vv.dot(aa)),
+    };
+    [a, b, ww.dot(aa)]
 }
 
 /// Paper A §II.I dot_nn_lin (omitted in the paper, derived in [`float_set`]): one of the
@@ -349,7 +358,8 @@ fn dot_coeffs(ww: BallV, vv: BallV, aa: BallV, bb: BallV) -> [Ball; 3] {
 #[inline]
 pub fn dot_nn_lin(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2, sigma: Sign) -> Interval {
     let e = BallV::exact;
-    let [a, b, c] = dot_coeffs(e(ww), e(vv), e(aa), e(bb));
+    let (vv0, bb0) = (vv == Vect2::ZERO, bb == Vect2::ZERO);
+    let [a, b, c] = dot_coeffs(e(ww), e(vv), e(aa), e(bb), vv0, bb0);
     let set = ball_set(a, b, c, 0.0, t, true);
     match sigma {
         Sign::Neg => set[0],
@@ -379,7 +389,9 @@ pub fn dot_nn(
     let s2 = Ball::exact(sigma2.value());
     let w2 = e(aa).scale(k).add(e(ww).scale(s2));
     let v2 = e(bb).scale(k).add(e(vv).scale(s2));
-    let [a, b, c] = dot_coeffs(w2, v2, e(aa), e(bb));
+    let bb0 = bb == Vect2::ZERO;
+    let v20 = bb0 && vv == Vect2::ZERO;
+    let [a, b, c] = dot_coeffs(w2, v2, e(aa), e(bb), v20, bb0);
     let set = ball_set(a, b, c, 0.0, t, true);
     match sigma1 {
         Sign::Neg => set[0],
@@ -416,6 +428,7 @@ fn some_choice_meets(sets: &[[Interval; 2]; 4]) -> bool {
 #[inline]
 pub fn edge_detect_simp(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2, f: f64) -> bool {
     let e = BallV::exact;
+    let bb0 = bb == Vect2::ZERO;
     edge_detect_simp_tri(
         Ball::exact(0.0),
         Ball::exact(t),
@@ -423,6 +436,7 @@ pub fn edge_detect_simp(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2, f: f
         e(vv),
         e(aa),
         e(bb),
+        bb0,
         f,
     )
     .or_true()
@@ -437,7 +451,8 @@ pub fn edge_detect_simp(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2, f: f
 /// formed once. Each quadratic's set is enclosed from outside and from inside
 /// ([`ball_set`]): no meeting of the outer sets is a certain `No`, a meeting of the inner
 /// sets a certain `Yes`, anything between is `Unsure`. The perpendicular conditions go
-/// first: they fail for most edges.
+/// first: they fail for most edges. `bb0` says that bb is exactly 0 (a translating
+/// edge, v_i = v_j): the t² coefficients are then exact zeros, and the quadratics lines.
 #[allow(clippy::too_many_arguments)]
 pub fn edge_detect_simp_tri(
     ta: Ball,
@@ -446,6 +461,7 @@ pub fn edge_detect_simp_tri(
     vv: BallV,
     aa: BallV,
     bb: BallV,
+    bb0: bool,
     f: f64,
 ) -> Tri {
     let (one_f, err) = exact::two_sum(1.0, f);
@@ -454,11 +470,28 @@ pub fn edge_detect_simp_tri(
         r: err.abs(),
     };
     let kf = Ball::exact(f);
-    let g = [bb.sq(), aa.dot(bb).scale(2.0), aa.sq()];
-    let x = dot_coeffs(ww, vv, aa, bb);
-    let y = [vv.cross(bb), ww.cross(bb).add(vv.cross(aa)), ww.cross(aa)];
+    let zero = Ball::exact(0.0);
+    let (g, x, y) = if bb0 {
+        (
+            [zero, zero, aa.sq()],
+            [zero, vv.dot(aa), ww.dot(aa)],
+            [zero, vv.cross(aa), ww.cross(aa)],
+        )
+    } else {
+        (
+            [bb.sq(), aa.dot(bb).scale(2.0), aa.sq()],
+            dot_coeffs(ww, vv, aa, bb, false, false),
+            [vv.cross(bb), ww.cross(bb).add(vv.cross(aa)), ww.cross(aa)],
+        )
+    };
     let quad = |k: Ball, h: &[Ball; 3], sigma: f64, outer: bool, lo: f64, hi: f64| {
-        let c = |i: usize| k.mul(g[i]).add(h[i].scale(sigma));
+        let c = |i: usize| {
+            if bb0 && i == 0 {
+                zero
+            } else {
+                k.mul(g[i]).add(h[i].scale(sigma))
+            }
+        };
         ball_set(c(0), c(1), c(2), lo, hi, outer)
     };
     let (lo, hi) = (ta.lo().max(0.0), tb.hi());
@@ -629,7 +662,7 @@ fn edge_detect_window(
     let vv = ui.add(uj).half().neg();
     let aa = BallV::diff(pj, pi).half();
     let bb = BallV::diff(vj, vi).half();
-    edge_detect_simp_tri(ta, tb, ww, vv, aa, bb, f)
+    edge_detect_simp_tri(ta, tb, ww, vv, aa, bb, vi == vj, f)
 }
 
 /// Paper A §II.I detect_diff_2D: s not definitely outside P, or some moving edge met by

@@ -33,6 +33,18 @@ pub const ETA: f64 = f64::MIN_POSITIVE / 8_796_093_022_208.0; // 2⁻¹⁰²² /
 /// brings it back above 1 + u − O(u²) > 1.
 pub const UP_OPS: u32 = 14;
 
+/// max of two non-negative magnitudes by one comparison. A NaN argument may be dropped:
+/// that is harmless, because a NaN radius only ever comes with a NaN or infinite value,
+/// which every decision already treats as undecided.
+#[inline(always)]
+pub fn mx(a: f64, b: f64) -> f64 {
+    if a > b {
+        a
+    } else {
+        b
+    }
+}
+
 /// An upper bound of the exact value of a non-negative quantity whose computed value is
 /// `x` after at most [`UP_OPS`] roundings (see the module doc). NaN and ∞ stay.
 ///
@@ -140,11 +152,19 @@ impl Tri {
     }
 }
 
+/// Is the radius finite? Every ball operation adds 2u·|value| to the radius, so an
+/// infinite or NaN value always comes with an infinite or NaN radius: this one
+/// comparison is the finiteness guard of the decisions.
+#[inline(always)]
+fn bounded(b: Ball) -> bool {
+    b.r < f64::INFINITY
+}
+
 /// The sign of a ball: `Some(±1)` when |z| > r, `Some(0)` when the ball is exactly 0
 /// (z = r = 0), `None` when undecided or not finite.
 #[inline(always)]
 pub fn sign_of(b: Ball) -> Option<i8> {
-    if !b.is_finite() {
+    if !bounded(b) {
         None
     } else if b.z > b.r {
         Some(1)
@@ -160,7 +180,7 @@ pub fn sign_of(b: Ball) -> Option<i8> {
 /// exact > 0, certified.
 #[inline(always)]
 pub fn positive(b: Ball) -> Tri {
-    if !b.is_finite() {
+    if !bounded(b) {
         Tri::Unsure
     } else if b.z > b.r {
         Tri::Yes
@@ -174,7 +194,7 @@ pub fn positive(b: Ball) -> Tri {
 /// exact ≥ 0, certified.
 #[inline(always)]
 pub fn nonnegative(b: Ball) -> Tri {
-    if !b.is_finite() {
+    if !bounded(b) {
         Tri::Unsure
     } else if b.z >= b.r {
         Tri::Yes
@@ -322,7 +342,7 @@ impl Ball {
         let z = 0.5 * lo + 0.5 * hi;
         Ball {
             z,
-            r: up((hi - z).max(z - lo)),
+            r: up(mx(hi - z, z - lo)),
         }
     }
 
@@ -359,7 +379,7 @@ impl BallV {
         let v = p - q;
         BallV {
             v,
-            r: 2.0 * U * v.x.abs().max(v.y.abs()),
+            r: 2.0 * U * mx(v.x.abs(), v.y.abs()),
         }
     }
 
@@ -387,7 +407,7 @@ impl BallV {
         let v = self.v + o.v;
         BallV {
             v,
-            r: up(self.r + o.r + 2.0 * U * v.x.abs().max(v.y.abs())),
+            r: up(self.r + o.r + 2.0 * U * mx(v.x.abs(), v.y.abs())),
         }
     }
 
@@ -397,7 +417,7 @@ impl BallV {
         let v = self.v - o.v;
         BallV {
             v,
-            r: up(self.r + o.r + 2.0 * U * v.x.abs().max(v.y.abs())),
+            r: up(self.r + o.r + 2.0 * U * mx(v.x.abs(), v.y.abs())),
         }
     }
 
@@ -405,8 +425,8 @@ impl BallV {
     #[inline(always)]
     pub fn scale(self, k: Ball) -> BallV {
         let v = self.v.scale(k.z);
-        let m = self.v.x.abs().max(self.v.y.abs());
-        let e = prod_err(v.x, self.v.x, k.z).max(prod_err(v.y, self.v.y, k.z));
+        let m = mx(self.v.x.abs(), self.v.y.abs());
+        let e = mx(prod_err(v.x, self.v.x, k.z), prod_err(v.y, self.v.y, k.z));
         BallV {
             v,
             r: up(k.z.abs() * self.r + m * k.r + self.r * k.r + e),
@@ -417,7 +437,7 @@ impl BallV {
     #[inline(always)]
     pub fn half(self) -> BallV {
         let v = self.v.scale(0.5);
-        let e = prod_err(v.x, self.v.x, 0.5).max(prod_err(v.y, self.v.y, 0.5));
+        let e = mx(prod_err(v.x, self.v.x, 0.5), prod_err(v.y, self.v.y, 0.5));
         BallV {
             v,
             r: up(0.5 * self.r + e),

@@ -5,7 +5,7 @@
 //! serves P at time 0, P + T·V at the lookahead and P + a·V at a slab window's start,
 //! and every radius is on the scale of the encounter rather than of the coordinates.
 
-use crate::ball::{BallV, Tri};
+use crate::ball::{mx, BallV, Tri};
 use crate::polygon::VertexSeq;
 use crate::predicates::{self as pr, Terms};
 use crate::vect2::Vect2;
@@ -105,6 +105,65 @@ impl<P: VertexSeq + ?Sized, V: VertexSeq + ?Sized> RelPoly for AtTime<'_, P, V> 
     }
 }
 
+/// A statically shaped P + t·V (all v_i = v_0) seen from s + t·v: P seen from s,
+/// shifted by one vector t·(v_0 − v), formed once (with its exact terms when t is an
+/// exact float).
+#[derive(Clone, Copy, Debug)]
+pub struct Shifted<'a, P: ?Sized> {
+    pub p: &'a P,
+    pub s: Vect2,
+    /// t·(v_0 − v) as a ball.
+    pub shift: BallV,
+    /// t·v_0 − t·v as four exact terms per coordinate (products split exactly).
+    pub shift_terms: Option<Terms>,
+}
+
+impl<'a, P: VertexSeq + ?Sized> Shifted<'a, P> {
+    /// P + t·V seen from s + t·v, for V all equal to v0.
+    pub fn new(p: &'a P, s: Vect2, v: Vect2, v0: Vect2, t: crate::ball::Ball) -> Self {
+        let shift = BallV::diff(v0, v).scale(t);
+        let shift_terms = if t.r == 0.0 {
+            Terms::ZERO
+                .plus_scaled(t.z, v0)
+                .and_then(|x| x.plus_scaled(-t.z, v))
+        } else {
+            None
+        };
+        Shifted {
+            p,
+            s,
+            shift,
+            shift_terms,
+        }
+    }
+}
+
+impl<P: VertexSeq + ?Sized> RelPoly for Shifted<'_, P> {
+    #[inline(always)]
+    fn count(&self) -> usize {
+        self.p.count()
+    }
+    #[inline(always)]
+    fn rel(&self, i: usize) -> BallV {
+        BallV::diff(self.p.vertex(i), self.s).add(self.shift)
+    }
+    #[inline(always)]
+    fn terms(&self, i: usize) -> Option<Terms> {
+        let t = Terms::diff(self.p.vertex(i), self.s);
+        let sh = self.shift_terms?;
+        let mut out = t;
+        for k in 0..sh.n {
+            if out.n >= 7 {
+                return None;
+            }
+            out.x[out.n] = sh.x[k];
+            out.y[out.n] = sh.y[k];
+            out.n += 1;
+        }
+        Some(out)
+    }
+}
+
 /// Paper A §II.C near_edge in the point's frame: is the origin closer than BUFF to the
 /// segment a b? Step 1 tests the ends, step 2 the interior minimum of the quadratic
 /// (see [`pr::interior_closer_than`] for why that is quad_min_le_D's step 2).
@@ -121,11 +180,13 @@ pub fn near_edge_rel(
     buff: f64,
     terms: impl Fn() -> Option<(Terms, Terms)>,
 ) -> Tri {
-    let t = crate::ball::up(buff + a.r.max(b.r));
-    if a.v.x.min(b.v.x) > t
-        || a.v.x.max(b.v.x) < -t
-        || a.v.y.min(b.v.y) > t
-        || a.v.y.max(b.v.y) < -t
+    // A non-finite coordinate comes with an infinite radius (see ball::bounded), so t is
+    // then +∞ and nothing is filtered.
+    let t = crate::ball::up(buff + mx(a.r, b.r));
+    if (a.v.x > t && b.v.x > t)
+        || (a.v.x < -t && b.v.x < -t)
+        || (a.v.y > t && b.v.y > t)
+        || (a.v.y < -t && b.v.y < -t)
     {
         return Tri::No;
     }
@@ -211,14 +272,14 @@ pub fn definitely_outside<P: VertexSeq + ?Sized>(p: &P, s: Vect2, buff: f64) -> 
 /// leaves P*_BUFF unknown, and the answer can then only be `No` or `Unsure`.
 pub fn definitely_outside_rel<R: RelPoly + ?Sized>(p: &R, buff: f64) -> Tri {
     let n = p.count();
-    if beyond_bounding_box(p, buff) {
-        return Tri::Yes;
-    }
     let mut acc = Tri::Yes;
     let mut odd = false;
     let mut parity_known = true;
     // Each vertex is carried to the next edge; vertex 0 is computed afresh for the last
-    // edge rather than kept alive across the loop (see beyond_bounding_box).
+    // edge rather than kept alive across the loop: at opt-level 3 LLVM 22 (rustc 1.95,
+    // 1.97-nightly) once reloaded a vertex 0 kept in a vector register across a
+    // vectorised loop from a 64-bit spill slot, its y read as 0 on the last edge
+    // (tests/regressions/*.jsonl).
     let mut b = if n > 0 { p.rel(0) } else { BallV::ZERO };
     for i in 0..n {
         let j = p.next(i);
@@ -228,7 +289,8 @@ pub fn definitely_outside_rel<R: RelPoly + ?Sized>(p: &R, buff: f64) -> Tri {
         // both certainly below y = −BUFF: neither end is perturbed (§II.B), the edge
         // neither straddles the ray nor crosses it above the point (§II.D), and the
         // point is farther than BUFF from its bounding box (§II.C): nothing to count.
-        let m = crate::ball::up(buff + a.r.max(b.r));
+        // (A point outside the polygon's bounding box skips every edge this way.)
+        let m = crate::ball::up(buff + mx(a.r, b.r));
         if (a.v.x > m && b.v.x > m) || (a.v.x < -m && b.v.x < -m) || (a.v.y < -m && b.v.y < -m)
         {
             continue;
@@ -282,39 +344,6 @@ pub fn definitely_outside_rel<R: RelPoly + ?Sized>(p: &R, buff: f64) -> Tri {
 #[inline(always)]
 fn shift_left(q: BallV, buff: f64) -> BallV {
     q.sub(BallV::exact(Vect2::new(2.0 * buff, 0.0)))
-}
-
-/// Filter in front of definitely_outside: every vertex is certainly more than 2·BUFF
-/// beyond the point on one side, in x or in y (the exact answer is then "outside").
-///
-/// Then the point is farther than BUFF from every edge of P; no vertex is perturbed
-/// except, when the point is below P, ones whose y stays above it by more than 2·BUFF,
-/// so P*_BUFF's edges are far too; and the upward ray misses P or crosses the whole
-/// closed curve, an even number of times. "Certainly": the vertex's computed coordinate
-/// clears up(2·BUFF + r), an upper bound of 2·BUFF plus its radius.
-///
-/// Written as a loop that leaves as soon as no side is left, not as a min/max reduction
-/// over the vertices followed by the edge loop: at opt-level 3 LLVM 22 (rustc 1.95,
-/// 1.97-nightly) vectorised that reduction and reloaded vertex 0, kept in a vector
-/// register across it, from a 64-bit spill slot, so its y read as 0 on the last edge
-/// (tests/regressions/*.jsonl). Nothing here stays alive across the loop but BUFF.
-#[inline]
-fn beyond_bounding_box<R: RelPoly + ?Sized>(p: &R, buff: f64) -> bool {
-    let twice = 2.0 * buff;
-    // Bits: all left, all right, all below, all above.
-    let mut sides = 0b1111u8;
-    for i in 0..p.count() {
-        let q = p.rel(i);
-        let m = crate::ball::up(twice + q.r);
-        sides &= u8::from(q.v.x < -m)
-            | u8::from(q.v.x > m) << 1
-            | u8::from(q.v.y < -m) << 2
-            | u8::from(q.v.y > m) << 3;
-        if sides == 0 {
-            return false;
-        }
-    }
-    sides != 0 && p.count() > 0
 }
 
 #[cfg(test)]

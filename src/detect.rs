@@ -10,10 +10,10 @@
 //! is taken on differences from the point (see [`crate::contain::RelPoly`]), so the
 //! error bounds are on the scale of the encounter, whatever the offsets.
 
-use crate::ball::{exact, nonnegative, positive, round_down, round_up, Ball, BallV, Tri};
-use crate::contain::{definitely_outside_rel, AtTime};
+use crate::ball::{self, exact, nonnegative, positive, round_down, round_up, Ball, BallV, Tri};
+use crate::contain::{definitely_outside_rel, AtTime, Shifted};
 use crate::polygon::VertexSeq;
-use crate::predicates::{self as pr, Terms, SWEEP_ROUNDING};
+use crate::predicates::{self as pr, PathLine, Terms, SWEEP_ROUNDING};
 use crate::proximity::segments_close_rel;
 use crate::vect2::{sqrt, Vect2};
 
@@ -63,8 +63,17 @@ where
         return Tri::No;
     }
     let mut acc = Tri::No;
+    let v0 = vels.vertex(0);
+    let stat = statically_shaped(vels);
     for t in [ta, tb] {
-        match definitely_outside_rel(&AtTime { p, vels, s, v, t }, buff) {
+        let outside = if t.is_exact_zero() {
+            definitely_outside_rel(&AtTime { p, vels, s, v, t }, buff)
+        } else if stat {
+            definitely_outside_rel(&Shifted::new(p, s, v, v0, t), buff)
+        } else {
+            definitely_outside_rel(&AtTime { p, vels, s, v, t }, buff)
+        };
+        match outside {
             Tri::No => return Tri::Yes,
             Tri::Unsure => acc = Tri::Unsure,
             Tri::Yes => {}
@@ -73,16 +82,26 @@ where
     // The relative path of the common velocity v_0, and each vertex's side of its line
     // (computed once, carried to the next edge): an edge with both ends certainly beyond
     // BUFF on one side is not close, the same certain test segments_close starts with.
-    let v0 = vels.vertex(0);
+    // From a window starting at 0 the line passes through the point exactly: a static
+    // bound suffices ([`PathLine`]); otherwise the side is taken on balls.
     let rel0 = BallV::diff(v, v0);
     let (pa0, pb0) = (rel0.scale(ta), rel0.scale(tb));
     let m0 = pb0.sub(pa0);
-    let mut side_i = pr::side_beyond(pa0, m0, BallV::diff(p.vertex(0), s), buff);
+    let line = PathLine::new(m0, buff);
+    let from_zero = ta.is_exact_zero();
+    let side = |q: BallV| {
+        if from_zero {
+            line.side(q.v)
+        } else {
+            pr::side_beyond(pa0, m0, q, buff)
+        }
+    };
+    let mut side_i = side(BallV::diff(p.vertex(0), s));
     for i in 0..n {
         let j = p.next(i);
         let (vi, vj) = (vels.vertex(i), vels.vertex(j));
         let qj = BallV::diff(p.vertex(j), s);
-        let side_j = pr::side_beyond(pa0, m0, qj, buff);
+        let side_j = side(qj);
         let same_i = pr::same_velocity(vi, v0);
         let skip = side_i != 0 && side_i == side_j && same_i && pr::same_velocity(vj, vi);
         side_i = side_j;
@@ -529,6 +548,59 @@ pub fn edge_detect_simp_tri(
     }
 }
 
+/// min for the filters' corner coordinates, which are never NaN (finite inputs: a sum
+/// p + t·v overflows to ±∞ at worst), so the NaN handling of f64::min is not needed.
+#[inline(always)]
+fn fmin(a: f64, b: f64) -> f64 {
+    if a < b {
+        a
+    } else {
+        b
+    }
+}
+
+/// max, as [`fmin`].
+#[inline(always)]
+fn fmax(a: f64, b: f64) -> f64 {
+    if a > b {
+        a
+    } else {
+        b
+    }
+}
+
+/// The point's part of the swept-box filter over a window [t0, t1], shared by every
+/// edge of the polygon: its positions at t0 and t1, their box, the largest magnitude
+/// involved, and its path line.
+#[derive(Clone, Copy, Debug)]
+struct Sweep {
+    t0: f64,
+    t1: f64,
+    lo: Vect2,
+    hi: Vect2,
+    m: f64,
+    s0: Vect2,
+    dir: Vect2,
+    moving: bool,
+}
+
+impl Sweep {
+    fn new(t0: f64, t1: f64, s: Vect2, v: Vect2) -> Sweep {
+        let (s0, s1) = (s.at(v, t0), s.at(v, t1));
+        let big = |q: Vect2| fmax(q.x.abs(), q.y.abs());
+        Sweep {
+            t0,
+            t1,
+            lo: Vect2::new(fmin(s0.x, s1.x), fmin(s0.y, s1.y)),
+            hi: Vect2::new(fmax(s0.x, s1.x), fmax(s0.y, s1.y)),
+            m: fmax(fmax(big(s0), big(s1)), big(s)),
+            s0,
+            dir: s1 - s0,
+            moving: s0 != s1,
+        }
+    }
+}
+
 /// Filter in front of edge_detect: over the window [t0, t1], the boxes swept by the point
 /// and by the edge are farther apart than any time edge_detect_simp could accept.
 ///
@@ -537,56 +609,47 @@ pub fn edge_detect_simp_tri(
 /// A time accepted by edge_detect_simp puts the point within (1 + F)·‖aa‖ of the midpoint
 /// along the edge and F·‖aa‖ across it, so within 2F·‖aa(t)‖ ≤ 2F·L of the edge, with
 /// L = max of ‖edge‖₁ at t0 and t1 (a norm is convex in t; ‖·‖₁ ≥ ‖·‖₂). The margin is
-/// doubled for [`pr::ranges_apart`] and widened by [`SWEEP_ROUNDING`]·M, M bounding every
-/// magnitude (the inputs included, so that p + t·v's cancellation is covered).
+/// doubled for [`pr::ranges_apart`] and widened by [`SWEEP_ROUNDING`]·M: forming p + t·v
+/// and a gap takes ≤ 4 roundings of ≤ u·(|p| + |t·v|) ≤ 3u·M each when M bounds |p| and
+/// |p + t·v| (|t·v| ≤ |p| + |p + t·v|), and 2⁻⁴⁰ leaves a factor 2⁹ to spare.
 ///
 /// The one exception is an edge that collapses to a point at some t of the window:
 /// inequalities (1) read 0 ≤ 0 there, so paper A accepts wherever the point is. The
 /// filter therefore only rejects an edge that provably never collapses
 /// ([`never_collapses`]).
 #[inline(always)]
-#[allow(clippy::too_many_arguments)]
-fn swept_boxes_apart(
-    t0: f64,
-    t1: f64,
-    s: Vect2,
-    v: Vect2,
-    pi: Vect2,
-    pj: Vect2,
-    vi: Vect2,
-    vj: Vect2,
-    f: f64,
-) -> bool {
+fn swept_boxes_apart(w: &Sweep, pi: Vect2, pj: Vect2, vi: Vect2, vj: Vect2, f: f64) -> bool {
+    let (t0, t1) = (w.t0, w.t1);
     let (ai, bi, aj, bj) = (pi.at(vi, t0), pi.at(vi, t1), pj.at(vj, t0), pj.at(vj, t1));
-    let (s0, s1) = (s.at(v, t0), s.at(v, t1));
     let l0 = (aj.x - ai.x).abs() + (aj.y - ai.y).abs();
     let l1 = (bj.x - bi.x).abs() + (bj.y - bi.y).abs();
-    let ex_lo = ai.x.min(aj.x).min(bi.x.min(bj.x));
-    let ex_hi = ai.x.max(aj.x).max(bi.x.max(bj.x));
-    let ey_lo = ai.y.min(aj.y).min(bi.y.min(bj.y));
-    let ey_hi = ai.y.max(aj.y).max(bi.y.max(bj.y));
-    let (sx_lo, sx_hi) = (s0.x.min(s1.x), s0.x.max(s1.x));
-    let (sy_lo, sy_hi) = (s0.y.min(s1.y), s0.y.max(s1.y));
-    let big = |q: Vect2| q.x.abs().max(q.y.abs());
-    let m = big(ai)
-        .max(big(bi))
-        .max(big(aj).max(big(bj)))
-        .max(big(s0).max(big(s1)))
-        .max(big(pi).max(big(pj)).max(big(s)));
-    let slack = 2.0 * f * l0.max(l1) + SWEEP_ROUNDING * m;
+    let ex_lo = fmin(fmin(ai.x, aj.x), fmin(bi.x, bj.x));
+    let ex_hi = fmax(fmax(ai.x, aj.x), fmax(bi.x, bj.x));
+    let ey_lo = fmin(fmin(ai.y, aj.y), fmin(bi.y, bj.y));
+    let ey_hi = fmax(fmax(ai.y, aj.y), fmax(bi.y, bj.y));
+    let big = |q: Vect2| fmax(q.x.abs(), q.y.abs());
+    let mut m = fmax(
+        w.m,
+        fmax(fmax(ex_lo.abs(), ex_hi.abs()), fmax(ey_lo.abs(), ey_hi.abs())),
+    );
+    if t0 != 0.0 {
+        m = fmax(m, fmax(big(pi), big(pj)));
+    }
+    let slack = 2.0 * f * fmax(l0, l1) + SWEEP_ROUNDING * m;
     let twice = 2.0 * slack;
-    if pr::ranges_apart(ex_lo, ex_hi, sx_lo, sx_hi, twice)
-        || pr::ranges_apart(ey_lo, ey_hi, sy_lo, sy_hi, twice)
+    if pr::ranges_apart(ex_lo, ex_hi, w.lo.x, w.hi.x, twice)
+        || pr::ranges_apart(ey_lo, ey_hi, w.lo.y, w.hi.y, twice)
     {
         return true;
     }
     // The four swept corners certainly on one side of the point's path line, beyond the
     // slack: the edge (in their convex hull at every t) never comes near the path. The
     // computed corners and path ends are within SWEEP_ROUNDING·M of the exact ones.
-    if s0 != s1 {
+    if w.moving {
         let r = SWEEP_ROUNDING * m;
+        let o = BallV { v: w.s0, r };
+        let dir = BallV { v: w.dir, r: 2.0 * r };
         let ball = |q: Vect2| BallV { v: q, r };
-        let (o, dir) = (ball(s0), ball(s1).sub(ball(s0)));
         let side = pr::side_beyond(o, dir, ball(ai), slack);
         return side != 0
             && side == pr::side_beyond(o, dir, ball(aj), slack)
@@ -596,16 +659,31 @@ fn swept_boxes_apart(
     false
 }
 
-/// The edge p_j − p_i + t·(v_j − v_i) is certainly non-zero on [t0, t1]: one coordinate
-/// has the same strict sign at both ends (it is linear in t).
+/// The edge e(t) = p_j − p_i + t·(v_j − v_i) is certainly non-zero on [t0, t1]:
+/// e(0) × (v_j − v_i) ≠ 0 (then e(t) is never parallel to, let alone equal to, 0 — the
+/// oracle's test), or ‖e(0)‖∞ > t1·‖v_j − v_i‖∞ (it cannot shrink to 0 in time), or one
+/// coordinate has the same strict sign at t0 and t1 (it is linear in t).
+///
+/// The first two are decided on rounded differences with a static bound: each
+/// difference has relative error ≤ u, so the cross product's computed value is within
+/// 6u·(|e_x·w_y| + |e_y·w_x|) of the exact one (8u leaves room for its own roundings),
+/// and the norms within 2u relative (8u on the comparison).
 #[inline(always)]
 fn never_collapses(t0: f64, t1: f64, pi: Vect2, pj: Vect2, vi: Vect2, vj: Vect2) -> bool {
+    let e = pj - pi;
+    let w = vj - vi;
+    let (p, q) = (e.x * w.y, e.y * w.x);
+    let c = p - q;
+    if c.abs() > 8.0 * ball::U * (p.abs() + q.abs()) + ball::ETA {
+        return true;
+    }
+    let big = |x: Vect2| fmax(x.x.abs(), x.y.abs());
+    if big(e) * (1.0 - 8.0 * ball::U) > t1 * big(w) * (1.0 + 8.0 * ball::U) + ball::ETA {
+        return true;
+    }
     let e = BallV::diff(pj, pi);
     let w = BallV::diff(vj, vi);
-    let (e0, e1) = (
-        e.add(w.scale(Ball::exact(t0))),
-        e.add(w.scale(Ball::exact(t1))),
-    );
+    let (e0, e1) = (e.add(w.scale(Ball::exact(t0))), e.add(w.scale(Ball::exact(t1))));
     let strict = |x0: Ball, x1: Ball| {
         (positive(x0) == Tri::Yes && positive(x1) == Tri::Yes)
             || (positive(x0.neg()) == Tri::Yes && positive(x1.neg()) == Tri::Yes)
@@ -630,7 +708,20 @@ pub fn edge_detect(
     vj: Vect2,
     f: f64,
 ) -> bool {
-    edge_detect_window(Ball::exact(0.0), Ball::exact(t), s, v, pi, pj, vi, vj, f).or_true()
+    let sweep = Sweep::new(0.0, t, s, v);
+    edge_detect_window(
+        &sweep,
+        Ball::exact(0.0),
+        Ball::exact(t),
+        s,
+        v,
+        pi,
+        pj,
+        vi,
+        vj,
+        f,
+    )
+    .or_true()
 }
 
 /// edge_detect over the window [ta, tb] of the original motion, three-valued: the
@@ -641,6 +732,7 @@ pub fn edge_detect(
 /// bb = (v_j − v_i)/2, each on balls.
 #[allow(clippy::too_many_arguments)]
 fn edge_detect_window(
+    sweep: &Sweep,
     ta: Ball,
     tb: Ball,
     s: Vect2,
@@ -651,8 +743,8 @@ fn edge_detect_window(
     vj: Vect2,
     f: f64,
 ) -> Tri {
-    let (t0, t1) = (ta.lo().max(0.0), tb.hi());
-    if swept_boxes_apart(t0, t1, s, v, pi, pj, vi, vj, f) && never_collapses(t0, t1, pi, pj, vi, vj)
+    if swept_boxes_apart(sweep, pi, pj, vi, vj, f)
+        && never_collapses(sweep.t0, sweep.t1, pi, pj, vi, vj)
     {
         return Tri::No;
     }
@@ -730,11 +822,12 @@ where
         Tri::Unsure => Tri::Unsure,
         Tri::Yes => Tri::No,
     };
+    let sweep = Sweep::new(ta.lo().max(0.0), tb.hi(), s, v);
     for i in 0..n {
         let j = p.next(i);
         let (pi, pj) = (p.vertex(i), p.vertex(j));
         let (vi, vj) = (vels.vertex(i), vels.vertex(j));
-        match edge_detect_window(ta, tb, s, v, pi, pj, vi, vj, f) {
+        match edge_detect_window(&sweep, ta, tb, s, v, pi, pj, vi, vj, f) {
             Tri::Yes => return Tri::Yes,
             Tri::Unsure => acc = Tri::Unsure,
             Tri::No => {}

@@ -245,6 +245,11 @@ fn interior_exact(t: Option<(Terms, Terms)>, buff: f64) -> Tri {
 /// q_y ≥ −BUFF and |q_x| ≤ BUFF. Undecided ball tests fall back to the exact terms.
 #[inline]
 pub fn perturbs(q: BallV, terms: impl Fn() -> Option<Terms>, buff: f64) -> Tri {
+    // Fast path: |q_x| certainly above BUFF (the computed |q_x| exceeds an upper bound of
+    // BUFF + r, and the exact one is within r of it). Most vertices leave here.
+    if q.v.x.abs() > crate::ball::up(buff + q.r) {
+        return Tri::No;
+    }
     let b = Ball::exact(buff);
     // sign·coord + BUFF ≥ 0, exactly.
     let exact_ge0 = |coord: usize, sign: f64| -> Tri {
@@ -458,6 +463,57 @@ pub fn side_beyond(a: BallV, m: BallV, q: BallV, dist: f64) -> i8 {
         -1
     } else {
         0
+    }
+}
+
+/// The relative path's line through the point (the origin) along d, and a static error
+/// bound for the side of a vertex q = fl(p − s) (one rounding per coordinate): the
+/// filter of detect_same_2D step 3, per vertex.
+///
+/// With d̃ known to ±r_d and q̃ to ±2u·|q̃_c| per coordinate, the exact d × q differs
+/// from fl(d̃_x·q̃_y − d̃_y·q̃_x) by at most r_d·‖q̃‖₁·(1 + 4u) + 2u(|l| + |r|) (the
+/// error of q̃) + 2u(|l| + |r|)(1 + 2u) (the two products and the difference), l and r
+/// the two products; 6u(|l| + |r|) covers the last two. A side is reported when the
+/// computed cross product clears that bound plus dist·(‖d̃‖₁ + 2r_d) ≥ dist·‖d‖₂, all
+/// rounded up by [`crate::ball::up`].
+#[derive(Clone, Copy, Debug)]
+pub struct PathLine {
+    d: Vect2,
+    rd: f64,
+    need: f64,
+}
+
+impl PathLine {
+    /// The line through the origin along the ball d; sides beyond `dist`.
+    #[inline]
+    pub fn new(d: BallV, dist: f64) -> PathLine {
+        let n1 = d.v.x.abs() + d.v.y.abs();
+        PathLine {
+            d: d.v,
+            rd: d.r * (1.0 + 4.0 * crate::ball::U),
+            need: crate::ball::up(dist * (n1 + 2.0 * d.r)),
+        }
+    }
+
+    /// +1 when q = fl(p − s) is certainly beyond `dist` on the left of the line, −1 on
+    /// the right, 0 when not certain (then the caller tests the edge in full).
+    #[inline(always)]
+    pub fn side(&self, q: Vect2) -> i8 {
+        let l = self.d.x * q.y;
+        let r = self.d.y * q.x;
+        let c = l - r;
+        let bound = crate::ball::up(
+            6.0 * crate::ball::U * (l.abs() + r.abs())
+                + self.rd * (q.x.abs() + q.y.abs())
+                + self.need,
+        );
+        if c > bound {
+            1
+        } else if -c > bound {
+            -1
+        } else {
+            0
+        }
     }
 }
 

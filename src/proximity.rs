@@ -1,6 +1,6 @@
 //! Paper A §II.G: do two segments come within BUFF of each other?
 
-use crate::ball::{BallV, Tri};
+use crate::ball::{mx, BallV, Tri};
 use crate::contain::near_edge_rel;
 use crate::predicates::{self as pr, Terms};
 use crate::vect2::Vect2;
@@ -50,10 +50,13 @@ pub fn segments_close_rel(
     buff: f64,
     terms: impl Fn() -> Option<[Terms; 4]>,
 ) -> Tri {
-    let r = c.r.max(d.r).max(e.r.max(f.r));
+    let r = mx(mx(c.r, d.r), mx(e.r, f.r));
     let gap = crate::ball::up(2.0 * (buff + 2.0 * r));
     let apart = |a1: f64, a2: f64, b1: f64, b2: f64| {
-        a1.min(a2) - b1.max(b2) > gap || b1.min(b2) - a1.max(a2) > gap
+        // Ends are compared pairwise (no min/max): a non-finite end has an infinite
+        // radius, so gap is then +∞ and nothing is filtered.
+        (a1 - b1 > gap && a1 - b2 > gap && a2 - b1 > gap && a2 - b2 > gap)
+            || (b1 - a1 > gap && b1 - a2 > gap && b2 - a1 > gap && b2 - a2 > gap)
     };
     // fl(x − y) > gap implies x − y > gap·(1 − u) > BUFF + 4r, and the exact ends are
     // within r of the computed ones: the exact gap exceeds BUFF.

@@ -54,6 +54,18 @@ pub trait RelPoly {
     fn rel(&self, i: usize) -> BallV;
     /// Vertex i relative to the point as exact sums of floats, if it is one.
     fn terms(&self, i: usize) -> Option<Terms>;
+    /// The computed value of [`RelPoly::rel`] alone.
+    #[inline(always)]
+    fn at(&self, i: usize) -> Vect2 {
+        self.rel(i).v
+    }
+    /// A margin M, the same for every vertex, such that a coordinate computed by
+    /// [`RelPoly::at`] above M (below −M) is certainly above BUFF (below −BUFF) exactly;
+    /// `None` when the error is not bounded that way.
+    #[inline(always)]
+    fn skip_margin(&self, _buff: f64) -> Option<f64> {
+        None
+    }
     /// The vertex after i, cyclically.
     #[inline(always)]
     fn next(&self, i: usize) -> usize {
@@ -91,6 +103,24 @@ impl<P: VertexSeq + ?Sized, V: VertexSeq + ?Sized> RelPoly for AtTime<'_, P, V> 
         let w = BallV::diff(self.vels.vertex(i), self.v);
         d.add(w.scale(self.t))
     }
+    /// At t = 0 the only error is the rounding of p_i − s, relative: |x̃ − x| ≤ u|x|, so
+    /// x̃ > BUFF·(1 + 4u) (itself rounded at most down to BUFF(1 + 3u)) gives x > BUFF.
+    #[inline(always)]
+    fn skip_margin(&self, buff: f64) -> Option<f64> {
+        if self.t.z == 0.0 && self.t.r == 0.0 {
+            Some(buff * (1.0 + 4.0 * crate::ball::U))
+        } else {
+            None
+        }
+    }
+    #[inline(always)]
+    fn at(&self, i: usize) -> Vect2 {
+        if self.t.z == 0.0 && self.t.r == 0.0 {
+            self.p.vertex(i) - self.s
+        } else {
+            self.rel(i).v
+        }
+    }
     #[inline(always)]
     fn terms(&self, i: usize) -> Option<Terms> {
         let t = Terms::diff(self.p.vertex(i), self.s);
@@ -106,34 +136,34 @@ impl<P: VertexSeq + ?Sized, V: VertexSeq + ?Sized> RelPoly for AtTime<'_, P, V> 
 }
 
 /// A statically shaped P + t·V (all v_i = v_0) seen from s + t·v: P seen from s,
-/// shifted by one vector t·(v_0 − v), formed once (with its exact terms when t is an
-/// exact float).
+/// shifted by one vector t·(v_0 − v), formed once (its exact terms only on demand).
 #[derive(Clone, Copy, Debug)]
 pub struct Shifted<'a, P: ?Sized> {
     pub p: &'a P,
     pub s: Vect2,
+    pub v: Vect2,
+    pub v0: Vect2,
+    pub t: crate::ball::Ball,
     /// t·(v_0 − v) as a ball.
     pub shift: BallV,
-    /// t·v_0 − t·v as four exact terms per coordinate (products split exactly).
-    pub shift_terms: Option<Terms>,
+    /// A constant error margin for [`RelPoly::skip_margin`]: 3u·‖shift‖∞ + r_shift.
+    slack: f64,
 }
 
 impl<'a, P: VertexSeq + ?Sized> Shifted<'a, P> {
     /// P + t·V seen from s + t·v, for V all equal to v0.
     pub fn new(p: &'a P, s: Vect2, v: Vect2, v0: Vect2, t: crate::ball::Ball) -> Self {
         let shift = BallV::diff(v0, v).scale(t);
-        let shift_terms = if t.r == 0.0 {
-            Terms::ZERO
-                .plus_scaled(t.z, v0)
-                .and_then(|x| x.plus_scaled(-t.z, v))
-        } else {
-            None
-        };
+        let slack =
+            crate::ball::up(3.0 * crate::ball::U * mx(shift.v.x.abs(), shift.v.y.abs()) + shift.r);
         Shifted {
             p,
             s,
+            v,
+            v0,
+            t,
             shift,
-            shift_terms,
+            slack,
         }
     }
 }
@@ -148,19 +178,25 @@ impl<P: VertexSeq + ?Sized> RelPoly for Shifted<'_, P> {
         BallV::diff(self.p.vertex(i), self.s).add(self.shift)
     }
     #[inline(always)]
+    fn at(&self, i: usize) -> Vect2 {
+        (self.p.vertex(i) - self.s) + self.shift.v
+    }
+    /// x̃ = fl(fl(p − s) + sh̃): |x̃ − x| ≤ u|x̃|(1 + 2u) (the sum) + 2u|fl(p − s)| (the
+    /// difference, |fl(p − s)| ≤ (|x̃| + |sh̃|)(1 + 2u)) + r_sh ≤ 5u|x̃| + C with
+    /// C = 3u·|sh̃| + r_sh. So x̃ > (BUFF + C)/(1 − 5u) gives x > BUFF; [`crate::ball::up`]
+    /// of BUFF + C is larger than that.
+    #[inline(always)]
+    fn skip_margin(&self, buff: f64) -> Option<f64> {
+        Some(crate::ball::up(buff + self.slack))
+    }
+    #[inline(always)]
     fn terms(&self, i: usize) -> Option<Terms> {
-        let t = Terms::diff(self.p.vertex(i), self.s);
-        let sh = self.shift_terms?;
-        let mut out = t;
-        for k in 0..sh.n {
-            if out.n >= 7 {
-                return None;
-            }
-            out.x[out.n] = sh.x[k];
-            out.y[out.n] = sh.y[k];
-            out.n += 1;
+        if self.t.r != 0.0 {
+            return None;
         }
-        Some(out)
+        Terms::diff(self.p.vertex(i), self.s)
+            .plus_scaled(self.t.z, self.v0)?
+            .plus_scaled(-self.t.z, self.v)
     }
 }
 
@@ -280,19 +316,28 @@ pub fn definitely_outside_rel<R: RelPoly + ?Sized>(p: &R, buff: f64) -> Tri {
     // 1.97-nightly) once reloaded a vertex 0 kept in a vector register across a
     // vectorised loop from a 64-bit spill slot, its y read as 0 on the last edge
     // (tests/regressions/*.jsonl).
-    let mut b = if n > 0 { p.rel(0) } else { BallV::ZERO };
+    let fixed = p.skip_margin(buff);
+    let mut bv = if n > 0 { p.at(0) } else { Vect2::ZERO };
     for i in 0..n {
         let j = p.next(i);
-        let a = b;
-        b = p.rel(j);
+        let av = bv;
+        bv = p.at(j);
         // Both ends certainly beyond BUFF on the same side of the ray's line x = 0, or
         // both certainly below y = −BUFF: neither end is perturbed (§II.B), the edge
         // neither straddles the ray nor crosses it above the point (§II.D), and the
         // point is farther than BUFF from its bounding box (§II.C): nothing to count.
-        // (A point outside the polygon's bounding box skips every edge this way.)
-        let m = crate::ball::up(buff + mx(a.r, b.r));
-        if (a.v.x > m && b.v.x > m) || (a.v.x < -m && b.v.x < -m) || (a.v.y < -m && b.v.y < -m)
-        {
+        // (A point outside the polygon's bounding box skips every edge this way.) With a
+        // margin common to all vertices the test needs no radius; otherwise the two
+        // radii give it.
+        let skip =
+            |m: f64| (av.x > m && bv.x > m) || (av.x < -m && bv.x < -m) || (av.y < -m && bv.y < -m);
+        if let Some(m) = fixed {
+            if skip(m) {
+                continue;
+            }
+        }
+        let (a, b) = (p.rel(i), p.rel(j));
+        if fixed.is_none() && skip(crate::ball::up(buff + mx(a.r, b.r))) {
             continue;
         }
         let (ta, tb) = (|| p.terms(i), || p.terms(j));

@@ -286,6 +286,9 @@ fn float_set(a: f64, b: f64, c: f64, lo: f64, hi: f64, outer: bool) -> [Interval
     if !(a.is_finite() && b.is_finite() && c.is_finite()) {
         return if outer { [none, full] } else { [none, none] };
     }
+    if outer && below_zero_on(a, b, c, lo, hi) {
+        return [none, none];
+    }
     if a == 0.0 {
         if b == 0.0 {
             return if c >= 0.0 { [none, full] } else { [none, none] };
@@ -337,6 +340,26 @@ fn float_set(a: f64, b: f64, c: f64, lo: f64, hi: f64, outer: bool) -> [Interval
             [none, Interval::new(lo.max(r1.1), hi.min(r2.0))]
         }
     }
+}
+
+/// Is a·t² + b·t + c certainly negative on all of [lo, hi] (0 ≤ lo ≤ hi)? Then its set
+/// is empty, and no root is needed. Decided when the quadratic takes its maximum over the
+/// window at an end: always for a ≥ 0 (convex or linear), and for a < 0 when its slope
+/// 2a·t + b is certainly ≤ 0 at lo (falling all along) or ≥ 0 at hi (rising all along).
+/// Each evaluation is rounded upward step by step ([`round_up`]; t ≥ 0 keeps every step
+/// monotone), so a negative result is certain.
+#[inline(always)]
+fn below_zero_on(a: f64, b: f64, c: f64, lo: f64, hi: f64) -> bool {
+    let g_up = |t: f64| round_up(round_up(round_up(round_up(a * t) + b) * t) + c);
+    if !(g_up(lo) < 0.0 && g_up(hi) < 0.0) {
+        return false;
+    }
+    if a >= 0.0 {
+        return true;
+    }
+    let slope_up = |t: f64| round_up(round_up(2.0 * a * t) + b);
+    let slope_down = |t: f64| round_down(round_down(2.0 * a * t) + b);
+    slope_up(lo) <= 0.0 || slope_down(hi) >= 0.0
 }
 
 /// The set {t ∈ [lo, hi] : A·t² + B·t + C ≥ 0} for ball coefficients (lo ≥ 0):
@@ -503,12 +526,17 @@ pub fn edge_detect_simp_tri(
             [vv.cross(bb), ww.cross(bb).add(vv.cross(aa)), ww.cross(aa)],
         )
     };
-    let quad = |k: Ball, h: &[Ball; 3], sigma: f64, outer: bool, lo: f64, hi: f64| {
+    // K·‖a‖² for both K, formed once; each quadratic adds ±X to it.
+    let kg = |k: Ball| [k.mul(g[0]), k.mul(g[1]), k.mul(g[2])];
+    let (kg1, kgf) = (kg(k1), kg(kf));
+    let quad = |kgk: &[Ball; 3], h: &[Ball; 3], sigma: f64, outer: bool, lo: f64, hi: f64| {
         let c = |i: usize| {
             if bb0 && i == 0 {
                 zero
+            } else if sigma > 0.0 {
+                kgk[i].add(h[i])
             } else {
-                k.mul(g[i]).add(h[i].scale(sigma))
+                kgk[i].sub(h[i])
             }
         };
         ball_set(c(0), c(1), c(2), lo, hi, outer)
@@ -518,28 +546,28 @@ pub fn edge_detect_simp_tri(
         return Tri::Unsure;
     }
     let empty = |s: &[Interval; 2]| s[0].is_empty() && s[1].is_empty();
-    let p_pos = quad(kf, &y, 1.0, true, lo, hi);
+    let p_pos = quad(&kgf, &y, 1.0, true, lo, hi);
     if empty(&p_pos) {
         return Tri::No;
     }
-    let p_neg = quad(kf, &y, -1.0, true, lo, hi);
+    let p_neg = quad(&kgf, &y, -1.0, true, lo, hi);
     if empty(&p_neg) {
         return Tri::No;
     }
-    let a_pos = quad(k1, &x, 1.0, true, lo, hi);
+    let a_pos = quad(&kg1, &x, 1.0, true, lo, hi);
     if empty(&a_pos) {
         return Tri::No;
     }
-    let a_neg = quad(k1, &x, -1.0, true, lo, hi);
+    let a_neg = quad(&kg1, &x, -1.0, true, lo, hi);
     if !some_choice_meets(&[p_pos, p_neg, a_pos, a_neg]) {
         return Tri::No;
     }
     let (lo, hi) = (ta.hi().max(0.0), tb.lo());
     let inner = [
-        quad(kf, &y, 1.0, false, lo, hi),
-        quad(kf, &y, -1.0, false, lo, hi),
-        quad(k1, &x, 1.0, false, lo, hi),
-        quad(k1, &x, -1.0, false, lo, hi),
+        quad(&kgf, &y, 1.0, false, lo, hi),
+        quad(&kgf, &y, -1.0, false, lo, hi),
+        quad(&kg1, &x, 1.0, false, lo, hi),
+        quad(&kg1, &x, -1.0, false, lo, hi),
     ];
     if some_choice_meets(&inner) {
         Tri::Yes
@@ -630,7 +658,10 @@ fn swept_boxes_apart(w: &Sweep, pi: Vect2, pj: Vect2, vi: Vect2, vj: Vect2, f: f
     let big = |q: Vect2| fmax(q.x.abs(), q.y.abs());
     let mut m = fmax(
         w.m,
-        fmax(fmax(ex_lo.abs(), ex_hi.abs()), fmax(ey_lo.abs(), ey_hi.abs())),
+        fmax(
+            fmax(ex_lo.abs(), ex_hi.abs()),
+            fmax(ey_lo.abs(), ey_hi.abs()),
+        ),
     );
     if t0 != 0.0 {
         m = fmax(m, fmax(big(pi), big(pj)));
@@ -646,15 +677,12 @@ fn swept_boxes_apart(w: &Sweep, pi: Vect2, pj: Vect2, vi: Vect2, vj: Vect2, f: f
     // slack: the edge (in their convex hull at every t) never comes near the path. The
     // computed corners and path ends are within SWEEP_ROUNDING·M of the exact ones.
     if w.moving {
-        let r = SWEEP_ROUNDING * m;
-        let o = BallV { v: w.s0, r };
-        let dir = BallV { v: w.dir, r: 2.0 * r };
-        let ball = |q: Vect2| BallV { v: q, r };
-        let side = pr::side_beyond(o, dir, ball(ai), slack);
+        let line = pr::FuzzyLine::new(w.s0, w.dir, SWEEP_ROUNDING * m, slack);
+        let side = line.side(ai);
         return side != 0
-            && side == pr::side_beyond(o, dir, ball(aj), slack)
-            && side == pr::side_beyond(o, dir, ball(bi), slack)
-            && side == pr::side_beyond(o, dir, ball(bj), slack);
+            && side == line.side(aj)
+            && side == line.side(bi)
+            && side == line.side(bj);
     }
     false
 }
@@ -683,7 +711,10 @@ fn never_collapses(t0: f64, t1: f64, pi: Vect2, pj: Vect2, vi: Vect2, vj: Vect2)
     }
     let e = BallV::diff(pj, pi);
     let w = BallV::diff(vj, vi);
-    let (e0, e1) = (e.add(w.scale(Ball::exact(t0))), e.add(w.scale(Ball::exact(t1))));
+    let (e0, e1) = (
+        e.add(w.scale(Ball::exact(t0))),
+        e.add(w.scale(Ball::exact(t1))),
+    );
     let strict = |x0: Ball, x1: Ball| {
         (positive(x0) == Tri::Yes && positive(x1) == Tri::Yes)
             || (positive(x0.neg()) == Tri::Yes && positive(x1.neg()) == Tri::Yes)

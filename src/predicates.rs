@@ -490,23 +490,77 @@ impl PathLine {
         let n1 = d.v.x.abs() + d.v.y.abs();
         PathLine {
             d: d.v,
-            rd: d.r * (1.0 + 4.0 * crate::ball::U),
-            need: crate::ball::up(dist * (n1 + 2.0 * d.r)),
+            rd: crate::ball::up(d.r * (1.0 + 4.0 * crate::ball::U)),
+            need: crate::ball::up(crate::ball::up(dist * (n1 + 2.0 * d.r))),
         }
     }
 
     /// +1 when q = fl(p − s) is certainly beyond `dist` on the left of the line, −1 on
     /// the right, 0 when not certain (then the caller tests the edge in full).
+    ///
+    /// The bound K1·(|l| + |r|) + K2·‖q̃‖₁ + need has its constants raised by (1 + 16u)
+    /// beforehand, which covers the four roundings of its own evaluation (all terms are
+    /// non-negative) and keeps the dependency chain short.
     #[inline(always)]
     pub fn side(&self, q: Vect2) -> i8 {
+        const K1: f64 = 6.0 * crate::ball::U * (1.0 + 16.0 * crate::ball::U);
         let l = self.d.x * q.y;
         let r = self.d.y * q.x;
         let c = l - r;
-        let bound = crate::ball::up(
-            6.0 * crate::ball::U * (l.abs() + r.abs())
-                + self.rd * (q.x.abs() + q.y.abs())
-                + self.need,
-        );
+        let bound = K1 * (l.abs() + r.abs()) + self.rd * (q.x.abs() + q.y.abs()) + self.need;
+        if c > bound {
+            1
+        } else if -c > bound {
+            -1
+        } else {
+            0
+        }
+    }
+}
+
+/// The side of points q with respect to the line through o along d, where o, q and the
+/// line's far end are each known to within ρ per coordinate (the swept-box filter of
+/// edge_detect: rounded corners p + t·v and path ends s + t·v), with a static bound.
+///
+/// d̃ = fl(s1 − s0) is within r_d = 2ρ + 2u‖d̃‖∞ of the exact direction, and
+/// w̃ = fl(q − o) within 2ρ + 2u‖w̃‖∞ ≤ 2ρ + 2u‖w̃‖₁ of q − o. The exact d × w then
+/// differs from fl(d̃_x·w̃_y − d̃_y·w̃_x) by at most 6u(|l| + |r|) (the products and the
+/// difference, l and r the products) + (r_d + 2u‖d̃‖₁)·‖w̃‖₁ + 2ρ‖d̃‖₁ + 2r_d(2ρ + 2u‖w̃‖₁),
+/// and |d × w| > dist·(‖d̃‖₁ + 2r_d) puts q farther than dist from the line. The
+/// constants are raised by (1 + 16u) beforehand to cover the bound's own roundings.
+#[derive(Clone, Copy, Debug)]
+pub struct FuzzyLine {
+    o: Vect2,
+    d: Vect2,
+    k2: f64,
+    c: f64,
+}
+
+impl FuzzyLine {
+    /// The line through o along d (o and the far end each within ρ); sides beyond `dist`.
+    #[inline(always)]
+    pub fn new(o: Vect2, d: Vect2, rho: f64, dist: f64) -> FuzzyLine {
+        use crate::ball::{mx, up, U};
+        let n1 = d.x.abs() + d.y.abs();
+        let rd = up(2.0 * rho + 2.0 * U * mx(d.x.abs(), d.y.abs()));
+        FuzzyLine {
+            o,
+            d,
+            k2: up(up(rd + 2.0 * U * n1) + 4.0 * U * rd),
+            c: up(up(dist * (n1 + 2.0 * rd)) + 2.0 * rho * n1 + 4.0 * rd * rho),
+        }
+    }
+
+    /// +1 when q is certainly beyond `dist` on the left of the line, −1 on the right,
+    /// 0 when not certain.
+    #[inline(always)]
+    pub fn side(&self, q: Vect2) -> i8 {
+        const K1: f64 = 6.0 * crate::ball::U * (1.0 + 16.0 * crate::ball::U);
+        let w = q - self.o;
+        let l = self.d.x * w.y;
+        let r = self.d.y * w.x;
+        let c = l - r;
+        let bound = K1 * (l.abs() + r.abs()) + self.k2 * (w.x.abs() + w.y.abs()) + self.c;
         if c > bound {
             1
         } else if -c > bound {

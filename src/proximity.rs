@@ -66,7 +66,13 @@ pub fn segments_close_rel(
     if lines_separate(c, d, e, f, buff) || lines_separate(e, f, c, d, buff) {
         return Tri::No;
     }
-    let mut acc = Tri::No;
+    // Step 4's crossing first: the disjunction is the same, and a path through an edge
+    // (the common hit) is settled by four orientations instead of four near_edge tests.
+    let cross = pr::segments_cross(c, d, e, f, &terms);
+    if cross == Tri::Yes {
+        return Tri::Yes;
+    }
+    let mut acc = cross;
     for (a, b, s) in [(2, 3, 0), (2, 3, 1), (0, 1, 2), (0, 1, 3)] {
         let pts = [c, d, e, f];
         let rel = || {
@@ -79,7 +85,7 @@ pub fn segments_close_rel(
             Tri::No => {}
         }
     }
-    acc.or(pr::segments_cross(c, d, e, f, terms))
+    acc
 }
 
 /// Are e and f both certainly farther than `dist` from the line through c and d, on the

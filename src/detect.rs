@@ -215,47 +215,63 @@ impl Interval {
 /// Roots without cancellation: q = −(b + sgn(b)·√disc)/2, roots q/a and c/q. Each
 /// operation is rounded outward ([`round_down`], [`round_up`]), so the enclosures hold.
 fn root_bounds(a: f64, b: f64, c: f64, disc: Ball) -> Option<[(f64, f64); 2]> {
+    // Outward rounding that keeps an overflowed quotient a sound bound: +∞ as a lower
+    // bound reads "above f64::MAX", −∞ as an upper bound "below −f64::MAX".
+    let rd = |x: f64| {
+        if x == f64::INFINITY {
+            f64::MAX
+        } else {
+            round_down(x)
+        }
+    };
+    let ru = |x: f64| {
+        if x == f64::NEG_INFINITY {
+            -f64::MAX
+        } else {
+            round_up(x)
+        }
+    };
+    // A bound that overflowed is still a bound on the right side once clamped: a lower
+    // bound of +∞ means "above f64::MAX", an upper bound of −∞ "below −f64::MAX".
     let order = |x1: (f64, f64), x2: (f64, f64)| {
-        if !(x1.0.is_finite() && x1.1.is_finite() && x2.0.is_finite() && x2.1.is_finite()) {
+        let lo = |x: f64| if x == f64::INFINITY { f64::MAX } else { x };
+        let hi = |x: f64| if x == f64::NEG_INFINITY { -f64::MAX } else { x };
+        let (x1, x2) = ((lo(x1.0), hi(x1.1)), (lo(x2.0), hi(x2.1)));
+        if x1.0.is_nan() || x1.1.is_nan() || x2.0.is_nan() || x2.1.is_nan() {
             return None;
         }
         Some([
-            (x1.0.min(x2.0), x1.1.min(x2.1)),
-            (x1.0.max(x2.0), x1.1.max(x2.1)),
+            (fmin(x1.0, x2.0), fmin(x1.1, x2.1)),
+            (fmax(x1.0, x2.0), fmax(x1.1, x2.1)),
         ])
     };
     if c == 0.0 {
         // Roots 0 and −b/a, the second exact when b = 0.
         let r = -b / a;
-        let x2 = if b == 0.0 {
-            (0.0, 0.0)
-        } else {
-            (round_down(r), round_up(r))
-        };
+        let x2 = if b == 0.0 { (0.0, 0.0) } else { (rd(r), ru(r)) };
         return order((0.0, 0.0), x2);
+    }
+    if b != 0.0 && disc.z > 4.0 * disc.r {
+        if let Some(r) = root_bounds_simple(a, b, c, disc) {
+            return Some(r);
+        }
     }
     let d_lo = disc.lo().max(0.0);
     let d_hi = disc.hi();
-    let s_lo = round_down(sqrt(d_lo)).max(0.0);
-    let s_hi = round_up(sqrt(d_hi));
+    let s_lo = rd(sqrt(d_lo)).max(0.0);
+    let s_hi = ru(sqrt(d_hi));
     let (q_lo, q_hi) = if b >= 0.0 {
-        (
-            round_down(-0.5 * round_up(b + s_hi)),
-            round_up(-0.5 * round_down(b + s_lo)),
-        )
+        (rd(-0.5 * ru(b + s_hi)), ru(-0.5 * rd(b + s_lo)))
     } else {
-        (
-            round_down(0.5 * round_down(s_lo - b)),
-            round_up(0.5 * round_up(s_hi - b)),
-        )
+        (rd(0.5 * rd(s_lo - b)), ru(0.5 * ru(s_hi - b)))
     };
     if !(q_lo.is_finite() && q_hi.is_finite()) {
         return None;
     }
     let x1 = if a > 0.0 {
-        (round_down(q_lo / a), round_up(q_hi / a))
+        (rd(q_lo / a), ru(q_hi / a))
     } else {
-        (round_down(q_hi / a), round_up(q_lo / a))
+        (rd(q_hi / a), ru(q_lo / a))
     };
     if b == 0.0 {
         // Roots ±√disc/(2a): symmetric about 0.
@@ -265,7 +281,39 @@ fn root_bounds(a: f64, b: f64, c: f64, disc: Ball) -> Option<[(f64, f64); 2]> {
         return None;
     }
     let (y1, y2) = (c / q_lo, c / q_hi);
-    order(x1, (round_down(y1.min(y2)), round_up(y1.max(y2))))
+    order(x1, (rd(y1.min(y2)), ru(y1.max(y2))))
+}
+
+/// [`root_bounds`] for two well separated roots (disc > 4·its radius, b ≠ 0), in
+/// midpoint-radius form with one square root and two reciprocals.
+///
+/// √d for d ∈ [z − r, z + r] lies within r/√z·(1/(1 + √(3/4))) < r/s·(1 + 2u) of √z,
+/// and s = fl(√z) within u·√z: so within e = r·(1/s) + 2u·s (raised for rounding) of s.
+/// q = −(b + sgn(b)·√d)/2 adds no cancellation: |q − q̃| ≤ (e + 2u|b ± s|)/2. Then
+/// x1 = q/a and x2 = c/q from the reciprocals 1/a and 1/q̃: with |q̃| ≥ 2·q_r (checked),
+/// |c/q − c/q̃| ≤ 2|c|·q_r/q̃², and each product and reciprocal adds ≤ 2u relative.
+#[inline(always)]
+fn root_bounds_simple(a: f64, b: f64, c: f64, disc: Ball) -> Option<[(f64, f64); 2]> {
+    let s = sqrt(disc.z);
+    let e = ball::up(disc.r * (1.0 / s) + 2.0 * ball::U * s);
+    let bs = if b > 0.0 { b + s } else { b - s };
+    let qz = -0.5 * bs;
+    let qr = ball::up(0.5 * e + 2.0 * ball::U * bs.abs());
+    if !(qz.abs() > 2.0 * qr) {
+        return None;
+    }
+    let ia = 1.0 / a;
+    let iq = 1.0 / qz;
+    let x1 = qz * ia;
+    let x1r = ball::up(qr * ia.abs() + 6.0 * ball::U * x1.abs());
+    let x2 = c * iq;
+    let x2r = ball::up(2.0 * qr * iq.abs() * x2.abs() + 6.0 * ball::U * x2.abs());
+    let (l1, h1) = (round_down(x1 - x1r), round_up(x1 + x1r));
+    let (l2, h2) = (round_down(x2 - x2r), round_up(x2 + x2r));
+    if !(l1.is_finite() && h1.is_finite() && l2.is_finite() && h2.is_finite()) {
+        return None;
+    }
+    Some([(fmin(l1, l2), fmin(h1, h2)), (fmax(l1, l2), fmax(h1, h2))])
 }
 
 /// The set {t ∈ [lo, hi] : a·t² + b·t + c ≥ 0} for floats a, b, c, enclosed from
@@ -378,19 +426,22 @@ fn ball_set(a: Ball, b: Ball, c: Ball, lo: f64, hi: f64, outer: bool) -> [Interv
     }
 }
 
-/// Coefficients (t², t, 1) of (ww + t·vv)·(aa + t·bb) as balls. `vv0`, `bb0`: vv, bb
-/// are known to be exactly 0 (from the inputs), so the terms they multiply are exact 0s.
+/// Coefficients (t², t, 1) of (ww + t·vv)·(aa + t·bb) as balls. `zero` says which of
+/// ww, vv, aa, bb are known to be exactly 0 (from the inputs): the products they enter
+/// are then exact 0s, not balls of radius ETA (which would blur a line into a parabola).
 #[inline(always)]
-fn dot_coeffs(ww: BallV, vv: BallV, aa: BallV, bb: BallV, vv0: bool, bb0: bool) -> [Ball; 3] {
-    let zero = Ball::exact(0.0);
-    let a = if vv0 || bb0 { zero } else { vv.dot(bb) };
-    let b = match (vv0, bb0) {
-        (true, true) => zero,
-        (true, false) => ww.dot(bb),
-        (false, true) => vv.dot(aa),
-        (false, false) => ww.dot(bb).add(vv.dot(aa)),
+fn dot_coeffs(ww: BallV, vv: BallV, aa: BallV, bb: BallV, zero: [bool; 4]) -> [Ball; 3] {
+    let [w0, v0, a0, b0] = zero;
+    let z = Ball::exact(0.0);
+    let dot = |x: BallV, y: BallV, x0: bool, y0: bool| if x0 || y0 { None } else { Some(x.dot(y)) };
+    let a = dot(vv, bb, v0, b0).unwrap_or(z);
+    let b = match (dot(ww, bb, w0, b0), dot(vv, aa, v0, a0)) {
+        (Some(p), Some(q)) => p.add(q),
+        (Some(p), None) | (None, Some(p)) => p,
+        (None, None) => z,
     };
-    [a, b, ww.dot(aa)]
+    let c = dot(ww, aa, w0, a0).unwrap_or(z);
+    [a, b, c]
 }
 
 /// Paper A §II.I dot_nn_lin (omitted in the paper, derived in [`float_set`]): one of the
@@ -400,8 +451,8 @@ fn dot_coeffs(ww: BallV, vv: BallV, aa: BallV, bb: BallV, vv0: bool, bb0: bool) 
 #[inline]
 pub fn dot_nn_lin(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2, sigma: Sign) -> Interval {
     let e = BallV::exact;
-    let (vv0, bb0) = (vv == Vect2::ZERO, bb == Vect2::ZERO);
-    let [a, b, c] = dot_coeffs(e(ww), e(vv), e(aa), e(bb), vv0, bb0);
+    let zero = [ww, vv, aa, bb].map(|x| x == Vect2::ZERO);
+    let [a, b, c] = dot_coeffs(e(ww), e(vv), e(aa), e(bb), zero);
     let set = ball_set(a, b, c, 0.0, t, true);
     match sigma {
         Sign::Neg => set[0],
@@ -431,9 +482,9 @@ pub fn dot_nn(
     let s2 = Ball::exact(sigma2.value());
     let w2 = e(aa).scale(k).add(e(ww).scale(s2));
     let v2 = e(bb).scale(k).add(e(vv).scale(s2));
-    let bb0 = bb == Vect2::ZERO;
-    let v20 = bb0 && vv == Vect2::ZERO;
-    let [a, b, c] = dot_coeffs(w2, v2, e(aa), e(bb), v20, bb0);
+    let z = |x: Vect2| x == Vect2::ZERO;
+    let zero = [z(aa) && z(ww), z(bb) && z(vv), z(aa), z(bb)];
+    let [a, b, c] = dot_coeffs(w2, v2, e(aa), e(bb), zero);
     let set = ball_set(a, b, c, 0.0, t, true);
     match sigma1 {
         Sign::Neg => set[0],
@@ -522,7 +573,7 @@ pub fn edge_detect_simp_tri(
     } else {
         (
             [bb.sq(), aa.dot(bb).scale(2.0), aa.sq()],
-            dot_coeffs(ww, vv, aa, bb, false, false),
+            dot_coeffs(ww, vv, aa, bb, [false; 4]),
             [vv.cross(bb), ww.cross(bb).add(vv.cross(aa)), ww.cross(aa)],
         )
     };

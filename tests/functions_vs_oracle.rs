@@ -312,7 +312,11 @@ fn alg_near(a: &Alg<Q>, x: f64, t: f64) -> bool {
         return false;
     }
     let e = tol(x, t);
-    a.cmp_rat(&q(x - e)) != Ordering::Less && a.cmp_rat(&q(x + e)) != Ordering::Greater
+    let (lo, hi) = (x - e, x + e);
+    if !(lo.is_finite() && hi.is_finite()) {
+        return false;
+    }
+    a.cmp_rat(&q(lo)) != Ordering::Less && a.cmp_rat(&q(hi)) != Ordering::Greater
 }
 
 /// An exact interval end, rounded, for messages only.

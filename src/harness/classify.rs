@@ -172,6 +172,43 @@ pub fn compare(raw: &RawCase) -> Result<Verdict, CompareError> {
     })
 }
 
+/// The contract check of one case (`polyguard assure --contract`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ContractVerdict {
+    pub method: Method,
+    /// The engine's three-valued answer.
+    pub engine: crate::ball::Tri,
+    /// The plain f64 transcription's answer (the canary).
+    pub plain: bool,
+    /// Paper A in exact arithmetic, asked only when the engine does not certify a yes
+    /// (a certified yes is paper A's yes by the engine's certificate).
+    pub paper: Option<bool>,
+}
+
+/// The engine's contract on one case: the engine, the plain transcription, and paper A
+/// in exact arithmetic where needed. No truth.
+pub fn check_contract(raw: &RawCase) -> Result<ContractVerdict, CompareError> {
+    let case = raw
+        .to_api()
+        .map_err(|e| CompareError::Engine(e.to_string()))?;
+    let engine = api::decide(&case);
+    let plain = api::detected_plain(&case);
+    let paper = if engine == crate::ball::Tri::Yes {
+        None
+    } else {
+        let exact = raw
+            .exact::<Exact>()
+            .map_err(|e| CompareError::Oracle(e.to_string()))?;
+        Some(polyguard_oracle::paper_detect(&exact).detected)
+    };
+    Ok(ContractVerdict {
+        method: case.method(),
+        engine,
+        plain,
+        paper,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

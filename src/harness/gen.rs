@@ -11,6 +11,13 @@
 //! slab boundary reached at the contact time (detect_3d). Scales: coordinates offset by
 //! 0 or 10³ … 10⁷, polygons from 10⁻² to 10³ across, BUFF relative 10⁻² … 10⁻⁷.
 //!
+//! Half the cases of [`any_case`] are then stretched into long relative paths
+//! ([`stretch`]): the whole scene is moved back in time by τ = (K − 1)·T with K
+//! log-uniform in 10 … 10⁶, the polygon's warping slowed by K, so that at τ the scene is
+//! the threshold configuration above and the relative path over the lookahead K·T is K
+//! times longer (up to ~3·10⁶ polygon sizes, BUFF down to ~10⁻¹³ of the path): where
+//! squared distances cancel, the region the plain f64 transcription misses.
+//!
 //! The choices are drawn from a [`Source`]: [`SplitMix`] for seeded runs, [`Bytes`] for
 //! fuzzers (the fuzzer's input bytes steer every choice).
 
@@ -139,6 +146,22 @@ impl Mode {
             Mode::ContactAtZero => "contact_at_zero",
             Mode::ExtendedEnd => "extended_end",
             Mode::Free => "free",
+        }
+    }
+
+    /// snake_case name of the mode stretched into a long path ([`stretch`]).
+    pub fn long_name(self) -> &'static str {
+        match self {
+            Mode::EdgeBuff => "edge_buff+long",
+            Mode::VertexBuff => "vertex_buff+long",
+            Mode::PerturbX => "perturb_x+long",
+            Mode::PerturbY => "perturb_y+long",
+            Mode::ThroughVertex => "through_vertex+long",
+            Mode::AlongEdge => "along_edge+long",
+            Mode::ContactAtT => "contact_at_t+long",
+            Mode::ContactAtZero => "contact_at_zero+long",
+            Mode::ExtendedEnd => "extended_end+long",
+            Mode::Free => "free+long",
         }
     }
 }
@@ -304,12 +327,69 @@ pub fn case<S: Source>(src: &mut S, shape: Shape, mode: Mode) -> (RawCase, f64) 
     (raw, e)
 }
 
-/// A case of random shape and mode.
-pub fn any_case<S: Source>(src: &mut S) -> (RawCase, Shape, Mode) {
+/// Stretches a case into a long relative path: K = 10^u, u uniform in [1, 6].
+///
+/// With τ = (K − 1)·T, vertex velocities v_i = v_0 + δ_i and a slab moving at vsp, the
+/// new case has lookahead K·T, start s − τ·v, vertices p_i − τ·v_0 − (τ/K)·δ_i and
+/// velocities v_0 + δ_i/K, heights z − τ·v_z and slab ends − τ·vsp. At time τ it is the
+/// original case at time 0 (up to the rounding of the far-away starts), and over its
+/// lookahead the polygon warps exactly as much as the original did over T, while the
+/// point travels K times as far relative to it. Returns K; 1 (the case unchanged) when
+/// the polygon at time 0, the original one warped backwards, is no longer
+/// counterclockwise.
+pub fn stretch<S: Source>(src: &mut S, raw: &mut RawCase) -> f64 {
+    let original = raw.clone();
+    let k = stretch_by(src, raw);
+    let verts: Vec<Vect2> = raw.vertices.iter().map(|&p| p.into()).collect();
+    if crate::api::signed_area2(&verts) > 0.0 {
+        k
+    } else {
+        *raw = original;
+        1.0
+    }
+}
+
+fn stretch_by<S: Source>(src: &mut S, raw: &mut RawCase) -> f64 {
+    let k = 10f64.powf(src.range(1.0, 6.0));
+    let t = raw.lookahead;
+    let tau = (k - 1.0) * t;
+    let v = Vect2::new(raw.vel[0], raw.vel[1]);
+    let v0: Vect2 = raw
+        .velocities
+        .first()
+        .map(|&w| w.into())
+        .unwrap_or_default();
+    raw.lookahead = k * t;
+    raw.pos[0] -= tau * v.x;
+    raw.pos[1] -= tau * v.y;
+    for (p, w) in raw.vertices.iter_mut().zip(raw.velocities.iter_mut()) {
+        let d = Vect2::from(*w) - v0;
+        let np = Vect2::from(*p) - v0.scale(tau) - d.scale(tau / k);
+        *p = np.into();
+        *w = (v0 + d.scale(1.0 / k)).into();
+    }
+    if raw.pos.len() == 3 {
+        raw.pos[2] -= tau * raw.vel[2];
+        if let Some(slab) = raw.slab.as_mut() {
+            slab[0] -= tau * slab[2];
+            slab[1] -= tau * slab[2];
+        }
+    }
+    k
+}
+
+/// A case of random shape and mode; half of them stretched into long relative paths
+/// ([`stretch`]). The name is the mode's, with "+long" for a stretched one.
+pub fn any_case<S: Source>(src: &mut S) -> (RawCase, Shape, Mode, &'static str) {
     let shape = src.pick(&[Shape::Static, Shape::Warping, Shape::ThreeD]);
     let mode = src.pick(&Mode::ALL);
-    let (raw, _) = case(src, shape, mode);
-    (raw, shape, mode)
+    let (mut raw, _) = case(src, shape, mode);
+    if src.coin() {
+        stretch(src, &mut raw);
+        (raw, shape, mode, mode.long_name())
+    } else {
+        (raw, shape, mode, mode.name())
+    }
 }
 
 #[cfg(test)]

@@ -5,7 +5,7 @@ use std::collections::BTreeMap;
 
 use serde::{Deserialize, Serialize};
 
-use super::classify::{Class, Verdict};
+use super::classify::{Class, ContractVerdict, Verdict};
 
 /// A kept counterexample (its case is written beside the report).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -34,6 +34,10 @@ pub struct Contract {
     /// Paper-exact yes, plain f64 transcription no: the canary, expected above 0 on
     /// campaigns that reach long relative paths.
     pub plain_violations: u64,
+    /// Of `paper_yes`, the ones known from the engine's certificate (a certified yes),
+    /// without asking paper A (`assure --contract`); 0 in full campaigns.
+    #[serde(default)]
+    pub certified_yes: u64,
 }
 
 impl Contract {
@@ -51,6 +55,18 @@ impl Contract {
         self.conservative += o.conservative;
         self.conservative_paper_no += o.conservative_paper_no;
         self.plain_violations += o.plain_violations;
+        self.certified_yes += o.certified_yes;
+    }
+
+    fn add_check(&mut self, v: &ContractVerdict) {
+        use crate::ball::Tri;
+        let paper_yes = v.engine == Tri::Yes || v.paper == Some(true);
+        self.paper_yes += u64::from(paper_yes);
+        self.certified_yes += u64::from(v.engine == Tri::Yes);
+        self.violations += u64::from(paper_yes && v.engine == Tri::No);
+        self.conservative += u64::from(v.engine == Tri::Unsure);
+        self.conservative_paper_no += u64::from(v.engine == Tri::Unsure && v.paper == Some(false));
+        self.plain_violations += u64::from(paper_yes && !v.plain);
     }
 }
 
@@ -98,6 +114,12 @@ impl Report {
             self.nanos[k] = self.nanos[k].saturating_add(v.nanos[k]);
         }
         self.contract.add(v);
+    }
+
+    /// Counts one contract check (`assure --contract`: no classes).
+    pub fn add_contract(&mut self, v: &ContractVerdict) {
+        self.cases += 1;
+        self.contract.add_check(v);
     }
 
     /// Totals per class.
@@ -157,6 +179,19 @@ impl Report {
     /// The summary table: per paper function and per class, counts and rates.
     pub fn table(&self) -> String {
         let mut out = String::new();
+        if self.by_method.is_empty() && self.cases > 0 {
+            // A contract-only campaign (`assure --contract`): no classes, no timings.
+            out.push_str(&format!(
+                "contract check: {} cases in {:.1} s wall ({:.0} cases/s); paper A asked on {} of them, {} certified yes\n",
+                self.cases,
+                self.wall_seconds,
+                if self.wall_seconds > 0.0 { self.cases as f64 / self.wall_seconds } else { 0.0 },
+                self.cases - self.contract.certified_yes,
+                self.contract.certified_yes,
+            ));
+            out.push_str(&self.contract_lines());
+            return out;
+        }
         let classes = Class::ALL;
         out.push_str(&format!("{:<16}", "function"));
         for c in classes {
@@ -199,6 +234,13 @@ impl Report {
             self.wall_seconds,
             if self.wall_seconds > 0.0 { self.cases as f64 / self.wall_seconds } else { 0.0 },
         ));
+        out.push_str(&self.contract_lines());
+        out
+    }
+
+    /// The contract's lines of the summary.
+    fn contract_lines(&self) -> String {
+        let mut out = String::new();
         let c = &self.contract;
         let pct = |n: u64| {
             if self.cases == 0 {

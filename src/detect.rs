@@ -299,7 +299,8 @@ fn root_bounds_simple(a: f64, b: f64, c: f64, disc: Ball) -> Option<[(f64, f64);
     let bs = if b > 0.0 { b + s } else { b - s };
     let qz = -0.5 * bs;
     let qr = ball::up(0.5 * e + 2.0 * ball::U * bs.abs());
-    if !(qz.abs() > 2.0 * qr) {
+    // Also refuses a NaN: only a q̃ certainly twice its radius away from 0 passes.
+    if qz.abs() <= 2.0 * qr || qz.is_nan() || qr.is_nan() {
         return None;
     }
     let ia = 1.0 / a;

@@ -401,8 +401,8 @@ mod tests {
         let mut a = SplitMix(7);
         let mut b = SplitMix(7);
         for _ in 0..500 {
-            let (ca, _, _) = any_case(&mut a);
-            let (cb, _, _) = any_case(&mut b);
+            let (ca, _, _, _) = any_case(&mut a);
+            let (cb, _, _, _) = any_case(&mut b);
             assert_eq!(ca, cb);
             ca.to_api().expect("generated cases are valid");
         }
@@ -438,7 +438,7 @@ mod tests {
     fn bytes_source_is_total() {
         for data in [&[][..], &[1, 2, 3][..], &[255; 100][..]] {
             let mut src = Bytes::new(data);
-            let (raw, _, _) = any_case(&mut src);
+            let (raw, _, _, _) = any_case(&mut src);
             assert!(raw.to_api().is_ok() || raw.vertices.len() >= 3);
         }
     }

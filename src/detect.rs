@@ -946,8 +946,14 @@ pub fn slab_window_balls(
     if vz == vsp {
         return (sz >= pmin && sz <= pmax).then_some((zero, whole));
     }
-    // σ·(z + σ'·T·w) by expansion: z0 + T·w = sz − pmin + T·vz − T·vsp.
+    // The sign of z[0] + z[1] + σ·T·(vz − vsp): on balls first, by expansion when the
+    // ball cannot tell (z0 + T·w = sz − pmin + T·vz − T·vsp, z1 − T·w likewise).
     let sign_at_t = |z: [f64; 2], sigma: f64| -> Option<i8> {
+        let e = Ball::exact;
+        let b = e(z[0]).add(e(z[1])).add(e(vz).sub(e(vsp)).scale(sigma * t));
+        if let Some(sg) = ball::sign_of(b) {
+            return Some(sg);
+        }
         let mut sum = exact::Sum::default();
         sum.add(z[0]);
         sum.add(z[1]);

@@ -1,5 +1,6 @@
 //! Typed errors for bad cases: every rule of shared/spec/cases.md, each naming its field.
 
+#[cfg(feature = "std")]
 use core::fmt;
 
 #[cfg(feature = "std")]

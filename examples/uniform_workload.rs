@@ -1,4 +1,4 @@
-//! Writes the benchmark workload (benches/workload.rs) as case lines, so that
+//! Writes the benchmark workload (benches/shared/workload.rs) as case lines, so that
 //! `polyguard detect --repeat R --timing` times it and counts its answers' `kind`:
 //!
 //! ```text
@@ -11,7 +11,7 @@
 //! seeds, as in the criterion bench; the few clockwise polygons of the random workload
 //! are left out (the case format requires counterclockwise ones).
 
-#[path = "../benches/workload.rs"]
+#[path = "../benches/shared/workload.rs"]
 mod workload;
 
 use std::io::{self, BufWriter, Write};

@@ -56,66 +56,8 @@ where
 
 // ===================================================================== §II.I
 
-/// The sign σ (or ε) = ±1 of paper A §II.I.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Sign {
-    Neg,
-    Pos,
-}
-
-impl Sign {
-    /// Both signs, −1 then +1.
-    pub const BOTH: [Sign; 2] = [Sign::Neg, Sign::Pos];
-
-    /// −1.0 or 1.0.
-    #[inline(always)]
-    pub fn value(self) -> f64 {
-        match self {
-            Sign::Neg => -1.0,
-            Sign::Pos => 1.0,
-        }
-    }
-
-    /// The other sign.
-    #[inline(always)]
-    pub fn flip(self) -> Sign {
-        match self {
-            Sign::Neg => Sign::Pos,
-            Sign::Pos => Sign::Neg,
-        }
-    }
-}
-
-/// A closed time interval [lb, ub]; empty when lb > ub.
-///
-/// The paper writes the empty interval as (T, 0). That is not empty when T = 0, which
-/// detect_3D produces when the slab window is a single instant, so the engine uses
-/// (+∞, −∞) instead: it loses every max/min comparison, as (T, 0) does for T > 0.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Interval {
-    pub lb: f64,
-    pub ub: f64,
-}
-
-impl Interval {
-    /// The empty interval.
-    pub const EMPTY: Interval = Interval {
-        lb: f64::INFINITY,
-        ub: f64::NEG_INFINITY,
-    };
-
-    /// [lb, ub].
-    #[inline(always)]
-    pub const fn new(lb: f64, ub: f64) -> Interval {
-        Interval { lb, ub }
-    }
-
-    /// Does the interval contain no time?
-    #[inline(always)]
-    pub fn is_empty(&self) -> bool {
-        !pr::intervals_meet(self.lb, self.ub)
-    }
-}
+// The sign σ and the interval type are the engine's (crate::detect).
+pub use crate::detect::{Interval, Sign};
 
 /// Roots r1 ≤ r2 of A·t² + B·t + C (A ≠ 0, disc = B² − 4AC > 0), computed without
 /// cancellation: q = −(B + sgn(B)·√disc)/2, roots q/A and C/q.

@@ -115,34 +115,6 @@ pub fn intervals_meet(max_lb: f64, min_ub: f64) -> bool {
     !(max_lb > min_ub)
 }
 
-// ---------------------------------------------------------------- §II.J well formed
-
-/// §II.J step 1: ‖p − q‖ < 2·BUFF, as ‖p − q‖² < 4·BUFF².
-#[inline(always)]
-pub fn vertices_too_close(p: Vect2, q: Vect2, buff: f64) -> bool {
-    (p - q).sq() < 4.0 * buff * buff
-}
-
-/// §II.J step 3: the corner between consecutive edges g and h is sharper than κ:
-/// g·h < −cos κ·‖g‖·‖h‖.
-#[inline(always)]
-pub fn corner_too_sharp(g: Vect2, h: Vect2, cos_kappa: f64) -> bool {
-    g.dot(h) < -cos_kappa * crate::vect2::sqrt(g.sq() * h.sq())
-}
-
-/// §II.J step 4: the polygon does not turn left at the extremal vertex:
-/// (p_i − p_prev)·(p_next − p_i)⊥ ≤ 0.
-#[inline(always)]
-pub fn turns_right_or_straight(prev: Vect2, cur: Vect2, next: Vect2) -> bool {
-    (cur - prev).dot((next - cur).perp()) <= 0.0
-}
-
-/// §II.J step 4: p is lexicographically below q (smaller x, then smaller y).
-#[inline(always)]
-pub fn lex_less(p: Vect2, q: Vect2) -> bool {
-    p.x < q.x || (p.x == q.x && p.y < q.y)
-}
-
 // ---------------------------------------------------------------- §III slab
 
 /// §III step 1: a linear height difference z0 + t·w is ≥ 0 at t = 0 (w = 0 case).
@@ -157,11 +129,7 @@ pub fn window_nonempty(a: f64, b: f64) -> bool {
     !(a > b)
 }
 
-/// §II.H/§II.I dispatch: two input velocities are identical (statically shaped polygon).
-#[inline(always)]
-pub fn same_velocity(a: Vect2, b: Vect2) -> bool {
-    a == b
-}
+pub use crate::predicates::same_velocity;
 
 // ---------------------------------------------------------------- filters
 

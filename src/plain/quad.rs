@@ -2,17 +2,7 @@
 
 use super::predicates as pr;
 
-/// Paper A §I: quad(a, b, c)(t) = a·t² + b·t + c.
-#[inline(always)]
-pub fn quad(a: f64, b: f64, c: f64, t: f64) -> f64 {
-    (a * t + b) * t + c
-}
-
-/// Paper A §I: quad2D(a, b, c, d, e, f)(r, t) = a·r² + b·t² + c·r·t + d·r + e·t + f.
-#[inline(always)]
-pub fn quad2d(a: f64, b: f64, c: f64, d: f64, e: f64, f: f64, r: f64, t: f64) -> f64 {
-    a * r * r + b * t * t + c * r * t + d * r + e * t + f
-}
+pub use crate::quad::{quad, quad2d};
 
 /// Paper A §I quad_min_le_D: is there a t ∈ [0, 1] with a·t² + b·t + c < D?
 ///

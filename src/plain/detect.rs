@@ -386,16 +386,7 @@ pub fn slab_window(t: f64, sz: f64, vz: f64, pmin: f64, pmax: f64, vsp: f64) -> 
     }
 }
 
-/// Are all vertex velocities equal (a statically shaped polygon, §II.F)?
-#[inline]
-pub fn statically_shaped<V: VertexSeq + ?Sized>(vels: &V) -> bool {
-    let n = vels.count();
-    if n == 0 {
-        return true;
-    }
-    let v0 = vels.vertex(0);
-    (1..n).all(|i| pr::same_velocity(vels.vertex(i), v0))
-}
+pub use crate::detect::statically_shaped;
 
 /// Paper A §III detect_3D: 2D detection (detect_same_2D when all vertex velocities are
 /// equal, detect_diff_2D otherwise) from s + a·v and P + a·V over the lookahead b − a,

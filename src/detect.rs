@@ -497,6 +497,13 @@ pub fn dot_nn(
 /// (edge_detect_simp step 2: max of the lower ends ≤ min of the upper ends.)
 #[inline]
 fn some_choice_meets(sets: &[[Interval; 2]; 4]) -> bool {
+    first_meeting(sets).is_some()
+}
+
+/// The common part [lb, ub] of the first choice (one interval from each of the four
+/// pairs) that has one, as in [`some_choice_meets`].
+#[inline]
+fn first_meeting(sets: &[[Interval; 2]; 4]) -> Option<(f64, f64)> {
     for i1 in &sets[0] {
         for i2 in &sets[1] {
             let (lb12, ub12) = (i1.lb.max(i2.lb), i1.ub.min(i2.ub));
@@ -505,14 +512,22 @@ fn some_choice_meets(sets: &[[Interval; 2]; 4]) -> bool {
             }
             for i3 in &sets[2] {
                 for i4 in &sets[3] {
-                    if lb12.max(i3.lb).max(i4.lb) <= ub12.min(i3.ub).min(i4.ub) {
-                        return true;
+                    let (lb, ub) = (lb12.max(i3.lb).max(i4.lb), ub12.min(i3.ub).min(i4.ub));
+                    if lb <= ub {
+                        return Some((lb, ub));
                     }
                 }
             }
         }
     }
-    false
+    None
+}
+
+/// A quadratic with ball coefficients (t², t, 1) at an exact time t ≥ 0, by Horner's
+/// rule on balls: the exact quadratic's value at t lies in the result.
+#[inline(always)]
+fn quad_at(c: &[Ball; 3], t: f64) -> Ball {
+    c[0].scale(t).add(c[1]).scale(t).add(c[2])
 }
 
 /// Paper A §II.I edge_detect_simp: is there a t ∈ [0, T] with
@@ -536,17 +551,116 @@ pub fn edge_detect_simp(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2, f: f
     .or_true()
 }
 
+/// The four quadratics of edge_detect_simp (§II.I), F·‖a‖² + w×a, F·‖a‖² − w×a,
+/// K·‖a‖² + w·a and K·‖a‖² − w·a (K = 1 + F, a = aa + t·bb, w = ww + t·vv), as balls of
+/// coefficients (t², t, 1): each coefficient is computed in floats, and its radius is a
+/// static bound on the distance to the exact coefficient, for every exact input within
+/// the balls ww, vv, aa, bb and k1 ∋ 1 + F.
+///
+/// Derivation. For vectors x, y known within r_x, r_y per coordinate, with
+/// n_x = |x̃₁| + |x̃₂|, the exact x·y (or x × y) lies within
+/// n_x·r_y + n_y·r_x + 2·r_x·r_y of x̃·ỹ (each of the two products moves by at most
+/// |x̃ᵢ|·r_y + |ỹᵢ|·r_x + r_x·r_y), and fl(fl(x̃₁ỹ₁) ± fl(x̃₂ỹ₂)) within
+/// u·(|x̃₁ỹ₁| + |x̃₂ỹ₂|)·(2 + u) ≤ 3u·n_x·n_y of x̃·ỹ: that is [`pair_err`]. A sum of two
+/// such products adds u·|sum|. A coefficient c = K·g ± h (g of ‖a‖², h of w·a or w × a)
+/// with K within r_K of k̃ is within |k̃|·E_g + r_K·(|g̃| + E_g) + E_h of k̃·g̃ ± h̃, and its
+/// two roundings add u·|fl(k̃g̃)| + u·|c̃| ≤ 2u·|fl(k̃g̃)| + u·(1 + u)·|h̃|, so one bound
+/// serves both signs. Every bound is a sum of products of non-negative floats at most
+/// [`ball::UP_OPS`] roundings deep, raised by [`ball::up`] (which also covers underflow).
+/// When bb is exactly 0 (`bb0`) the t² coefficients are exact zeros.
+#[inline(always)]
+fn simp_quadratics(
+    ww: BallV,
+    vv: BallV,
+    aa: BallV,
+    bb: BallV,
+    bb0: bool,
+    k1: Ball,
+    f: f64,
+) -> [[Ball; 3]; 4] {
+    let n = |x: BallV| x.v.x.abs() + x.v.y.abs();
+    let (nw, nv, na, nb) = (n(ww), n(vv), n(aa), n(bb));
+    let (rw, rv, ra, rb) = (ww.r, vv.r, aa.r, bb.r);
+    let (w, v, a, b) = (ww.v, vv.v, aa.v, bb.v);
+    // Values: ‖a‖² = g2·t² + g1·t + g0, w·a = x2·t² + x1·t + x0, w × a likewise (y).
+    let cross = |x: Vect2, y: Vect2| x.dot(y.perp());
+    let (ab, wb, va) = (a.dot(b), w.dot(b), v.dot(a));
+    let (wbx, vax) = (cross(w, b), cross(v, a));
+    let g = [b.dot(b), 2.0 * ab, a.dot(a)];
+    let x = [v.dot(b), wb + va, w.dot(a)];
+    let y = [cross(v, b), wbx + vax, cross(w, a)];
+    let eg = [
+        pair_err(nb, rb, nb, rb),
+        2.0 * pair_err(na, ra, nb, rb),
+        pair_err(na, ra, na, ra),
+    ];
+    let (e_vb, e_wb, e_va, e_wa) = (
+        pair_err(nv, rv, nb, rb),
+        pair_err(nw, rw, nb, rb),
+        pair_err(nv, rv, na, ra),
+        pair_err(nw, rw, na, ra),
+    );
+    let eh = |h: &[f64; 3]| [e_vb, e_wb + e_va + ball::U * h[1].abs(), e_wa];
+    let (ex, ey) = (eh(&x), eh(&y));
+    // One K·‖a‖² ± h pair: values of both signs and their shared radii.
+    let pair = |k: Ball, h: &[f64; 3], e: &[f64; 3]| {
+        let kg = [k.z * g[0], k.z * g[1], k.z * g[2]];
+        let r = |i: usize| {
+            ball::up(
+                k.z.abs() * eg[i]
+                    + k.r * (g[i].abs() + eg[i])
+                    + e[i]
+                    + 2.0 * ball::U * kg[i].abs()
+                    + 2.0 * ball::U * h[i].abs(),
+            )
+        };
+        let rs = [r(0), r(1), r(2)];
+        let c = |i: usize, sigma: f64| {
+            if bb0 && i == 0 {
+                Ball::exact(0.0)
+            } else {
+                Ball {
+                    z: if sigma > 0.0 {
+                        kg[i] + h[i]
+                    } else {
+                        kg[i] - h[i]
+                    },
+                    r: rs[i],
+                }
+            }
+        };
+        (
+            [c(0, 1.0), c(1, 1.0), c(2, 1.0)],
+            [c(0, -1.0), c(1, -1.0), c(2, -1.0)],
+        )
+    };
+    let (p_pos, p_neg) = pair(Ball::exact(f), &y, &ey);
+    let (a_pos, a_neg) = pair(k1, &x, &ex);
+    [p_pos, p_neg, a_pos, a_neg]
+}
+
+/// The bound of [`simp_quadratics`] on |x·y − fl(x̃·ỹ)| (or the cross product) for
+/// vectors known within r_x and r_y per coordinate, n_x = ‖x̃‖₁, n_y = ‖ỹ‖₁:
+/// n_x·r_y + n_y·r_x + 2·r_x·r_y + 3u·n_x·n_y, raised by [`ball::up`].
+#[inline(always)]
+fn pair_err(nx: f64, rx: f64, ny: f64, ry: f64) -> f64 {
+    ball::up(nx * ry + ny * rx + 2.0 * rx * ry + 3.0 * ball::U * (nx * ny))
+}
+
 /// Paper A §II.I edge_detect_simp over the time window [ta, tb], three-valued, on balls.
 ///
 /// The paper loops over six signs and intersects four dot_nn intervals per choice. A
 /// choice meets exactly when some t lies in all four unions, i.e. when the four
 /// quadratics (1 + F)‖a‖² ∓ w·a and F‖a‖² ∓ w×a (a = aa + t·bb, w = ww + t·vv; w·a⊥ =
 /// w × a) are all ≥ 0 at one t. Their coefficients share nine dot and cross products,
-/// formed once. Each quadratic's set is enclosed from outside and from inside
-/// ([`ball_set`]): no meeting of the outer sets is a certain `No`, a meeting of the inner
-/// sets a certain `Yes`, anything between is `Unsure`. The perpendicular conditions go
-/// first: they fail for most edges. `bb0` says that bb is exactly 0 (a translating
-/// edge, v_i = v_j): the t² coefficients are then exact zeros, and the quadratics lines.
+/// formed once, with static error bounds ([`simp_quadratics`]). Each quadratic's set is
+/// enclosed from outside and from inside ([`ball_set`]): no meeting of the outer sets is
+/// a certain `No`; a time at which all four are certainly ≥ 0 ([`quad_at`]), or a
+/// meeting of the inner sets, a certain `Yes`; anything between is `Unsure`. The
+/// perpendicular conditions go first: they fail for most edges, and where they hold
+/// (short intervals) the along conditions are usually settled by one evaluation, without
+/// their roots. `bb0` says that bb is exactly 0 (a translating edge, v_i = v_j): the t²
+/// coefficients are then exact zeros, and the quadratics lines.
 #[allow(clippy::too_many_arguments)]
 pub fn edge_detect_simp_tri(
     ta: Ball,
@@ -559,68 +673,78 @@ pub fn edge_detect_simp_tri(
     f: f64,
 ) -> Tri {
     let (one_f, err) = exact::two_sum(1.0, f);
-    let k1 = Ball {
-        z: one_f,
-        r: err.abs(),
-    };
-    let kf = Ball::exact(f);
-    let zero = Ball::exact(0.0);
-    let (g, x, y) = if bb0 {
-        (
-            [zero, zero, aa.sq()],
-            [zero, vv.dot(aa), ww.dot(aa)],
-            [zero, vv.cross(aa), ww.cross(aa)],
-        )
-    } else {
-        (
-            [bb.sq(), aa.dot(bb).scale(2.0), aa.sq()],
-            dot_coeffs(ww, vv, aa, bb, [false; 4]),
-            [vv.cross(bb), ww.cross(bb).add(vv.cross(aa)), ww.cross(aa)],
-        )
-    };
-    // K·‖a‖² for both K, formed once; each quadratic adds ±X to it.
-    let kg = |k: Ball| [k.mul(g[0]), k.mul(g[1]), k.mul(g[2])];
-    let (kg1, kgf) = (kg(k1), kg(kf));
-    let quad = |kgk: &[Ball; 3], h: &[Ball; 3], sigma: f64, outer: bool, lo: f64, hi: f64| {
-        let c = |i: usize| {
-            if bb0 && i == 0 {
-                zero
-            } else if sigma > 0.0 {
-                kgk[i].add(h[i])
-            } else {
-                kgk[i].sub(h[i])
-            }
-        };
-        ball_set(c(0), c(1), c(2), lo, hi, outer)
-    };
+    let q = simp_quadratics(
+        ww,
+        vv,
+        aa,
+        bb,
+        bb0,
+        Ball {
+            z: one_f,
+            r: err.abs(),
+        },
+        f,
+    );
     let (lo, hi) = (ta.lo().max(0.0), tb.hi());
     if !(lo.is_finite() && hi.is_finite()) {
         return Tri::Unsure;
     }
     let empty = |s: &[Interval; 2]| s[0].is_empty() && s[1].is_empty();
-    let p_pos = quad(&kgf, &y, 1.0, true, lo, hi);
+    let outer = |c: &[Ball; 3]| ball_set(c[0], c[1], c[2], lo, hi, true);
+    let p_pos = outer(&q[0]);
     if empty(&p_pos) {
         return Tri::No;
     }
-    let p_neg = quad(&kgf, &y, -1.0, true, lo, hi);
+    let p_neg = outer(&q[1]);
     if empty(&p_neg) {
         return Tri::No;
     }
-    let a_pos = quad(&kg1, &x, 1.0, true, lo, hi);
+    // The inner window: times that lie in [ta, tb] for every exact ta and tb.
+    let (ilo, ihi) = (ta.hi().max(0.0), tb.lo());
+    let yes_at = |t: f64| {
+        let t = t.max(ilo).min(ihi);
+        ilo <= ihi && q.iter().all(|c| nonnegative(quad_at(c, t)) == Tri::Yes)
+    };
+    // The perpendicular conditions hold only on the meetings J of their two outer sets,
+    // short intervals around the times the point crosses the edge's line. On each J,
+    // either one time (its middle) certainly satisfies all four quadratics — a certain
+    // yes — or an along quadratic is certainly negative all over J ([`below_zero_on`],
+    // on the coefficients' upper ends, which bound the exact quadratic for t ≥ 0): J
+    // holds no solution. Only when some J is settled neither way are the along
+    // quadratics' sets formed (below).
+    let mut settled = true;
+    let below =
+        |c: &[Ball; 3], l: f64, h: f64| below_zero_on(c[0].hi(), c[1].hi(), c[2].hi(), l, h);
+    for i1 in &p_pos {
+        for i2 in &p_neg {
+            let (jl, ju) = (i1.lb.max(i2.lb), i1.ub.min(i2.ub));
+            if jl > ju {
+                continue;
+            }
+            if yes_at(0.5 * jl + 0.5 * ju) {
+                return Tri::Yes;
+            }
+            if !(below(&q[2], jl, ju) || below(&q[3], jl, ju)) {
+                settled = false;
+            }
+        }
+    }
+    if settled {
+        return Tri::No;
+    }
+    let a_pos = outer(&q[2]);
     if empty(&a_pos) {
         return Tri::No;
     }
-    let a_neg = quad(&kg1, &x, -1.0, true, lo, hi);
-    if !some_choice_meets(&[p_pos, p_neg, a_pos, a_neg]) {
+    let a_neg = outer(&q[3]);
+    let Some((lb, ub)) = first_meeting(&[p_pos, p_neg, a_pos, a_neg]) else {
         return Tri::No;
+    };
+    // A certain yes from the middle of the outer sets' meeting, as above.
+    if yes_at(0.5 * lb + 0.5 * ub) {
+        return Tri::Yes;
     }
-    let (lo, hi) = (ta.hi().max(0.0), tb.lo());
-    let inner = [
-        quad(&kgf, &y, 1.0, false, lo, hi),
-        quad(&kgf, &y, -1.0, false, lo, hi),
-        quad(&kg1, &x, 1.0, false, lo, hi),
-        quad(&kg1, &x, -1.0, false, lo, hi),
-    ];
+    let inner = q.map(|c| ball_set(c[0], c[1], c[2], ilo, ihi, false));
     if some_choice_meets(&inner) {
         Tri::Yes
     } else {

@@ -1833,6 +1833,56 @@ fn edge_detect_simp_on_long_paths() {
     });
 }
 
+/// §II.I edge_detect_simp on wide balls: the inputs are balls whose centres are moved
+/// off the exact vectors by up to their radius (2⁻⁴⁴ … 2⁻⁸ of the vector's size), so
+/// every radius term of the coefficients' bounds matters; a decided answer must hold for
+/// the exact vectors inside the balls (those of the case, on its threshold).
+#[test]
+fn edge_detect_simp_holds_inside_wide_balls() {
+    let strategy = (edge_meet(), 8i32..44, proptest::array::uniform8(-2i8..=2));
+    run(
+        "edge_detect_simp_balls",
+        cases(256),
+        strategy,
+        |(c, k, xi), tally| {
+            let want =
+                od::edge_detect_simp(&q(c.t), &qv(c.ww), &qv(c.vv), &qv(c.aa), &qv(c.bb), &q(c.f));
+            // A ball around x whose centre is off by ξ/2 of the radius per coordinate.
+            let ball = |x: Vect2, i: usize| {
+                let r = max_abs(&[x]) * pow2(-k);
+                let centre = Vect2::new(
+                    x.x + r * f64::from(xi[i]) / 4.0,
+                    x.y + r * f64::from(xi[i + 1]) / 4.0,
+                );
+                // The centre's own rounding (≤ u·|centre|), covered with room to spare.
+                let slack = 4.0 * f64::EPSILON * max_abs(&[centre]) + f64::MIN_POSITIVE;
+                BallV {
+                    v: centre,
+                    r: r + slack,
+                }
+            };
+            let bb0 = c.bb == Vect2::ZERO;
+            let bb = if bb0 {
+                BallV::exact(c.bb)
+            } else {
+                ball(c.bb, 6)
+            };
+            let tri = edge_detect_simp_tri(
+                Ball::exact(0.0),
+                Ball::exact(c.t),
+                ball(c.ww, 0),
+                ball(c.vv, 2),
+                ball(c.aa, 4),
+                bb,
+                bb0,
+                c.f,
+            );
+            tally.note(tri, want);
+            check_tri(tri, want, "edge_detect_simp_tri on wide balls")
+        },
+    );
+}
+
 /// §II.I edge_detect (equation (2), with the engine's swept-box filter in front): paper-exact
 /// yes ⇒ engine yes, on the same long paths as edge_detect_simp, in absolute coordinates
 /// (the edge's midpoint up to 2⁵⁰ grid units from the origin, moving fast).

@@ -89,21 +89,23 @@ where
     let m0 = pb0.sub(pa0);
     let line = PathLine::new(m0, buff);
     let from_zero = ta.is_exact_zero();
-    let side = |q: BallV| {
-        if from_zero {
-            line.side(q.v)
-        } else {
-            pr::side_beyond(pa0, m0, q, buff)
-        }
+    // The side of vertex k: from the rounded difference alone when the line passes
+    // through the point (the static bound of [`PathLine`]), else on its ball.
+    let sides = PathSides {
+        from_zero,
+        line,
+        pa: pa0,
+        m: m0,
+        buff,
     };
-    let mut side_i = side(BallV::diff(p.vertex(0), s));
+    let side = |k: usize| sides.of(p.vertex(k), s);
+    let mut side_i = side(0);
     for i in 0..n {
         let j = p.next(i);
         let (vi, vj) = (vels.vertex(i), vels.vertex(j));
-        let qj = BallV::diff(p.vertex(j), s);
-        let side_j = side(qj);
-        let same_i = pr::same_velocity(vi, v0);
-        let skip = side_i != 0 && side_i == side_j && same_i && pr::same_velocity(vj, vi);
+        let side_j = side(j);
+        let same_i = stat || pr::same_velocity(vi, v0);
+        let skip = side_i != 0 && side_i == side_j && same_i && (stat || pr::same_velocity(vj, vi));
         side_i = side_j;
         if skip {
             continue;
@@ -114,7 +116,8 @@ where
             let rel = BallV::diff(v, vi);
             (rel.scale(ta), rel.scale(tb))
         };
-        let edge_j = if ta.is_exact_zero() || pr::same_velocity(vj, vi) {
+        let qj = BallV::diff(p.vertex(j), s);
+        let edge_j = if ta.is_exact_zero() || stat || pr::same_velocity(vj, vi) {
             qj
         } else {
             qj.add(BallV::diff(vj, vi).scale(ta))
@@ -128,7 +131,7 @@ where
             }
             let path = |k: f64| Terms::ZERO.plus_scaled(k, v)?.plus_scaled(-k, vi);
             let ej = Terms::diff(p.vertex(j), s);
-            let ej = if ta.is_exact_zero() || pr::same_velocity(vj, vi) {
+            let ej = if ta.is_exact_zero() || stat || pr::same_velocity(vj, vi) {
                 ej
             } else {
                 ej.plus_scaled(ta.z, vj)?.plus_scaled(-ta.z, vi)?
@@ -142,6 +145,35 @@ where
         }
     }
     acc
+}
+
+/// same_window's side test of a vertex against the relative path's line: from the
+/// rounded difference alone when the window starts at 0 (the line passes through the
+/// point: the static bound of [`PathLine`]), else on balls ([`pr::side_beyond`], out of
+/// line so that the common test stays inlined in the loop).
+struct PathSides {
+    from_zero: bool,
+    line: PathLine,
+    pa: BallV,
+    m: BallV,
+    buff: f64,
+}
+
+impl PathSides {
+    #[inline(always)]
+    fn of(&self, p: Vect2, s: Vect2) -> i8 {
+        if self.from_zero {
+            self.line.side(p - s)
+        } else {
+            side_on_balls(self.pa, self.m, BallV::diff(p, s), self.buff)
+        }
+    }
+}
+
+/// See [`PathSides`].
+#[inline(never)]
+fn side_on_balls(pa: BallV, m: BallV, q: BallV, buff: f64) -> i8 {
+    pr::side_beyond(pa, m, q, buff)
 }
 
 // ===================================================================== §II.I
@@ -937,6 +969,7 @@ pub fn edge_detect(
 ///
 /// ww = −((p_i − s) + (p_j − s))/2, vv = −((v_i − v) + (v_j − v))/2, aa = (p_j − p_i)/2,
 /// bb = (v_j − v_i)/2, each on balls.
+#[inline(always)]
 #[allow(clippy::too_many_arguments)]
 fn edge_detect_window(
     sweep: &Sweep,

@@ -1078,6 +1078,18 @@ where
 
 // ===================================================================== §III
 
+/// The exact sign of z[0] + z[1] + k·vz − k·vsp (k = σ·T, exact), by expansion: the
+/// slab window's fallback when the static bound cannot tell. `None` when not finite.
+#[inline(never)]
+fn slab_sign_exact(z: [f64; 2], k: f64, vz: f64, vsp: f64) -> Option<i8> {
+    let mut sum = exact::Sum::default();
+    sum.add(z[0]);
+    sum.add(z[1]);
+    sum.add_prod(k, vz);
+    sum.add_prod(-k, vsp);
+    sum.sign()
+}
+
 /// Paper A §III step 1 with certified ends: the window [a, b] ⊆ [0, T] in which the
 /// height s_z + t·v_z lies in [pmin + t·vsp, pmax + t·vsp], as two balls, or `None`
 /// when there is certainly no such time.
@@ -1103,20 +1115,24 @@ pub fn slab_window_balls(
     if vz == vsp {
         return (sz >= pmin && sz <= pmax).then_some((zero, whole));
     }
-    // The sign of z[0] + z[1] + σ·T·(vz − vsp): on balls first, by expansion when the
-    // ball cannot tell (z0 + T·w = sz − pmin + T·vz − T·vsp, z1 − T·w likewise).
+    // The sign of z[0] + z[1] + σ·T·(vz − vsp): from floats with a static bound first,
+    // by expansion when that cannot tell (z0 + T·w = sz − pmin + T·vz − T·vsp, z1 − T·w
+    // likewise). With a = fl(z[0] + z[1]) (error ≤ u|a|), w = fl(vz − vsp) (≤ u|w|) and
+    // p = fl(σT·w) (≤ u|p| + T·u|w| ≤ 2u|p|(1 + u), plus an underflow of ≤ ETA), the
+    // sum fl(a + p) adds ≤ u(|a| + |p|)(1 + 2u): 4u·(|a| + |p|) + ETA covers the whole,
+    // raised by (1 + 16u) for its own roundings ([`ball::up`]).
     let sign_at_t = |z: [f64; 2], sigma: f64| -> Option<i8> {
-        let e = Ball::exact;
-        let b = e(z[0]).add(e(z[1])).add(e(vz).sub(e(vsp)).scale(sigma * t));
-        if let Some(sg) = ball::sign_of(b) {
-            return Some(sg);
+        let a = z[0] + z[1];
+        let p = (sigma * t) * (vz - vsp);
+        let val = a + p;
+        let bound = ball::up(4.0 * ball::U * (a.abs() + p.abs()) + ball::ETA);
+        if val > bound {
+            return Some(1);
         }
-        let mut sum = exact::Sum::default();
-        sum.add(z[0]);
-        sum.add(z[1]);
-        sum.add_prod(sigma * t, vz);
-        sum.add_prod(-sigma * t, vsp);
-        sum.sign()
+        if -val > bound {
+            return Some(-1);
+        }
+        slab_sign_exact(z, sigma * t, vz, vsp)
     };
     let z0_at_t = sign_at_t([sz, -pmin], 1.0); // sign of z0 + T·w
     let z1_at_t = sign_at_t([pmax, -sz], -1.0); // sign of z1 − T·w

@@ -1883,6 +1883,71 @@ fn edge_detect_simp_holds_inside_wide_balls() {
     );
 }
 
+/// §III slab window: the engine's window balls contain the exact window's ends, and
+/// "no window" only when there is none, with the point leaving or entering the slab
+/// exactly at T (z0 + T·w = 0 or z1 − T·w = 0) or a few ulps either side, at 0, or with
+/// vz = vsp, the whole scaled by a power of two from 2⁻⁹⁰⁰ to 2⁹⁰⁰.
+#[test]
+fn slab_window_encloses_the_exact_window() {
+    let strategy = (
+        prop_oneof![lookahead(), 0.1f64..1e5],
+        (
+            -40.0f64..40.0,
+            -10.0f64..10.0,
+            -40.0f64..40.0,
+            -10i32..30,
+            1.0f64..40.0,
+        ),
+        (0u8..4, -2i64..=2, -900i32..900),
+    );
+    let run_case = |(t, (vz, vsp, base, j, h), (at, ka, e)): (
+        f64,
+        (f64, f64, f64, i32, f64),
+        (u8, i64, i32),
+    ),
+                    tally: &Tally| {
+        // sz is the float next to the height from which the point reaches a face exactly
+        // at T: the signs of z0 + T·w and z1 − T·w are then a matter of an ulp, and the
+        // rounded T·(vz − vsp) and sz − pmin are off by about as much.
+        let (pmin, pmax) = (base * pow2(j), base * pow2(j) + h * pow2(j));
+        let travel = q(t).times(&q(vz).minus(&q(vsp)));
+        let sz = match at {
+            0 => floor_f64(&q(pmin).minus(&travel)),
+            1 => floor_f64(&q(pmax).minus(&travel)),
+            2 => pmin,
+            _ => pmax,
+        };
+        let sz = nudge(sz, ka);
+        let k = pow2(e);
+        let (sz, vz, vsp, pmin, pmax) = (sz * k, vz * k, vsp * k, pmin * k, pmax * k);
+        if ![sz, vz, vsp, pmin, pmax]
+            .iter()
+            .all(|x| x.is_finite() && *x != 0.0)
+        {
+            return Ok(());
+        }
+        let want = od::slab_interval(&q(t), &q(sz), &q(vz), &q(pmin), &q(pmax), &q(vsp));
+        let got = polyguard::detect::slab_window_balls(t, sz, vz, pmin, pmax, vsp);
+        tally.note(
+            if got.is_some() { Tri::Unsure } else { Tri::No },
+            want.is_some(),
+        );
+        match (got, want) {
+            (None, Some(w)) => Err(TestCaseError::fail(format!("no window, exact {w:?}"))),
+            (Some((a, b)), Some((wa, wb))) => {
+                let holds = |x: Ball, y: &Q| q(x.lo()) <= *y && *y <= q(x.hi());
+                prop_assert!(
+                    holds(a, &wa) && holds(b, &wb),
+                    "window {a:?}..{b:?} misses the exact {wa:?}..{wb:?}"
+                );
+                Ok(())
+            }
+            _ => Ok(()),
+        }
+    };
+    run("slab_window", cases(4096), strategy, run_case);
+}
+
 /// §II.I edge_detect (equation (2), with the engine's swept-box filter in front): paper-exact
 /// yes ⇒ engine yes, on the same long paths as edge_detect_simp, in absolute coordinates
 /// (the edge's midpoint up to 2⁵⁰ grid units from the origin, moving fast).

@@ -1887,6 +1887,10 @@ fn edge_detect_simp_holds_inside_wide_balls() {
 /// "no window" only when there is none, with the point leaving or entering the slab
 /// exactly at T (z0 + T·w = 0 or z1 − T·w = 0) or a few ulps either side, at 0, or with
 /// vz = vsp, the whole scaled by a power of two from 2⁻⁹⁰⁰ to 2⁹⁰⁰.
+/// One draw of [`slab_window_encloses_the_exact_window`]: T, (v_z, vsp, face base,
+/// its scale 2^j, the slab's height), (which face, ulps, overall scale 2^e).
+type SlabDraw = (f64, (f64, f64, f64, i32, f64), (u8, i64, i32));
+
 #[test]
 fn slab_window_encloses_the_exact_window() {
     let strategy = (
@@ -1900,12 +1904,7 @@ fn slab_window_encloses_the_exact_window() {
         ),
         (0u8..4, -2i64..=2, -900i32..900),
     );
-    let run_case = |(t, (vz, vsp, base, j, h), (at, ka, e)): (
-        f64,
-        (f64, f64, f64, i32, f64),
-        (u8, i64, i32),
-    ),
-                    tally: &Tally| {
+    let run_case = |(t, (vz, vsp, base, j, h), (at, ka, e)): SlabDraw, tally: &Tally| {
         // sz is the float next to the height from which the point reaches a face exactly
         // at T: the signs of z0 + T·w and z1 − T·w are then a matter of an ulp, and the
         // rounded T·(vz − vsp) and sz − pmin are off by about as much.

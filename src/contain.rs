@@ -317,6 +317,17 @@ pub fn definitely_outside_rel<R: RelPoly + ?Sized>(p: &R, buff: f64) -> Tri {
     // vectorised loop from a 64-bit spill slot, its y read as 0 on the last edge
     // (tests/regressions/*.jsonl).
     let fixed = p.skip_margin(buff);
+    // Every vertex certainly above BUFF (the point below the polygon's bounding box):
+    // no edge of P or of P*_BUFF (perturbing moves vertices sideways only) comes within
+    // BUFF, and every edge whose ends straddle the ray's line crosses it above the
+    // point, so the crossings are the sign changes of x around a closed cycle: an even
+    // number. The per-edge test below cannot see this (an edge above the point may
+    // cross the ray), so it goes first, vertex by vertex, stopping at the first miss.
+    if let Some(m) = fixed {
+        if n > 0 && (0..n).all(|i| p.at(i).y > m) {
+            return Tri::Yes;
+        }
+    }
     let mut bv = if n > 0 { p.at(0) } else { Vect2::ZERO };
     for i in 0..n {
         let j = p.next(i);

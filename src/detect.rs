@@ -41,7 +41,16 @@ where
     P: VertexSeq + ?Sized,
     V: VertexSeq + ?Sized,
 {
-    same_window(Ball::exact(0.0), Ball::exact(t), s, v, p, vels, buff)
+    same_window(
+        Ball::exact(0.0),
+        Ball::exact(t),
+        s,
+        v,
+        p,
+        vels,
+        buff,
+        statically_shaped(vels),
+    )
 }
 
 /// detect_same_2D over the time window [ta, tb] of the original motion, which is what
@@ -51,9 +60,19 @@ where
 /// In the point's frame (origin s, each velocity relative to v): step 1 is
 /// definitely_outside of (p_i − s) + ta·(v_i − v), step 2 the same at tb, and step 3
 /// translates segments_close by s + ta·v_i: the relative path runs from ta·(v − v_i) to
-/// tb·(v − v_i), the edge from p_i − s to p_j − s + ta·(v_j − v_i).
+/// tb·(v − v_i), the edge from p_i − s to p_j − s + ta·(v_j − v_i). `stat` is
+/// [`statically_shaped`]`(vels)`, which the caller has at hand.
 #[allow(clippy::too_many_arguments)]
-fn same_window<P, V>(ta: Ball, tb: Ball, s: Vect2, v: Vect2, p: &P, vels: &V, buff: f64) -> Tri
+fn same_window<P, V>(
+    ta: Ball,
+    tb: Ball,
+    s: Vect2,
+    v: Vect2,
+    p: &P,
+    vels: &V,
+    buff: f64,
+    stat: bool,
+) -> Tri
 where
     P: VertexSeq + ?Sized,
     V: VertexSeq + ?Sized,
@@ -64,7 +83,6 @@ where
     }
     let mut acc = Tri::No;
     let v0 = vels.vertex(0);
-    let stat = statically_shaped(vels);
     for t in [ta, tb] {
         let outside = if t.is_exact_zero() {
             definitely_outside_rel(&AtTime { p, vels, s, v, t }, buff)
@@ -1274,7 +1292,7 @@ where
         return Tri::No;
     };
     if statically_shaped(vels) {
-        same_window(a, b, s, v, p, vels, buff)
+        same_window(a, b, s, v, p, vels, buff, true)
     } else {
         diff_window(a, b, s, v, p, vels, f, buff)
     }

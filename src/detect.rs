@@ -103,10 +103,16 @@ where
     // From a window starting at 0 the line passes through the point exactly: a static
     // bound suffices ([`PathLine`]); otherwise the side is taken on balls.
     let rel0 = BallV::diff(v, v0);
-    let (pa0, pb0) = (rel0.scale(ta), rel0.scale(tb));
-    let m0 = pb0.sub(pa0);
-    let line = PathLine::new(m0, buff);
     let from_zero = ta.is_exact_zero();
+    // From 0 the path starts at the point exactly (and m0 is its end).
+    let (pa0, pb0, m0) = if from_zero {
+        let pb0 = rel0.scale(tb);
+        (BallV::exact(Vect2::ZERO), pb0, pb0)
+    } else {
+        let (pa0, pb0) = (rel0.scale(ta), rel0.scale(tb));
+        (pa0, pb0, pb0.sub(pa0))
+    };
+    let line = PathLine::new(m0, buff);
     // The side of vertex k: from the rounded difference alone when the line passes
     // through the point (the static bound of [`PathLine`]), else on its ball.
     let sides = PathSides {

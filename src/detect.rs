@@ -391,9 +391,18 @@ fn float_set(a: f64, b: f64, c: f64, lo: f64, hi: f64, outer: bool) -> [Interval
     if !(a.is_finite() && b.is_finite() && c.is_finite()) {
         return if outer { [none, full] } else { [none, none] };
     }
-    if outer && below_zero_on(a, b, c, lo, hi) {
-        return [none, none];
-    }
+    // What an outer set falls back to when the roots cannot be had: everything, unless
+    // the quadratic is certainly negative all over the window (checked only then: with
+    // the roots in hand the clipped intervals say as much).
+    let unknown = || {
+        if !outer {
+            [none, none]
+        } else if below_zero_on(a, b, c, lo, hi) {
+            [none, none]
+        } else {
+            [none, full]
+        }
+    };
     if a == 0.0 {
         if b == 0.0 {
             return if c >= 0.0 { [none, full] } else { [none, none] };
@@ -411,15 +420,14 @@ fn float_set(a: f64, b: f64, c: f64, lo: f64, hi: f64, outer: bool) -> [Interval
         .sub(Ball::exact(a).mul(Ball::exact(c)).scale(4.0));
     let pos = positive(disc);
     if a > 0.0 {
-        if pos == Tri::No || (outer && pos == Tri::Unsure) {
-            return if pos == Tri::No || outer {
-                [none, full]
-            } else {
-                [none, none]
-            };
+        if pos == Tri::No {
+            return [none, full];
+        }
+        if pos == Tri::Unsure && outer {
+            return unknown();
         }
         let Some([r1, r2]) = root_bounds(a, b, c, disc) else {
-            return if outer { [none, full] } else { [none, none] };
+            return unknown();
         };
         if outer {
             [
@@ -437,7 +445,7 @@ fn float_set(a: f64, b: f64, c: f64, lo: f64, hi: f64, outer: bool) -> [Interval
             return [none, none];
         }
         let Some([r1, r2]) = root_bounds(a, b, c, disc) else {
-            return if outer { [none, full] } else { [none, none] };
+            return unknown();
         };
         if outer {
             [none, Interval::new(lo.max(r1.0), hi.min(r2.1))]
@@ -759,7 +767,12 @@ pub fn edge_detect_simp_tri(
     let (ilo, ihi) = (ta.hi().max(0.0), tb.lo());
     let yes_at = |t: f64| {
         let t = t.max(ilo).min(ihi);
-        ilo <= ihi && q.iter().all(|c| nonnegative(quad_at(c, t)) == Tri::Yes)
+        // The along conditions first: where the perpendicular ones meet, they are the
+        // ones that fail when the edge is missed.
+        ilo <= ihi
+            && [2, 3, 0, 1]
+                .iter()
+                .all(|&k| nonnegative(quad_at(&q[k], t)) == Tri::Yes)
     };
     // The perpendicular conditions hold only on the meetings J of their two outer sets,
     // short intervals around the times the point crosses the edge's line. On each J,

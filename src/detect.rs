@@ -407,8 +407,19 @@ fn float_set(a: f64, b: f64, c: f64, lo: f64, hi: f64, outer: bool) -> [Interval
         if b == 0.0 {
             return if c >= 0.0 { [none, full] } else { [none, none] };
         }
+        // An overflowed quotient is still a bound on its side once clamped (as in
+        // [`root_bounds`]): +∞ as a lower bound reads "above f64::MAX".
         let root = -c / b;
-        let (rl, rh) = (round_down(root), round_up(root));
+        let rl = if root == f64::INFINITY {
+            f64::MAX
+        } else {
+            round_down(root)
+        };
+        let rh = if root == f64::NEG_INFINITY {
+            -f64::MAX
+        } else {
+            round_up(root)
+        };
         return if b > 0.0 {
             [none, Interval::new(lo.max(if outer { rl } else { rh }), hi)]
         } else {
@@ -1419,6 +1430,17 @@ mod tests {
             Sign::Pos,
         );
         assert_encl(i, 0.0, 4.0);
+    }
+
+    /// Found by functions_vs_oracle: (ww + t·vv)·(aa + t·bb) = −1/16 for all t (ww·bb = 0
+    /// exactly, but its ball has a tiny radius, so the line's slope is a tiny float and
+    /// −c/b overflows). Rounding +∞ down gave NaN, and the set became everything.
+    #[test]
+    fn overflowing_linear_root_is_clamped() {
+        let (ww, vv, aa, bb) = (v(0.25, 0.0), v(0.0, 0.0), v(-0.25, 0.0), v(0.0, -0.25));
+        for s in Sign::BOTH {
+            assert!(dot_nn_lin(0.125, ww, vv, aa, bb, s).is_empty(), "{s:?}");
+        }
     }
 
     #[test]

@@ -395,12 +395,10 @@ fn float_set(a: f64, b: f64, c: f64, lo: f64, hi: f64, outer: bool) -> [Interval
     // the quadratic is certainly negative all over the window (checked only then: with
     // the roots in hand the clipped intervals say as much).
     let unknown = || {
-        if !outer {
-            [none, none]
-        } else if below_zero_on(a, b, c, lo, hi) {
-            [none, none]
-        } else {
+        if outer && !below_zero_on(a, b, c, lo, hi) {
             [none, full]
+        } else {
+            [none, none]
         }
     };
     if a == 0.0 {

@@ -41,6 +41,9 @@ where
     P: VertexSeq + ?Sized,
     V: VertexSeq + ?Sized,
 {
+    if !(buff >= 0.0) {
+        return Tri::Unsure; // BUFF < 0 or NaN: outside paper A's domain (crate docs)
+    }
     same_window(
         Ball::exact(0.0),
         Ball::exact(t),
@@ -1071,6 +1074,9 @@ where
     P: VertexSeq + ?Sized,
     V: VertexSeq + ?Sized,
 {
+    if !(buff >= 0.0) {
+        return Tri::Unsure; // BUFF < 0 or NaN: outside paper A's domain (crate docs)
+    }
     diff_window(Ball::exact(0.0), Ball::exact(t), s, v, p, vels, f, buff)
 }
 
@@ -1316,6 +1322,9 @@ where
     P: VertexSeq + ?Sized,
     V: VertexSeq + ?Sized,
 {
+    if !(buff >= 0.0) {
+        return Tri::Unsure; // BUFF < 0 or NaN: outside paper A's domain (crate docs)
+    }
     let Some((a, b)) = slab_window_balls(t, sz, vz, pmin, pmax, vsp) else {
         return Tri::No;
     };

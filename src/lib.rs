@@ -17,6 +17,11 @@
 //! engine "yes" where paper A says no happens only on an undecided comparison, within
 //! rounding of one of paper A's thresholds; `api::Detection::kind` says when that was
 //! the case (`Kind::Conservative`), and the `*_tri` forms return `Tri::Unsure`.
+//!
+//! Paper A takes BUFF > 0 (and a case must have it). The slice functions take any float:
+//! a BUFF below 0 (or NaN) is outside the paper's domain, and the functions that take
+//! one answer it undecided (`Tri::Unsure`: "yes", "near", "not definitely outside"),
+//! so the contract holds there too, without a certain answer.
 #![cfg_attr(not(feature = "std"), no_std)]
 
 /// The README's examples, compiled and run as doctests.

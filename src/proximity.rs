@@ -50,6 +50,9 @@ pub fn segments_close_rel(
     buff: f64,
     terms: impl Fn() -> Option<[Terms; 4]>,
 ) -> Tri {
+    if !(buff >= 0.0) {
+        return Tri::Unsure; // BUFF < 0 or NaN: outside paper A's domain (crate docs)
+    }
     let r = mx(mx(c.r, d.r), mx(e.r, f.r));
     let gap = crate::ball::up(2.0 * (buff + 2.0 * r));
     let apart = |a1: f64, a2: f64, b1: f64, b2: f64| {

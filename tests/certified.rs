@@ -2029,6 +2029,53 @@ fn detect_3d_tri_never_contradicts() {
     );
 }
 
+/// A negative BUFF lies outside paper A's domain (a case requires BUFF > 0), but the
+/// slice functions take any float, and paper A computed exactly still answers (its
+/// near_edge compares squared distances with BUFF², its perturbation moves nothing). The
+/// contract holds there too: the detectors and the predicates below them never answer a
+/// certain no (or "definitely outside") that paper-exact contradicts.
+#[test]
+fn negative_buff_is_never_a_certain_no() {
+    let scenes = prop_oneof![
+        scene(Kind::Same, 6).prop_map(|sc| (Kind::Same, sc)),
+        scene(Kind::Diff, 6).prop_map(|sc| (Kind::Diff, sc)),
+        scene(Kind::ThreeD, 6).prop_map(|sc| (Kind::ThreeD, sc)),
+    ];
+    run(
+        "negative_buff",
+        cases(128),
+        scenes,
+        |(kind, mut sc): (Kind, Scene), tally| {
+            sc.buff = -sc.buff;
+            let want = sc.oracle(kind);
+            let tri = sc.engine_tri(kind);
+            tally.note(tri, want);
+            check_tri(tri, want, "detector, negative BUFF")?;
+            // The predicates on the scene's first edge and its point.
+            let (pi, pj, s) = (sc.poly[0], sc.poly[1], sc.s);
+            let (ei, ej, es, eb) = (qv(pi), qv(pj), qv(s), q(sc.buff));
+            check_tri(
+                near_edge_tri(pi, pj, s, sc.buff),
+                oc::near_edge(&ei, &ej, &es, &eb),
+                "near_edge_tri, negative BUFF",
+            )?;
+            let end = s + sc.v.scale(sc.t);
+            check_tri(
+                segments_close_tri(s, end, pi, pj, sc.buff),
+                op::segments_close(&es, &qv(end), &ei, &ej, &eb),
+                "segments_close_tri, negative BUFF",
+            )?;
+            let poly: Vec<V2<Q>> = sc.poly.iter().map(|p| qv(*p)).collect();
+            prop_assert!(
+                !definitely_outside(&sc.poly[..], s, sc.buff)
+                    || oc::definitely_outside(&poly, &es, &eb),
+                "definitely_outside, negative BUFF: engine outside, paper-exact not"
+            );
+            Ok(())
+        },
+    );
+}
+
 /// End to end, statically shaped polygons: the oracle's validated, dispatched
 /// `paper_detect` yes ⇒ `api::detect` yes, on long relative paths.
 #[test]

@@ -216,8 +216,8 @@ pub fn near_edge_rel(
     buff: f64,
     terms: impl Fn() -> Option<(Terms, Terms)>,
 ) -> Tri {
-    if !(buff >= 0.0) {
-        return Tri::Unsure; // BUFF < 0 or NaN: outside paper A's domain (crate docs)
+    if pr::buff_outside_domain(buff) {
+        return Tri::Unsure;
     }
     // A non-finite coordinate comes with an infinite radius (see ball::bounded), so t is
     // then +∞ and nothing is filtered.
@@ -310,8 +310,8 @@ pub fn definitely_outside<P: VertexSeq + ?Sized>(p: &P, s: Vect2, buff: f64) -> 
 /// same edge of P, so its near_edge test is not repeated. An undecided perturbation
 /// leaves P*_BUFF unknown, and the answer can then only be `No` or `Unsure`.
 pub fn definitely_outside_rel<R: RelPoly + ?Sized>(p: &R, buff: f64) -> Tri {
-    if !(buff >= 0.0) {
-        return Tri::Unsure; // BUFF < 0 or NaN: outside paper A's domain (crate docs)
+    if pr::buff_outside_domain(buff) {
+        return Tri::Unsure;
     }
     let n = p.count();
     let mut acc = Tri::Yes;

@@ -41,8 +41,8 @@ where
     P: VertexSeq + ?Sized,
     V: VertexSeq + ?Sized,
 {
-    if !(buff >= 0.0) {
-        return Tri::Unsure; // BUFF < 0 or NaN: outside paper A's domain (crate docs)
+    if pr::buff_outside_domain(buff) {
+        return Tri::Unsure;
     }
     same_window(
         Ball::exact(0.0),
@@ -1074,8 +1074,8 @@ where
     P: VertexSeq + ?Sized,
     V: VertexSeq + ?Sized,
 {
-    if !(buff >= 0.0) {
-        return Tri::Unsure; // BUFF < 0 or NaN: outside paper A's domain (crate docs)
+    if pr::buff_outside_domain(buff) {
+        return Tri::Unsure;
     }
     diff_window(Ball::exact(0.0), Ball::exact(t), s, v, p, vels, f, buff)
 }
@@ -1322,8 +1322,8 @@ where
     P: VertexSeq + ?Sized,
     V: VertexSeq + ?Sized,
 {
-    if !(buff >= 0.0) {
-        return Tri::Unsure; // BUFF < 0 or NaN: outside paper A's domain (crate docs)
+    if pr::buff_outside_domain(buff) {
+        return Tri::Unsure;
     }
     let Some((a, b)) = slab_window_balls(t, sz, vz, pmin, pmax, vsp) else {
         return Tri::No;

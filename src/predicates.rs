@@ -769,6 +769,13 @@ pub fn lex_less(p: Vect2, q: Vect2) -> bool {
     p.x < q.x || (p.x == q.x && p.y < q.y)
 }
 
+/// BUFF outside paper A's domain (below 0, or NaN): the slice functions that take it
+/// answer undecided (see the crate docs' contract). −0 is in the domain, as 0.
+#[inline(always)]
+pub fn buff_outside_domain(buff: f64) -> bool {
+    buff.is_nan() || buff < 0.0
+}
+
 /// §II.H/§II.I dispatch: two input velocities are identical (exact float comparison).
 #[inline(always)]
 pub fn same_velocity(a: Vect2, b: Vect2) -> bool {

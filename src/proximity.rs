@@ -50,8 +50,8 @@ pub fn segments_close_rel(
     buff: f64,
     terms: impl Fn() -> Option<[Terms; 4]>,
 ) -> Tri {
-    if !(buff >= 0.0) {
-        return Tri::Unsure; // BUFF < 0 or NaN: outside paper A's domain (crate docs)
+    if pr::buff_outside_domain(buff) {
+        return Tri::Unsure;
     }
     let r = mx(mx(c.r, d.r), mx(e.r, f.r));
     let gap = crate::ball::up(2.0 * (buff + 2.0 * r));

@@ -108,8 +108,58 @@ fn points(v: &Value, field: &str) -> Result<Vec<Vect2>, CaseError> {
     Ok(out)
 }
 
+/// The keys each level of a case line may have (docs: the case format). `meta` holds
+/// annotations for people and tools (a kept counterexample's class, why a regression
+/// case is there); detection never reads it.
+const TOP_KEYS: [&str; 7] = ["id", "lookahead", "buff", "fac", "point", "polygon", "meta"];
+const POINT_KEYS: [&str; 2] = ["pos", "vel"];
+const POLYGON_KEYS: [&str; 5] = ["vertices", "velocities", "bottom", "top", "vz"];
+
+/// The first key of `obj` that is not in `known`, as an error naming its path (`prefix`
+/// is "" or "point." …) and the nearest known key when it is close: the same letters in
+/// another case, or at most three edits away (and fewer than half its letters).
+fn only_known(
+    obj: &Map<String, Value>,
+    known: &[&'static str],
+    prefix: &str,
+) -> Result<(), CaseError> {
+    let Some(key) = obj.keys().find(|k| !known.contains(&k.as_str())) else {
+        return Ok(());
+    };
+    let suggestion = known
+        .iter()
+        .map(|&k| (edit_distance(&key.to_lowercase(), k), k))
+        .filter(|&(d, k)| d <= 3 && 2 * d < k.len().max(key.len()))
+        .min_by_key(|&(d, _)| d)
+        .map(|(_, k)| k);
+    Err(CaseError::UnknownField {
+        field: format!("{prefix}{key}"),
+        suggestion,
+    })
+}
+
+/// Levenshtein distance (insertions, deletions, substitutions), by characters.
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut prev = row[0];
+        row[0] = i + 1;
+        for (j, &cb) in b.iter().enumerate() {
+            let here = row[j + 1];
+            row[j + 1] = (prev + usize::from(ca != cb)).min(row[j] + 1).min(here + 1);
+            prev = here;
+        }
+    }
+    row[b.len()]
+}
+
 /// Builds and validates a case from its JSON object.
 pub fn case_from_object(obj: &Map<String, Value>) -> Result<Case, CaseError> {
+    only_known(obj, &TOP_KEYS, "")?;
+    if let Some(m) = obj.get("meta") {
+        object(m, "meta")?;
+    }
     let lookahead = number(get(obj, "lookahead", "lookahead")?, "lookahead")?;
     let buff = number(get(obj, "buff", "buff")?, "buff")?;
     let mut params = Params::new(buff)?;
@@ -119,6 +169,7 @@ pub fn case_from_object(obj: &Map<String, Value>) -> Result<Case, CaseError> {
     }
 
     let point = object(get(obj, "point", "point")?, "point")?;
+    only_known(point, &POINT_KEYS, "point.")?;
     let pos = numbers(get(point, "pos", "point.pos")?, "point.pos")?;
     let vel = numbers(get(point, "vel", "point.vel")?, "point.vel")?;
     if pos.len() != 2 && pos.len() != 3 {
@@ -144,6 +195,7 @@ pub fn case_from_object(obj: &Map<String, Value>) -> Result<Case, CaseError> {
     };
 
     let poly = object(get(obj, "polygon", "polygon")?, "polygon")?;
+    only_known(poly, &POLYGON_KEYS, "polygon.")?;
     let vertices = points(
         get(poly, "vertices", "polygon.vertices")?,
         "polygon.vertices",
@@ -269,6 +321,53 @@ mod tests {
         assert!(err(&slab2d).starts_with("point.pos: 2D and 3D mixed"));
         // A number too large for an f64 is a syntax error of serde_json, not a panic.
         assert!(err(&GOOD.replace("10,", "1e400,")).starts_with("line:"));
+    }
+
+    /// A typo must never turn a hit into a miss: the misspelt `velocity` was read as a
+    /// polygon at rest. Every unknown key, at every level, is an error naming its path,
+    /// with the nearest known name when one is close.
+    #[test]
+    fn unknown_fields_are_errors() {
+        let cases = [
+            (
+                r#""velocities""#,
+                r#""velocity""#,
+                "polygon.velocity: unknown field; did you mean velocities?",
+            ),
+            (
+                r#""lookahead""#,
+                r#""look_ahead""#,
+                "look_ahead: unknown field; did you mean lookahead?",
+            ),
+            (
+                r#""vel""#,
+                r#""velo""#,
+                "point.velo: unknown field; did you mean vel?",
+            ),
+            (
+                r#""buff":0.01,"#,
+                r#""buff":0.01,"colour":"red","#,
+                "colour: unknown field",
+            ),
+            (
+                r#""vertices""#,
+                r#""Vertices""#,
+                "polygon.Vertices: unknown field; did you mean vertices?",
+            ),
+        ];
+        for (from, to, want) in cases {
+            let line = GOOD.replacen(from, to, 1);
+            assert_ne!(line, GOOD, "{from}");
+            assert_eq!(err(&line), want, "{line}");
+        }
+        // Annotations for people and tools go in `meta`, which detection never reads.
+        let meta = GOOD.replace(
+            r#""id":"a","#,
+            r#""id":"a","meta":{"class":"agree","why":"x"},"#,
+        );
+        assert_eq!(err(&meta), "ok");
+        let bad_meta = GOOD.replace(r#""id":"a","#, r#""id":"a","meta":3,"#);
+        assert_eq!(err(&bad_meta), "meta: must be an object");
     }
 
     #[test]

@@ -48,6 +48,12 @@ pub enum CaseError {
     SlabInverted { bottom: f64, top: f64 },
     /// The vertices run clockwise (negative signed area); the format wants counterclockwise.
     Clockwise { signed_area: f64 },
+    /// A key the format does not define (a typo must not be read as an absent field),
+    /// with the nearest defined name when one is close.
+    UnknownField {
+        field: String,
+        suggestion: Option<&'static str>,
+    },
 }
 
 #[cfg(feature = "std")]
@@ -59,7 +65,8 @@ impl CaseError {
             CaseError::Missing { field }
             | CaseError::WrongType { field, .. }
             | CaseError::NotFinite { field }
-            | CaseError::WrongLength { field, .. } => field.clone(),
+            | CaseError::WrongLength { field, .. }
+            | CaseError::UnknownField { field, .. } => field.clone(),
             CaseError::TooFewVertices { .. } | CaseError::Clockwise { .. } => {
                 String::from("polygon.vertices")
             }
@@ -102,6 +109,13 @@ impl fmt::Display for CaseError {
                 f,
                 "clockwise order (signed area {signed_area}); list the vertices counterclockwise"
             ),
+            CaseError::UnknownField { suggestion, .. } => {
+                write!(f, "unknown field")?;
+                match suggestion {
+                    Some(s) => write!(f, "; did you mean {s}?"),
+                    None => Ok(()),
+                }
+            }
         }
     }
 }

@@ -31,16 +31,17 @@ fn corpus_files() -> Vec<PathBuf> {
 fn replay(file: &Path, line_no: usize, line: &str) -> Result<Class, String> {
     let at = format!("{}:{line_no}", file.display());
     let value: Value = serde_json::from_str(line).map_err(|e| format!("{at}: not JSON: {e}"))?;
-    let recorded: Class = value
+    let meta = value.get("meta").cloned().unwrap_or(Value::Null);
+    let recorded: Class = meta
         .get("class")
         .cloned()
-        .ok_or_else(|| format!("{at}: no \"class\" field"))
+        .ok_or_else(|| format!("{at}: no \"meta.class\" field"))
         .and_then(|c| serde_json::from_value(c).map_err(|e| format!("{at}: class: {e}")))?;
-    match value.get("why") {
+    match meta.get("why") {
         Some(Value::String(w)) if !w.trim().is_empty() => {}
         _ => {
             return Err(format!(
-                "{at}: no \"why\" field saying why the case is here"
+                "{at}: no \"meta.why\" field saying why the case is here"
             ))
         }
     }

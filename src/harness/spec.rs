@@ -104,7 +104,7 @@ impl RawCase {
     }
 
     /// One line of the case format (shortest round-trip numbers), with an `id` and any
-    /// extra fields.
+    /// annotations (a kept counterexample's class, …) in its `meta` object.
     pub fn to_json_line(&self, id: &str, extra: &[(&str, serde_json::Value)]) -> String {
         let mut point = serde_json::Map::new();
         point.insert("pos".into(), serde_json::json!(self.pos));
@@ -124,8 +124,12 @@ impl RawCase {
         obj.insert("fac".into(), self.fac.into());
         obj.insert("point".into(), serde_json::Value::Object(point));
         obj.insert("polygon".into(), serde_json::Value::Object(poly));
-        for (k, v) in extra {
-            obj.insert((*k).into(), v.clone());
+        if !extra.is_empty() {
+            let meta: serde_json::Map<String, serde_json::Value> = extra
+                .iter()
+                .map(|(k, v)| ((*k).to_string(), v.clone()))
+                .collect();
+            obj.insert("meta".into(), serde_json::Value::Object(meta));
         }
         serde_json::Value::Object(obj).to_string()
     }

@@ -14,17 +14,96 @@ pub struct ParsedLine {
     pub case: Result<Case, CaseError>,
 }
 
-/// Reads one non-blank line of the case format.
-pub fn parse_line(line: &str, line_no: usize) -> ParsedLine {
-    let value: Value = match serde_json::from_str(line) {
-        Ok(v) => v,
-        Err(e) => {
-            return ParsedLine {
-                id: Value::from(line_no),
-                case: Err(CaseError::Syntax {
-                    message: e.to_string(),
-                }),
+/// A JSON value read strictly: an object that gives a key twice is an error naming the
+/// key (serde_json alone keeps the last value, silently).
+struct Strict(Value);
+
+impl<'de> serde::Deserialize<'de> for Strict {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        d.deserialize_any(StrictVisitor).map(Strict)
+    }
+}
+
+struct StrictVisitor;
+
+impl<'de> serde::de::Visitor<'de> for StrictVisitor {
+    type Value = Value;
+
+    fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str("a JSON value")
+    }
+    fn visit_bool<E>(self, b: bool) -> Result<Value, E> {
+        Ok(Value::Bool(b))
+    }
+    fn visit_i64<E>(self, x: i64) -> Result<Value, E> {
+        Ok(Value::from(x))
+    }
+    fn visit_u64<E>(self, x: u64) -> Result<Value, E> {
+        Ok(Value::from(x))
+    }
+    fn visit_f64<E>(self, x: f64) -> Result<Value, E> {
+        Ok(Value::from(x))
+    }
+    fn visit_str<E>(self, s: &str) -> Result<Value, E> {
+        Ok(Value::from(s))
+    }
+    fn visit_string<E>(self, s: String) -> Result<Value, E> {
+        Ok(Value::String(s))
+    }
+    fn visit_unit<E>(self) -> Result<Value, E> {
+        Ok(Value::Null)
+    }
+    fn visit_none<E>(self) -> Result<Value, E> {
+        Ok(Value::Null)
+    }
+    fn visit_some<D: serde::Deserializer<'de>>(self, d: D) -> Result<Value, D::Error> {
+        serde::Deserialize::deserialize(d).map(|Strict(v)| v)
+    }
+    fn visit_seq<A: serde::de::SeqAccess<'de>>(self, mut seq: A) -> Result<Value, A::Error> {
+        let mut out = Vec::new();
+        while let Some(Strict(v)) = seq.next_element()? {
+            out.push(v);
+        }
+        Ok(Value::Array(out))
+    }
+    fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<Value, A::Error> {
+        let mut out = Map::new();
+        while let Some(key) = map.next_key::<String>()? {
+            if out.contains_key(&key) {
+                return Err(serde::de::Error::custom(format_args!(
+                    "duplicate key `{key}`"
+                )));
             }
+            let Strict(v) = map.next_value()?;
+            out.insert(key, v);
+        }
+        Ok(Value::Object(out))
+    }
+}
+
+/// Reads one non-blank line of the case format. A byte-order mark in front (the first
+/// line of a file saved by some editors) is skipped.
+pub fn parse_line(line: &str, line_no: usize) -> ParsedLine {
+    let line = line.strip_prefix('\u{feff}').unwrap_or(line);
+    let value: Value = match serde_json::from_str::<Strict>(line) {
+        Ok(Strict(v)) => v,
+        Err(e) => {
+            // serde_json places the error "at line 1 column C" of this one line: say
+            // "at column C" (the file's line is in the answer). A line that is JSON but
+            // for a repeated key still gives its id back.
+            let text = e.to_string();
+            let message = match text.find(" at line ") {
+                Some(i) => format!("{} at column {}", &text[..i], e.column()),
+                None => text,
+            };
+            let id = serde_json::from_str::<Value>(line)
+                .ok()
+                .and_then(|v| v.get("id").cloned())
+                .unwrap_or_else(|| Value::from(line_no));
+            return ParsedLine {
+                id,
+                case: Err(CaseError::Syntax { message }),
+            };
         }
     };
     let Value::Object(obj) = value else {
@@ -368,6 +447,27 @@ mod tests {
         assert_eq!(err(&meta), "ok");
         let bad_meta = GOOD.replace(r#""id":"a","#, r#""id":"a","meta":3,"#);
         assert_eq!(err(&bad_meta), "meta: must be an object");
+    }
+
+    /// A key given twice would silently keep its last value: an error naming the key.
+    /// A byte-order mark before the first line is not part of the case.
+    #[test]
+    fn duplicate_keys_are_errors_and_a_bom_is_skipped() {
+        let twice = GOOD.replace(r#""buff":0.01,"#, r#""buff":0.01,"buff":5,"#);
+        assert!(
+            err(&twice).starts_with("line: not a JSON object: duplicate key `buff`"),
+            "{}",
+            err(&twice)
+        );
+        let nested = GOOD.replace(r#""vel":[0,1]"#, r#""vel":[0,1],"vel":[1,0]"#);
+        assert!(
+            err(&nested).contains("duplicate key `vel`"),
+            "{}",
+            err(&nested)
+        );
+        let bom = format!("\u{feff}{GOOD}");
+        assert_eq!(err(&bom), "ok");
+        assert_eq!(parse_line(&bom, 1).id, Value::from("a"));
     }
 
     #[test]

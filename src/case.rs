@@ -14,7 +14,7 @@ pub struct ParsedLine {
     pub case: Result<Case, CaseError>,
 }
 
-/// A JSON value read strictly: an object that gives a key twice is an error naming the
+/// The case format (not a paper function): a JSON value read strictly: an object that gives a key twice is an error naming the
 /// key (serde_json alone keeps the last value, silently).
 struct Strict(Value);
 

@@ -174,7 +174,7 @@ where
     acc
 }
 
-/// same_window's side test of a vertex against the relative path's line: from the
+/// Paper A §II.H step 3 (segments_close's filter): same_window's side test of a vertex against the relative path's line: from the
 /// rounded difference alone when the window starts at 0 (the line passes through the
 /// point: the static bound of [`PathLine`]), else on balls ([`pr::side_beyond`], out of
 /// line so that the common test stays inlined in the loop).
@@ -576,7 +576,7 @@ fn some_choice_meets(sets: &[[Interval; 2]; 4]) -> bool {
     first_meeting(sets).is_some()
 }
 
-/// The common part [lb, ub] of the first choice (one interval from each of the four
+/// Paper A §II.I edge_detect_simp step 2: the common part [lb, ub] of the first choice (one interval from each of the four
 /// pairs) that has one, as in [`some_choice_meets`].
 #[inline]
 fn first_meeting(sets: &[[Interval; 2]; 4]) -> Option<(f64, f64)> {
@@ -599,7 +599,7 @@ fn first_meeting(sets: &[[Interval; 2]; 4]) -> Option<(f64, f64)> {
     None
 }
 
-/// A quadratic with ball coefficients (t², t, 1) at an exact time t ≥ 0, by Horner's
+/// Paper A §II.I (edge_detect_simp): a quadratic with ball coefficients (t², t, 1) at an exact time t ≥ 0, by Horner's
 /// rule on balls: the exact quadratic's value at t lies in the result.
 #[inline(always)]
 fn quad_at(c: &[Ball; 3], t: f64) -> Ball {
@@ -715,7 +715,7 @@ fn simp_quadratics(
     [p_pos, p_neg, a_pos, a_neg]
 }
 
-/// The bound of [`simp_quadratics`] on |x·y − fl(x̃·ỹ)| (or the cross product) for
+/// Paper A §II.I (edge_detect_simp): the bound of [`simp_quadratics`] on |x·y − fl(x̃·ỹ)| (or the cross product) for
 /// vectors known within r_x and r_y per coordinate, n_x = ‖x̃‖₁, n_y = ‖ỹ‖₁:
 /// n_x·r_y + n_y·r_x + 2·r_x·r_y + 3u·n_x·n_y, raised by [`ball::up`].
 #[inline(always)]
@@ -1130,7 +1130,7 @@ where
 
 // ===================================================================== §III
 
-/// The exact sign of z[0] + z[1] + k·vz − k·vsp (k = σ·T, exact), by expansion: the
+/// Paper A §III step 1: the exact sign of z[0] + z[1] + k·vz − k·vsp (k = σ·T, exact), by expansion: the
 /// slab window's fallback when the static bound cannot tell. `None` when not finite.
 #[inline(never)]
 fn slab_sign_exact(z: [f64; 2], k: f64, vz: f64, vsp: f64) -> Option<i8> {

@@ -769,7 +769,7 @@ pub fn lex_less(p: Vect2, q: Vect2) -> bool {
     p.x < q.x || (p.x == q.x && p.y < q.y)
 }
 
-/// BUFF outside paper A's domain (below 0, or NaN): the slice functions that take it
+/// Paper A §II (BUFF > 0 throughout): BUFF outside the paper's domain (below 0, or NaN): the slice functions that take it
 /// answer undecided (see the crate docs' contract). −0 is in the domain, as 0.
 #[inline(always)]
 pub fn buff_outside_domain(buff: f64) -> bool {

@@ -21,8 +21,9 @@ use std::vec::Vec;
 use crate::ball::Tri;
 use crate::detect::{detect_3d_tri, detect_diff_2d_tri, detect_same_2d_tri, statically_shaped};
 use crate::error::CaseError;
+use crate::ring::{self, RingFault, Winding};
 use crate::vect2::Vect2;
-use crate::well_formed::well_formed;
+use crate::well_formed::{well_formed_fault, Fault};
 
 /// The paper's slack parameters: BUFF (§II.A), F (§II.I) and the corner angle κ (§II.J).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -38,7 +39,7 @@ impl Params {
     pub const DEFAULT_FAC: f64 = 1e-4;
     /// κ when none is given: 5° in radians. The paper leaves κ to the user (§II.J); 5°
     /// flags slivers without flagging the ordinary corners of weather polygons.
-    pub const DEFAULT_KAPPA: f64 = 5.0 * core::f64::consts::PI / 180.0;
+    pub const DEFAULT_KAPPA: f64 = 5.0 * (core::f64::consts::PI / 180.0);
 
     /// BUFF > 0 (finite) with the default F and κ.
     pub fn new(buff: f64) -> Result<Self, CaseError> {
@@ -79,6 +80,19 @@ impl Params {
         self.kappa = kappa;
         self.cos_kappa = kappa.cos();
         Ok(self)
+    }
+
+    /// κ in degrees, in the open interval (0, 180): the case format's `kappa`.
+    pub fn with_kappa_degrees(self, degrees: f64) -> Result<Self, CaseError> {
+        check_finite("kappa", degrees)?;
+        if !(degrees > 0.0 && degrees < 180.0) {
+            return Err(CaseError::OutOfRange {
+                field: "kappa",
+                value: degrees,
+                range: "(0, 180) degrees",
+            });
+        }
+        self.with_kappa(degrees.to_radians())
     }
 
     /// BUFF.
@@ -184,11 +198,29 @@ impl MovingPolygon {
             }
             None => vec![Vect2::ZERO; vertices.len()],
         };
-        let area2 = signed_area2(&vertices);
-        if area2 < 0.0 {
-            return Err(CaseError::Clockwise {
-                signed_area: area2 / 2.0,
-            });
+        // §II: a simple ring, counterclockwise. A crossing is its own error (a bow tie
+        // has no winding); a ring whose exact check would over- or underflow (coordinates
+        // beyond about 1e150, or differences below about 1e-150) keeps the float area's
+        // sign, as before the check existed.
+        match ring::check_simple(&vertices).and_then(|()| ring::winding(&vertices)) {
+            Ok(Winding::Counterclockwise) => {}
+            Ok(Winding::Clockwise) => {
+                return Err(CaseError::Clockwise {
+                    signed_area: signed_area2(&vertices) / 2.0,
+                })
+            }
+            Err(RingFault::Crossing { a, b }) => {
+                return Err(CaseError::SelfIntersecting { a, b });
+            }
+            Err(RingFault::ZeroArea) => return Err(CaseError::ZeroArea),
+            Err(RingFault::NotCheckable) => {
+                let area2 = signed_area2(&vertices);
+                if area2 < 0.0 {
+                    return Err(CaseError::Clockwise {
+                        signed_area: area2 / 2.0,
+                    });
+                }
+            }
         }
         Ok(MovingPolygon {
             vertices,
@@ -392,6 +424,9 @@ pub struct Detection {
     /// §II.J at t = 0, for information only: a polygon that is not well formed is still
     /// checked, never answered "no detection" for that reason.
     pub well_formed: bool,
+    /// Which §II.J rule fails when `well_formed` is false (the first, in the paper's
+    /// order).
+    pub well_formed_fault: Option<Fault>,
 }
 
 /// The three-valued decision: `Yes`/`No` certified, `Unsure` when a comparison could
@@ -437,6 +472,11 @@ pub fn detected(case: &Case) -> bool {
 /// velocities are equal, else detect_diff_2D; plus well_formed (§II.J) for information.
 pub fn detect(case: &Case) -> Detection {
     let tri = decide(case);
+    let fault = well_formed_fault(
+        &case.polygon.vertices[..],
+        case.params.buff,
+        case.params.cos_kappa,
+    );
     Detection {
         detected: tri.or_true(),
         kind: if tri == Tri::Unsure {
@@ -445,11 +485,8 @@ pub fn detect(case: &Case) -> Detection {
             Kind::Exact
         },
         method: case.method(),
-        well_formed: well_formed(
-            &case.polygon.vertices[..],
-            case.params.buff,
-            case.params.cos_kappa,
-        ),
+        well_formed: fault.is_none(),
+        well_formed_fault: fault,
     }
 }
 
@@ -554,20 +591,48 @@ mod tests {
 
     #[test]
     fn not_well_formed_still_detects() {
-        // A bow tie (not well formed) that the point starts inside of (the left lobe).
+        // A sliver with a 5.7° corner at (10, 0), sharper than κ = 10°: not well formed
+        // (§II.J rule 3), still answered. The point starts inside.
+        let sliver = vec![
+            Vect2::new(0.0, 0.0),
+            Vect2::new(10.0, 0.0),
+            Vect2::new(0.0, 1.0),
+        ];
+        let poly = MovingPolygon::new(sliver, None).unwrap();
+        let pt = MovingPoint::new_2d(Vect2::new(1.0, 0.5), Vect2::ZERO).unwrap();
+        let params = Params::new(0.01)
+            .and_then(|p| p.with_kappa(10f64.to_radians()))
+            .unwrap();
+        let c = Case::new(1.0, pt, poly, params).unwrap();
+        let d = detect(&c);
+        assert!(!d.well_formed);
+        assert_eq!(d.well_formed_fault, Some(Fault::SharpCorner(1)));
+        assert!(d.detected);
+        assert_eq!(d.method, Method::DetectSame2d);
+    }
+
+    /// A bow tie has no inside for §II's ray count and no winding: its own error, naming
+    /// the edges that cross (it used to pass, its shoelace area 0 counting as not
+    /// clockwise).
+    #[test]
+    fn a_self_intersecting_polygon_is_an_error() {
         let bow = vec![
             Vect2::new(0.0, 0.0),
             Vect2::new(4.0, 4.0),
             Vect2::new(4.0, 0.0),
             Vect2::new(0.0, 4.0),
         ];
-        // Its shoelace area is 0: accepted (not clockwise), flagged not well formed.
-        let poly = MovingPolygon::new(bow, None).unwrap();
-        let pt = MovingPoint::new_2d(Vect2::new(0.5, 2.0), Vect2::ZERO).unwrap();
-        let c = Case::new(1.0, pt, poly, Params::new(0.01).unwrap()).unwrap();
-        let d = detect(&c);
-        assert!(!d.well_formed);
-        assert!(d.detected);
-        assert_eq!(d.method, Method::DetectSame2d);
+        let e = MovingPolygon::new(bow, None).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "polygon.vertices: edges 0–1 and 2–3 cross (vertices numbered from 0); \
+             the polygon must not intersect itself"
+        );
+        let line = vec![
+            Vect2::new(0.0, 0.0),
+            Vect2::new(1.0, 1.0),
+            Vect2::new(3.0, 3.0),
+        ];
+        assert!(MovingPolygon::new(line, None).is_err());
     }
 }

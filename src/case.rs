@@ -84,6 +84,11 @@ impl<'de> serde::de::Visitor<'de> for StrictVisitor {
 /// Reads one non-blank line of the case format. A byte-order mark in front (the first
 /// line of a file saved by some editors) is skipped.
 pub fn parse_line(line: &str, line_no: usize) -> ParsedLine {
+    parse_line_with(line, line_no, DEFAULT_KAPPA_DEG)
+}
+
+/// [`parse_line`] with the κ (degrees) that a case without `kappa` gets.
+pub fn parse_line_with(line: &str, line_no: usize, default_kappa_deg: f64) -> ParsedLine {
     let line = line.strip_prefix('\u{feff}').unwrap_or(line);
     let value: Value = match serde_json::from_str::<Strict>(line) {
         Ok(Strict(v)) => v,
@@ -96,14 +101,22 @@ pub fn parse_line(line: &str, line_no: usize) -> ParsedLine {
                 Some(i) => format!("{} at column {}", &text[..i], e.column()),
                 None => text,
             };
-            let id = serde_json::from_str::<Value>(line)
-                .ok()
+            // NaN and ±Infinity (which Python's json writes) are not JSON: read them as
+            // marked strings to name their field and keep the id.
+            let lenient = serde_json::from_str::<Value>(&mark_non_json_numbers(line)).ok();
+            let id = lenient
+                .as_ref()
                 .and_then(|v| v.get("id").cloned())
+                .filter(|v| !is_marked(v))
                 .unwrap_or_else(|| Value::from(line_no));
-            return ParsedLine {
-                id,
-                case: Err(CaseError::Syntax { message }),
+            let marked = lenient
+                .as_ref()
+                .and_then(|v| first_marked(v, String::new()));
+            let case = match marked {
+                Some((field, literal)) => Err(CaseError::NotJsonNumber { field, literal }),
+                None => Err(CaseError::Syntax { message }),
             };
+            return ParsedLine { id, case };
         }
     };
     let Value::Object(obj) = value else {
@@ -120,7 +133,60 @@ pub fn parse_line(line: &str, line_no: usize) -> ParsedLine {
         .unwrap_or_else(|| Value::from(line_no));
     ParsedLine {
         id,
-        case: case_from_object(&obj),
+        case: case_from_object_with(&obj, default_kappa_deg),
+    }
+}
+
+/// The literals some writers put where JSON wants a number.
+const NON_JSON_NUMBERS: [&str; 4] = ["-Infinity", "Infinity", "NaN", "+Infinity"];
+/// A marked literal, as a string no JSON writer produces (a NUL character).
+const MARK: char = '\u{0}';
+
+/// `line` with every NaN/Infinity literal outside strings turned into the string
+/// "\u0000NaN" (etc.), so that a JSON reader can place it.
+fn mark_non_json_numbers(line: &str) -> String {
+    let mut out = String::with_capacity(line.len() + 16);
+    let mut in_string = false;
+    let mut escaped = false;
+    let mut rest = line;
+    while let Some(c) = rest.chars().next() {
+        if in_string {
+            in_string = c != '"' || escaped;
+            escaped = c == '\\' && !escaped;
+        } else if c == '"' {
+            in_string = true;
+        } else if let Some(lit) = NON_JSON_NUMBERS.iter().find(|l| rest.starts_with(**l)) {
+            out.push_str(&format!("\"\\u0000{lit}\""));
+            rest = &rest[lit.len()..];
+            continue;
+        }
+        out.push(c);
+        rest = &rest[c.len_utf8()..];
+    }
+    out
+}
+
+fn is_marked(v: &Value) -> bool {
+    v.as_str().is_some_and(|s| s.starts_with(MARK))
+}
+
+/// The path and literal of the first marked value in `v` (depth first, keys in order).
+fn first_marked(v: &Value, path: String) -> Option<(String, String)> {
+    match v {
+        Value::String(s) if is_marked(v) => Some((path, s.trim_start_matches(MARK).to_owned())),
+        Value::Array(a) => a
+            .iter()
+            .enumerate()
+            .find_map(|(k, x)| first_marked(x, format!("{path}[{k}]"))),
+        Value::Object(o) => o.iter().find_map(|(k, x)| {
+            let p = if path.is_empty() {
+                k.clone()
+            } else {
+                format!("{path}.{k}")
+            };
+            first_marked(x, p)
+        }),
+        _ => None,
     }
 }
 
@@ -190,7 +256,16 @@ fn points(v: &Value, field: &str) -> Result<Vec<Vect2>, CaseError> {
 /// The keys each level of a case line may have (docs: the case format). `meta` holds
 /// annotations for people and tools (a kept counterexample's class, why a regression
 /// case is there); detection never reads it.
-const TOP_KEYS: [&str; 7] = ["id", "lookahead", "buff", "fac", "point", "polygon", "meta"];
+const TOP_KEYS: [&str; 8] = [
+    "id",
+    "lookahead",
+    "buff",
+    "fac",
+    "kappa",
+    "point",
+    "polygon",
+    "meta",
+];
 const POINT_KEYS: [&str; 2] = ["pos", "vel"];
 const POLYGON_KEYS: [&str; 5] = ["vertices", "velocities", "bottom", "top", "vz"];
 
@@ -233,8 +308,21 @@ fn edit_distance(a: &str, b: &str) -> usize {
     row[b.len()]
 }
 
-/// Builds and validates a case from its JSON object.
+/// Builds and validates a case from its JSON object, κ at the format's default when the
+/// case gives none.
 pub fn case_from_object(obj: &Map<String, Value>) -> Result<Case, CaseError> {
+    case_from_object_with(obj, DEFAULT_KAPPA_DEG)
+}
+
+/// κ in degrees when neither the case nor the command line gives one (§II.J leaves it to
+/// the user).
+pub const DEFAULT_KAPPA_DEG: f64 = 5.0;
+
+/// [`case_from_object`] with the κ (degrees) that a case without `kappa` gets.
+pub fn case_from_object_with(
+    obj: &Map<String, Value>,
+    default_kappa_deg: f64,
+) -> Result<Case, CaseError> {
     only_known(obj, &TOP_KEYS, "")?;
     if let Some(m) = obj.get("meta") {
         object(m, "meta")?;
@@ -246,18 +334,17 @@ pub fn case_from_object(obj: &Map<String, Value>) -> Result<Case, CaseError> {
         None | Some(Value::Null) => {}
         Some(f) => params = params.with_fac(number(f, "fac")?)?,
     }
+    match obj.get("kappa") {
+        None | Some(Value::Null) => params = params.with_kappa_degrees(default_kappa_deg)?,
+        Some(k) => params = params.with_kappa_degrees(number(k, "kappa")?)?,
+    }
 
     let point = object(get(obj, "point", "point")?, "point")?;
     only_known(point, &POINT_KEYS, "point.")?;
     let pos = numbers(get(point, "pos", "point.pos")?, "point.pos")?;
     let vel = numbers(get(point, "vel", "point.vel")?, "point.vel")?;
     if pos.len() != 2 && pos.len() != 3 {
-        return Err(CaseError::WrongLength {
-            field: "point.pos".into(),
-            expected: 2,
-            found: pos.len(),
-            what: "numbers (2 for x, y or 3 for x, y, z)",
-        });
+        return Err(CaseError::PointLength { found: pos.len() });
     }
     if vel.len() != pos.len() {
         return Err(CaseError::WrongLength {
@@ -468,6 +555,65 @@ mod tests {
         let bom = format!("\u{feff}{GOOD}");
         assert_eq!(err(&bom), "ok");
         assert_eq!(parse_line(&bom, 1).id, Value::from("a"));
+    }
+
+    /// Python's json writes NaN and Infinity, which JSON lacks: the error names the field
+    /// and the id is kept (it said "expected value at line 1 column 64" and lost both).
+    #[test]
+    fn non_json_numbers_name_their_field_and_keep_the_id() {
+        for (lit, field) in [("NaN", "point.pos[0]"), ("-Infinity", "point.pos[0]")] {
+            let line = GOOD.replace(r#""pos":[5,-3]"#, &format!(r#""pos":[{lit},-3]"#));
+            let p = parse_line(&line, 3);
+            assert_eq!(p.id, Value::from("a"));
+            assert_eq!(
+                p.case.err().map(|e| e.to_string()),
+                Some(format!(
+                    "{field}: {lit} is not a JSON number; a case needs finite numbers"
+                ))
+            );
+        }
+        // inside a string it is text, not a number
+        let named = GOOD.replace(r#""id":"a""#, r#""id":"NaN run""#);
+        assert_eq!(parse_line(&named, 3).id, Value::from("NaN run"));
+        assert_eq!(err(&named), "ok");
+    }
+
+    /// A point of one number: 2 or 3 are allowed, and the message says both.
+    #[test]
+    fn a_point_of_one_number_says_two_or_three() {
+        let line = GOOD.replace(r#""pos":[5,-3]"#, r#""pos":[5]"#);
+        assert_eq!(
+            err(&line),
+            "point.pos: 1 number, 2 (x, y) or 3 (x, y, z) expected"
+        );
+    }
+
+    /// κ per case, in degrees, in (0, 180).
+    #[test]
+    fn kappa_is_read_in_degrees() {
+        let with =
+            |k: &str| GOOD.replace(r#""buff":0.01,"#, &format!(r#""buff":0.01,"kappa":{k},"#));
+        let c = parse_line(&with("30"), 1).case.expect("valid");
+        assert_eq!(c.params().kappa(), 30f64.to_radians());
+        assert_eq!(err(&with("180")), "kappa: 180 is outside (0, 180) degrees");
+        assert_eq!(err(&with("0")), "kappa: 0 is outside (0, 180) degrees");
+        let d = parse_line(GOOD, 1).case.expect("valid");
+        assert_eq!(d.params().kappa(), Params::DEFAULT_KAPPA);
+        let e = parse_line_with(GOOD, 1, 12.5).case.expect("valid");
+        assert_eq!(e.params().kappa(), 12.5f64.to_radians());
+    }
+
+    /// A bow tie is its own error naming the crossing edges, not "clockwise".
+    #[test]
+    fn a_bow_tie_names_its_edges() {
+        let line = GOOD.replace("[[0,0],[2,0],[2,2],[0,2]]", "[[0,0],[2,0],[0,2],[2,2]]");
+        assert_eq!(
+            err(&line),
+            "polygon.vertices: edges 1–2 and 3–0 cross (vertices numbered from 0); \
+             the polygon must not intersect itself"
+        );
+        let cw = GOOD.replace("[[0,0],[2,0],[2,2],[0,2]]", "[[0,0],[0,2],[2,2],[2,0]]");
+        assert!(err(&cw).starts_with("polygon.vertices: clockwise order"));
     }
 
     #[test]

@@ -48,6 +48,20 @@ pub enum CaseError {
     SlabInverted { bottom: f64, top: f64 },
     /// The vertices run clockwise (negative signed area); the format wants counterclockwise.
     Clockwise { signed_area: f64 },
+    /// Two edges of the ring meet although they are not neighbours (or neighbours fold
+    /// back over each other): a polygon that crosses itself has no inside for paper A's
+    /// containment test. Edges are named by their vertices' indices, from 0.
+    SelfIntersecting {
+        a: (usize, usize),
+        b: (usize, usize),
+    },
+    /// All vertices on one line: the polygon encloses nothing.
+    ZeroArea,
+    /// NaN, Infinity or -Infinity written where a number belongs (Python's `json`
+    /// writes them; JSON has no such literal).
+    NotJsonNumber { field: String, literal: String },
+    /// `point.pos` holds neither 2 nor 3 numbers.
+    PointLength { found: usize },
     /// A key the format does not define (a typo must not be read as an absent field),
     /// with the nearest defined name when one is close.
     UnknownField {
@@ -66,10 +80,13 @@ impl CaseError {
             | CaseError::WrongType { field, .. }
             | CaseError::NotFinite { field }
             | CaseError::WrongLength { field, .. }
-            | CaseError::UnknownField { field, .. } => field.clone(),
-            CaseError::TooFewVertices { .. } | CaseError::Clockwise { .. } => {
-                String::from("polygon.vertices")
-            }
+            | CaseError::UnknownField { field, .. }
+            | CaseError::NotJsonNumber { field, .. } => field.clone(),
+            CaseError::TooFewVertices { .. }
+            | CaseError::Clockwise { .. }
+            | CaseError::SelfIntersecting { .. }
+            | CaseError::ZeroArea => String::from("polygon.vertices"),
+            CaseError::PointLength { .. } => String::from("point.pos"),
             CaseError::NotPositive { field, .. }
             | CaseError::OutOfRange { field, .. }
             | CaseError::DimensionMismatch { field, .. } => String::from(*field),
@@ -97,6 +114,14 @@ impl fmt::Display for CaseError {
                 what,
                 ..
             } => {
+                // "1 numbers (…)" reads badly: the singular for one
+                let what = if *found == 1 {
+                    what.replacen("numbers", "number", 1)
+                        .replacen("velocities", "velocity", 1)
+                        .replacen("points", "point", 1)
+                } else {
+                    String::from(*what)
+                };
                 write!(f, "{found} {what}, {expected} expected")
             }
             CaseError::NotPositive { value, .. } => write!(f, "{value} is not > 0"),
@@ -109,6 +134,24 @@ impl fmt::Display for CaseError {
                 f,
                 "clockwise order (signed area {signed_area}); list the vertices counterclockwise"
             ),
+            CaseError::SelfIntersecting { a, b } => write!(
+                f,
+                "edges {}–{} and {}–{} cross (vertices numbered from 0); \
+                 the polygon must not intersect itself",
+                a.0, a.1, b.0, b.1
+            ),
+            CaseError::ZeroArea => write!(
+                f,
+                "the vertices lie on one line; the polygon encloses nothing"
+            ),
+            CaseError::NotJsonNumber { literal, .. } => write!(
+                f,
+                "{literal} is not a JSON number; a case needs finite numbers"
+            ),
+            CaseError::PointLength { found } => {
+                let s = if *found == 1 { "number" } else { "numbers" };
+                write!(f, "{found} {s}, 2 (x, y) or 3 (x, y, z) expected")
+            }
             CaseError::UnknownField { suggestion, .. } => {
                 write!(f, "unknown field")?;
                 match suggestion {

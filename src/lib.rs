@@ -42,6 +42,8 @@ pub mod case;
 pub mod cli;
 #[cfg(feature = "cli")]
 pub mod harness;
+#[cfg(any(feature = "cli", feature = "earth"))]
+pub mod json;
 
 #[cfg(feature = "std")]
 pub mod api;
@@ -55,6 +57,8 @@ pub mod polygon;
 pub mod predicates;
 pub mod proximity;
 pub mod quad;
+#[cfg(feature = "std")]
+pub mod ring;
 pub mod vect2;
 pub mod well_formed;
 

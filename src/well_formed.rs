@@ -10,6 +10,47 @@ fn adjacent(i: usize, k: usize, n: usize) -> bool {
     i == k || (i + 1) % n == k || (k + 1) % n == i
 }
 
+/// Which rule of paper A §II.J a polygon breaks (vertex indices from 0).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Fault {
+    /// Rule 1: vertices i and j are closer than 2·BUFF.
+    CloseVertices(usize, usize),
+    /// Rule 2: the edges starting at vertices i and k (not neighbours) come within BUFF.
+    CloseEdges(usize, usize),
+    /// Rule 3: the corner at vertex j is sharper than κ.
+    SharpCorner(usize),
+    /// Rule 4: the polygon turns right (or goes straight) at its extremal vertex m.
+    TurnsRight(usize),
+}
+
+#[cfg(feature = "std")]
+impl core::fmt::Display for Fault {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match *self {
+            Fault::CloseVertices(i, j) => {
+                write!(
+                    f,
+                    "§II.J rule 1: vertices {i} and {j} are closer than 2·BUFF"
+                )
+            }
+            Fault::CloseEdges(i, k) => write!(
+                f,
+                "§II.J rule 2: the edges from vertex {i} and from vertex {k} come within BUFF"
+            ),
+            Fault::SharpCorner(j) => {
+                write!(
+                    f,
+                    "§II.J rule 3: the corner at vertex {j} is sharper than κ"
+                )
+            }
+            Fault::TurnsRight(m) => write!(
+                f,
+                "§II.J rule 4: the polygon does not turn left at its extremal vertex {m}"
+            ),
+        }
+    }
+}
+
 /// Paper A §II.J well_formed(P, BUFF) with the corner angle κ given as cos κ.
 ///
 /// False when: (1) two vertices are closer than 2·BUFF; (2) two non-adjacent edges are
@@ -21,14 +62,20 @@ fn adjacent(i: usize, k: usize, n: usize) -> bool {
 /// polygon turns left. Step 4's printed "(p_i − p_(i−1)*)·(p_(i+1)* − p_i)⊥ ≤ 0" uses
 /// the right perpendicular: the cross product of the incoming and outgoing edges.
 pub fn well_formed<P: VertexSeq + ?Sized>(p: &P, buff: f64, cos_kappa: f64) -> bool {
+    p.count() >= 3 && well_formed_fault(p, buff, cos_kappa).is_none()
+}
+
+/// Paper A §II.J: the first rule [`well_formed`] finds broken, in the paper's order
+/// (`None`: well formed, or fewer than 3 vertices, which no rule speaks of).
+pub fn well_formed_fault<P: VertexSeq + ?Sized>(p: &P, buff: f64, cos_kappa: f64) -> Option<Fault> {
     let n = p.count();
     if n < 3 {
-        return false;
+        return None;
     }
     for i in 0..n {
         for j in (i + 1)..n {
             if pr::vertices_too_close(p.vertex(i), p.vertex(j), buff) {
-                return false;
+                return Some(Fault::CloseVertices(i, j));
             }
         }
     }
@@ -40,17 +87,17 @@ pub fn well_formed<P: VertexSeq + ?Sized>(p: &P, buff: f64, cos_kappa: f64) -> b
             let (a, b) = (p.vertex(i), p.vertex(p.next(i)));
             let (c, d) = (p.vertex(k), p.vertex(p.next(k)));
             if segments_close(a, b, c, d, buff) {
-                return false;
+                return Some(Fault::CloseEdges(i, k));
             }
         }
     }
-    for i in 0..n {
-        let j = p.next(i);
+    for j in 0..n {
+        let i = if j == 0 { n - 1 } else { j - 1 };
         let k = p.next(j);
         let g = p.vertex(j) - p.vertex(i);
         let h = p.vertex(k) - p.vertex(j);
         if pr::corner_too_sharp(g, h, cos_kappa) {
-            return false;
+            return Some(Fault::SharpCorner(j));
         }
     }
     let mut m = 0;
@@ -60,7 +107,8 @@ pub fn well_formed<P: VertexSeq + ?Sized>(p: &P, buff: f64, cos_kappa: f64) -> b
         }
     }
     let prev = p.vertex(if m == 0 { n - 1 } else { m - 1 });
-    !pr::turns_right_or_straight(prev, p.vertex(m), p.vertex(p.next(m)))
+    pr::turns_right_or_straight(prev, p.vertex(m), p.vertex(p.next(m)))
+        .then_some(Fault::TurnsRight(m))
 }
 
 #[cfg(test)]

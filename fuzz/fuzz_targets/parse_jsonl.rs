@@ -35,6 +35,7 @@ fuzz_target!(|data: &[u8]| {
         engine: Engine::F64,
         repeat: 1,
         timing: false,
+        kappa: polyguard::case::DEFAULT_KAPPA_DEG,
     };
     let mut out = Vec::new();
     if let Err(e) = process(&data[..end], &mut out, &args) {

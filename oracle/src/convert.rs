@@ -6,6 +6,10 @@
 
 use crate::case::{OracleError, Raw};
 use crate::field::{ExactField, V2};
+use crate::truth::ExactTime;
+use core::cmp::Ordering;
+use num_bigint::BigInt;
+use num_rational::BigRational;
 
 /// A case as the f64 engine sees it (spec/cases.md), borrowed.
 #[derive(Clone, Copy, Debug)]
@@ -196,5 +200,89 @@ mod tests {
         for bad in ["", "1/0", "a", "1/", "/2", "1.2.3", "-", ".", "1e3", "--1"] {
             assert_eq!(h(bad), None, "{bad}");
         }
+    }
+}
+
+/// The f64 nearest to an exact time (a tie may go either way), found by bisection over
+/// the ordered floats with exact comparisons only: the number an answer line prints,
+/// next to the exact text.
+pub fn time_to_f64(t: &ExactTime) -> f64 {
+    // floats in order: the bit pattern as an i64, negatives' magnitude bits flipped
+    // (i128 so that hi − lo cannot overflow)
+    let key = |x: f64| {
+        let k = x.to_bits() as i64;
+        i128::from(if k < 0 { k ^ i64::MAX } else { k })
+    };
+    let float = |k: i128| {
+        let k = k as i64;
+        f64::from_bits((if k < 0 { k ^ i64::MAX } else { k }) as u64)
+    };
+    let exact = |x: f64| BigRational::from_float(x).unwrap_or_default();
+    let (mut lo, mut hi) = (key(-f64::MAX), key(f64::MAX));
+    if t.cmp_rational(&exact(float(lo))) == Ordering::Less {
+        return f64::NEG_INFINITY;
+    }
+    if t.cmp_rational(&exact(float(hi))) == Ordering::Greater {
+        return f64::INFINITY;
+    }
+    // invariant: float(lo) ≤ self < float(hi), or self = float(hi) at the top
+    while hi - lo > 1 {
+        let mid = lo + (hi - lo) / 2;
+        if t.cmp_rational(&exact(float(mid))) == Ordering::Less {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    let (a, b) = (float(lo), float(hi));
+    let half = (exact(a) + exact(b)) / BigRational::from_integer(BigInt::from(2));
+    if t.cmp_rational(&half) == Ordering::Greater {
+        b
+    } else {
+        a
+    }
+}
+
+#[cfg(test)]
+mod time_tests {
+    use super::*;
+
+    fn rat(p: i64, q: i64) -> BigRational {
+        BigRational::new(BigInt::from(p), BigInt::from(q))
+    }
+
+    /// The printed float is the nearest: no float lies strictly closer to the exact time
+    /// (checked exactly against both neighbours).
+    fn nearest(t: &ExactTime) -> f64 {
+        let f = time_to_f64(t);
+        let q = |x: f64| BigRational::from_float(x).expect("finite");
+        for g in [f.next_down(), f.next_up()] {
+            // g closer than f would put t beyond the midpoint of f and g
+            let mid = (q(f) + q(g)) / rat(2, 1);
+            let beyond = t.cmp_rational(&mid);
+            let toward_g = if g > f {
+                Ordering::Greater
+            } else {
+                Ordering::Less
+            };
+            assert_ne!(beyond, toward_g, "{t}: {g} is closer than {f}");
+        }
+        f
+    }
+
+    #[test]
+    fn time_to_f64_is_the_nearest_float() {
+        assert_eq!(nearest(&ExactTime::rational(rat(1, 3))), 1.0 / 3.0);
+        assert_eq!(nearest(&ExactTime::rational(rat(0, 1))), 0.0);
+        assert_eq!(nearest(&ExactTime::rational(rat(-7, 2))), -3.5);
+        let sqrt2 = ExactTime::new(rat(0, 1), rat(1, 1), rat(2, 1));
+        assert!(!sqrt2.is_rational());
+        assert_eq!(nearest(&sqrt2), 2f64.sqrt());
+        let tiny = ExactTime::new(rat(0, 1), rat(1, 1), rat(1, 7) * rat(1, 1 << 40));
+        nearest(&tiny);
+        let shifted = ExactTime::new(rat(3, 1), rat(-1, 5), rat(11, 1));
+        nearest(&shifted);
+        assert_eq!(sqrt2.exact_text(), sqrt2.to_string());
+        assert_eq!(ExactTime::rational(rat(6, 4)).exact_text(), "3/2");
     }
 }

@@ -153,6 +153,15 @@ impl ExactTime {
         crate::qfield::sign1(&alpha, &self.b, &self.d)
     }
 
+    /// The exact value as text: "p/q" when rational, else "a + b·√d" with a, b, d in
+    /// lowest terms.
+    pub fn exact_text(&self) -> String {
+        match self.as_rational_string() {
+            Some(r) => r,
+            None => self.to_string(),
+        }
+    }
+
     /// The decimal expansion with `digits` digits after the point, rounded
     /// toward −∞ (exact: no digit is ever wrong).
     pub fn to_decimal_string(&self, digits: usize) -> String {

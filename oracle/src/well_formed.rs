@@ -27,18 +27,65 @@ pub fn extremal_vertex<F: ExactField>(poly: &[V2<F>]) -> Option<usize> {
     })
 }
 
+/// Which rule of paper A §II.J a polygon breaks (vertex indices from 0); the engine's
+/// `well_formed::Fault`, decided exactly.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Fault {
+    /// Rule 1: vertices i and j are closer than 2·BUFF.
+    CloseVertices(usize, usize),
+    /// Rule 2: the edges starting at vertices i and k (not neighbours) come within BUFF.
+    CloseEdges(usize, usize),
+    /// Rule 3: the corner at vertex j is sharper than κ.
+    SharpCorner(usize),
+    /// Rule 4: no left turn at the extremal vertex m.
+    TurnsRight(usize),
+}
+
+impl core::fmt::Display for Fault {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match *self {
+            Fault::CloseVertices(i, j) => {
+                write!(
+                    f,
+                    "§II.J rule 1: vertices {i} and {j} are closer than 2·BUFF"
+                )
+            }
+            Fault::CloseEdges(i, k) => write!(
+                f,
+                "§II.J rule 2: the edges from vertex {i} and from vertex {k} come within BUFF"
+            ),
+            Fault::SharpCorner(j) => {
+                write!(
+                    f,
+                    "§II.J rule 3: the corner at vertex {j} is sharper than κ"
+                )
+            }
+            Fault::TurnsRight(m) => write!(
+                f,
+                "§II.J rule 4: the polygon does not turn left at its extremal vertex {m}"
+            ),
+        }
+    }
+}
+
 /// Paper A §II.J: well_formed(P, BUFF) with the angle threshold given as cos κ.
 pub fn well_formed<F: ExactField>(poly: &[V2<F>], buff: &F, cos_kappa: &F) -> bool {
+    poly.len() >= 3 && well_formed_fault(poly, buff, cos_kappa).is_none()
+}
+
+/// Paper A §II.J: the first rule broken, in the paper's order (`None`: well formed, or
+/// fewer than 3 vertices).
+pub fn well_formed_fault<F: ExactField>(poly: &[V2<F>], buff: &F, cos_kappa: &F) -> Option<Fault> {
     let n = poly.len();
     if n < 3 {
-        return false;
+        return None;
     }
     // Step 1: vertices pairwise at least 2·BUFF apart.
     let four_b2 = F::from_i64(4).times(&buff.sq());
     for i in 0..n {
         for j in (i + 1)..n {
             if poly[i].minus(&poly[j]).sq() < four_b2 {
-                return false;
+                return Some(Fault::CloseVertices(i, j));
             }
         }
     }
@@ -52,7 +99,7 @@ pub fn well_formed<F: ExactField>(poly: &[V2<F>], buff: &F, cos_kappa: &F) -> bo
             let (pi, pj) = (&poly[i], &poly[(i + 1) % n]);
             let (pq, pk) = (&poly[k], &poly[(k + 1) % n]);
             if segments_close(pi, pj, pq, pk, buff) {
-                return false;
+                return Some(Fault::CloseEdges(i, k));
             }
         }
     }
@@ -63,16 +110,14 @@ pub fn well_formed<F: ExactField>(poly: &[V2<F>], buff: &F, cos_kappa: &F) -> bo
         let g = poly[j].minus(&poly[i]);
         let h = poly[k].minus(&poly[j]);
         if sharp_corner(&g, &h, cos_kappa) {
-            return false;
+            return Some(Fault::SharpCorner(j));
         }
     }
     // Step 4: a left turn at the extremal vertex (counterclockwise order):
     // fail when (p_i − p_prev)·(p_next − p_i)^⊥ ≤ 0.
-    let Some(i) = extremal_vertex(poly) else {
-        return false;
-    };
+    let i = extremal_vertex(poly)?;
     let prev = &poly[(i + n - 1) % n];
     let next = &poly[(i + 1) % n];
     let turn = poly[i].minus(prev).cross(&next.minus(&poly[i]));
-    turn.is_pos()
+    (!turn.is_pos()).then_some(Fault::TurnsRight(i))
 }

@@ -11,7 +11,7 @@ use std::time::Instant;
 use serde_json::{json, Map, Value};
 
 use crate::api::{self, Case};
-use crate::case::parse_line;
+use crate::case::parse_line_with;
 use crate::harness::classify::Exact;
 use crate::harness::spec::RawCase;
 
@@ -43,6 +43,10 @@ pub struct DetectArgs {
     /// Print the engine's time per call (I/O and parsing excluded) per group to stderr.
     #[arg(long)]
     pub timing: bool,
+    /// κ, the corner angle of the well-formedness report (§II.J), in degrees, for cases
+    /// that give no `kappa` of their own.
+    #[arg(long, default_value_t = crate::case::DEFAULT_KAPPA_DEG)]
+    pub kappa: f64,
 }
 
 /// Timing totals of one group of cases.
@@ -69,6 +73,29 @@ fn exact_case(case: &Case) -> Result<polyguard_oracle::ExactCase<Exact>, String>
         .map_err(|e| e.to_string())
 }
 
+/// `well_formed` and, when false, `well_formed_reason`: which §II.J rule failed.
+fn well_formed_fields(out: &mut Map<String, Value>, fault: Option<impl std::fmt::Display>) {
+    out.insert("well_formed".into(), fault.is_none().into());
+    if let Some(f) = fault {
+        out.insert("well_formed_reason".into(), f.to_string().into());
+    }
+}
+
+/// §II.J decided exactly (the exact and truth engines): κ enters as the f64 cos κ that
+/// the f64 engine uses, read as the rational it denotes.
+fn exact_well_formed(
+    case: &Case,
+    exact: &polyguard_oracle::ExactCase<Exact>,
+) -> Result<Option<polyguard_oracle::well_formed::Fault>, String> {
+    let cos_kappa = polyguard_oracle::convert::f64_to_exact::<Exact>(case.params().cos_kappa())
+        .ok_or("kappa: cos κ is not finite")?;
+    Ok(polyguard_oracle::well_formed::well_formed_fault(
+        &exact.vertices,
+        &exact.buff,
+        &cos_kappa,
+    ))
+}
+
 /// Answers one valid case with the chosen engine; the fields after `id`.
 fn answer(case: &Case, engine: Engine, out: &mut Map<String, Value>) -> Result<(), String> {
     match engine {
@@ -77,27 +104,30 @@ fn answer(case: &Case, engine: Engine, out: &mut Map<String, Value>) -> Result<(
             out.insert("detected".into(), d.detected.into());
             out.insert("kind".into(), d.kind.name().into());
             out.insert("decided_by".into(), d.method.name().into());
-            out.insert("well_formed".into(), d.well_formed.into());
+            well_formed_fields(out, d.well_formed_fault);
         }
         Engine::Plain => {
             out.insert("detected".into(), api::detected_plain(case).into());
             out.insert("decided_by".into(), case.method().name().into());
+            well_formed_fields(out, api::detect(case).well_formed_fault);
         }
         Engine::Exact => {
             let exact = exact_case(case)?;
             let a = polyguard_oracle::paper_detect(&exact);
             out.insert("detected".into(), a.detected.into());
             out.insert("decided_by".into(), a.decided_by.into());
+            well_formed_fields(out, exact_well_formed(case, &exact)?);
         }
         Engine::Truth => {
             let exact = exact_case(case)?;
             match polyguard_oracle::truth(&exact) {
                 polyguard_oracle::Truth::Enters { entry_time } => {
                     out.insert("detected".into(), true.into());
-                    out.insert("entry_time".into(), entry_time.to_decimal_string(17).into());
-                    if let Some(r) = entry_time.as_rational_string() {
-                        out.insert("entry_time_exact".into(), r.into());
-                    }
+                    out.insert(
+                        "entry_time".into(),
+                        polyguard_oracle::convert::time_to_f64(&entry_time).into(),
+                    );
+                    out.insert("entry_time_exact".into(), entry_time.exact_text().into());
                 }
                 polyguard_oracle::Truth::Misses => {
                     out.insert("detected".into(), false.into());
@@ -107,6 +137,7 @@ fn answer(case: &Case, engine: Engine, out: &mut Map<String, Value>) -> Result<(
                 }
             }
             out.insert("decided_by".into(), "truth".into());
+            well_formed_fields(out, exact_well_formed(case, &exact)?);
         }
     }
     Ok(())
@@ -121,6 +152,10 @@ fn open(file: &Option<PathBuf>) -> io::Result<Box<dyn BufRead>> {
 
 /// Runs `polyguard detect`: one answer line per non-blank input line, in order.
 pub fn run(args: &DetectArgs) -> ExitCode {
+    if let Err(e) = api::Params::new(1.0).and_then(|p| p.with_kappa_degrees(args.kappa)) {
+        eprintln!("polyguard detect: --kappa: {e}");
+        return ExitCode::from(2);
+    }
     let reader = match open(&args.file) {
         Ok(r) => r,
         Err(e) => {
@@ -184,7 +219,7 @@ pub fn process<R: BufRead, W: Write>(
         if text.trim().is_empty() {
             continue;
         }
-        let parsed = parse_line(text, line_no);
+        let parsed = parse_line_with(text, line_no, args.kappa);
         obj.insert("id".into(), parsed.id);
         let result = parsed.case.map_err(|e| e.to_string()).and_then(|case| {
             // The engine asked for is the one timed: its decision alone for f64 and plain,

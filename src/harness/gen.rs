@@ -335,13 +335,13 @@ pub fn case<S: Source>(src: &mut S, shape: Shape, mode: Mode) -> (RawCase, f64) 
 /// original case at time 0 (up to the rounding of the far-away starts), and over its
 /// lookahead the polygon warps exactly as much as the original did over T, while the
 /// point travels K times as far relative to it. Returns K; 1 (the case unchanged) when
-/// the polygon at time 0, the original one warped backwards, is no longer
+/// the polygon at time 0, the original one warped backwards, is no longer simple and
 /// counterclockwise.
 pub fn stretch<S: Source>(src: &mut S, raw: &mut RawCase) -> f64 {
     let original = raw.clone();
     let k = stretch_by(src, raw);
     let verts: Vec<Vect2> = raw.vertices.iter().map(|&p| p.into()).collect();
-    if crate::api::signed_area2(&verts) > 0.0 {
+    if crate::ring::simple_ccw(&verts) {
         k
     } else {
         *raw = original;

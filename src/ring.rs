@@ -1,0 +1,234 @@
+//! Is a polygon's ring simple, and which way does it run? Paper A §II takes P as a
+//! simple polygon listed counterclockwise (its containment test §II.B–E counts ray
+//! crossings, which mean nothing on a ring that crosses itself). These are the checks a
+//! case's vertices pass before any paper function sees them; every sign is exact.
+//!
+//! Rounding: each orientation is first taken in floats with Shewchuk's static bound for
+//! orient2d, |det − fl(det)| ≤ (3 + 16u)·u·(|l| + |r|) where l and r are the two rounded
+//! products (u = 2⁻⁵³); when the float value is within that bound of zero the sign comes
+//! from an exact expansion ([`crate::ball::exact`]). The exact step declines (`None`)
+//! only when a product over- or underflows; such a ring is then reported as not
+//! checkable rather than guessed.
+
+use crate::ball::exact;
+use crate::vect2::Vect2;
+
+/// Shewchuk's ccwerrboundA, (3 + 16u)·u, u = 2⁻⁵³.
+const ORIENT_BOUND: f64 = (3.0 + 16.0 * f64::EPSILON / 2.0) * (f64::EPSILON / 2.0);
+
+/// The exact sign of (b − a) × (c − a): +1 when a, b, c turn left (counterclockwise),
+/// −1 right, 0 collinear; `None` when an exact product would over- or underflow.
+pub fn orient(a: Vect2, b: Vect2, c: Vect2) -> Option<i8> {
+    let l = (b.x - a.x) * (c.y - a.y);
+    let r = (b.y - a.y) * (c.x - a.x);
+    let det = l - r;
+    let bound = ORIENT_BOUND * (l.abs() + r.abs());
+    if det.is_finite() && bound.is_finite() && det.abs() > bound {
+        return Some(if det > 0.0 { 1 } else { -1 });
+    }
+    exact::sign_cross(&[b.x, -a.x], &[b.y, -a.y], &[c.x, -a.x], &[c.y, -a.y])
+}
+
+/// The exact sign of (b − a)·(c − a); `None` as in [`orient`].
+fn dot_sign(a: Vect2, b: Vect2, c: Vect2) -> Option<i8> {
+    // (b − a)·(c − a) = (b − a) × ((c − a) turned left): x·x' + y·y' = x·y'' − y·x''
+    // with (x'', y'') = (−(c − a)_y, (c − a)_x).
+    exact::sign_cross(&[b.x, -a.x], &[b.y, -a.y], &[a.y, -c.y], &[c.x, -a.x])
+}
+
+/// Why a ring is not a simple polygon (vertex indices as given, from 0).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RingFault {
+    /// Edges a0→a1 and b0→b1 share a point although they are not neighbours (or, when
+    /// neighbours, overlap beyond their common vertex: a spike).
+    Crossing {
+        a: (usize, usize),
+        b: (usize, usize),
+    },
+    /// All vertices on one line, or on one point: the ring encloses nothing.
+    ZeroArea,
+    /// A coordinate so large or small that an exact product over- or underflows.
+    NotCheckable,
+}
+
+/// Which way a ring runs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Winding {
+    /// Counterclockwise: the interior on the left, paper A's order.
+    Counterclockwise,
+    /// Clockwise.
+    Clockwise,
+}
+
+/// Closed segments pq and rs share a point (exact).
+fn segments_meet(p: Vect2, q: Vect2, r: Vect2, s: Vect2) -> Option<bool> {
+    // Bounding boxes first: disjoint boxes cannot meet (comparisons of inputs, exact).
+    if p.x.max(q.x) < r.x.min(s.x)
+        || r.x.max(s.x) < p.x.min(q.x)
+        || p.y.max(q.y) < r.y.min(s.y)
+        || r.y.max(s.y) < p.y.min(q.y)
+    {
+        return Some(false);
+    }
+    let (o1, o2) = (orient(p, q, r)?, orient(p, q, s)?);
+    let (o3, o4) = (orient(r, s, p)?, orient(r, s, q)?);
+    if o1 == 0 && o2 == 0 {
+        // Collinear: the boxes overlap, so the segments do (on one line).
+        return Some(true);
+    }
+    Some(o1 * o2 <= 0 && o3 * o4 <= 0)
+}
+
+/// Paper A §II's polygon: the first pair of edges that make the ring not simple, or
+/// `Ok(())`. Repeated consecutive vertices are one vertex here (a zero-length edge
+/// crosses nothing); O(n²) edge pairs, each pruned by its bounding boxes.
+pub fn check_simple(p: &[Vect2]) -> Result<(), RingFault> {
+    // The ring without repeats: indices into p of each distinct consecutive vertex.
+    let mut idx: Vec<usize> = Vec::with_capacity(p.len());
+    for (i, &v) in p.iter().enumerate() {
+        if idx.last().map(|&j| p[j]) != Some(v) {
+            idx.push(i);
+        }
+    }
+    while idx.len() > 1 && p[idx[0]] == p[idx[idx.len() - 1]] {
+        idx.pop();
+    }
+    let n = idx.len();
+    if n < 3 {
+        return Err(RingFault::ZeroArea);
+    }
+    let vtx = |k: usize| p[idx[k % n]];
+    // the edge k of the reduced ring, named by the given indices of its ends
+    let name = |k: usize| (idx[k % n], idx[(k + 1) % n]);
+    for i in 0..n {
+        // neighbours share one vertex: they overlap only by folding back on a line
+        let (a, b, c) = (vtx(i), vtx(i + 1), vtx(i + 2));
+        if orient(a, b, c).ok_or(RingFault::NotCheckable)? == 0
+            && dot_sign(b, a, c).ok_or(RingFault::NotCheckable)? > 0
+        {
+            return Err(RingFault::Crossing {
+                a: name(i),
+                b: name(i + 1),
+            });
+        }
+        for k in (i + 2)..n {
+            if i == 0 && k == n - 1 {
+                continue; // the last edge and the first are neighbours
+            }
+            if segments_meet(vtx(i), vtx(i + 1), vtx(k), vtx(k + 1))
+                .ok_or(RingFault::NotCheckable)?
+            {
+                return Err(RingFault::Crossing {
+                    a: name(i),
+                    b: name(k),
+                });
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The winding of a simple ring ([`check_simple`] passed): the turn at its
+/// lexicographically least vertex, a vertex of the convex hull, where a simple ring
+/// turns the way it runs. `Err(ZeroArea)` when that turn is straight (the ring is then
+/// degenerate).
+pub fn winding(p: &[Vect2]) -> Result<Winding, RingFault> {
+    let n = p.len();
+    let Some(m) = (0..n).min_by(|&i, &j| {
+        p[i].x
+            .total_cmp(&p[j].x)
+            .then_with(|| p[i].y.total_cmp(&p[j].y))
+    }) else {
+        return Err(RingFault::ZeroArea);
+    };
+    // the nearest distinct neighbours on each side
+    let prev = (1..n)
+        .map(|k| p[(m + n - k) % n])
+        .find(|&q| q != p[m])
+        .ok_or(RingFault::ZeroArea)?;
+    let next = (1..n)
+        .map(|k| p[(m + k) % n])
+        .find(|&q| q != p[m])
+        .ok_or(RingFault::ZeroArea)?;
+    match orient(prev, p[m], next).ok_or(RingFault::NotCheckable)? {
+        1 => Ok(Winding::Counterclockwise),
+        -1 => Ok(Winding::Clockwise),
+        _ => Err(RingFault::ZeroArea),
+    }
+}
+
+/// Paper A §II's polygon as a case must give it: simple and counterclockwise (a ring
+/// too extreme to check exactly counts as not).
+pub fn simple_ccw(p: &[Vect2]) -> bool {
+    check_simple(p).and_then(|()| winding(p)) == Ok(Winding::Counterclockwise)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ring(xy: &[(f64, f64)]) -> Vec<Vect2> {
+        xy.iter().map(|&(x, y)| Vect2::new(x, y)).collect()
+    }
+
+    #[test]
+    fn square_is_simple_both_ways() {
+        let ccw = ring(&[(0.0, 0.0), (4.0, 0.0), (4.0, 4.0), (0.0, 4.0)]);
+        assert_eq!(check_simple(&ccw), Ok(()));
+        assert_eq!(winding(&ccw), Ok(Winding::Counterclockwise));
+        let cw: Vec<Vect2> = ccw.iter().rev().copied().collect();
+        assert_eq!(check_simple(&cw), Ok(()));
+        assert_eq!(winding(&cw), Ok(Winding::Clockwise));
+    }
+
+    #[test]
+    fn bow_tie_names_its_crossing_edges() {
+        let bow = ring(&[(0.0, 0.0), (4.0, 4.0), (4.0, 0.0), (0.0, 4.0)]);
+        assert_eq!(
+            check_simple(&bow),
+            Err(RingFault::Crossing {
+                a: (0, 1),
+                b: (2, 3)
+            })
+        );
+    }
+
+    #[test]
+    fn touching_vertex_spike_and_line_are_faults() {
+        // vertex 3 lies on edge 0–1
+        let touch = ring(&[(0.0, 0.0), (4.0, 0.0), (4.0, 4.0), (2.0, 0.0), (0.0, 4.0)]);
+        assert!(matches!(
+            check_simple(&touch),
+            Err(RingFault::Crossing { .. })
+        ));
+        // a spike: 1 → 2 goes out and 2 → 3 comes back along the same line
+        let spike = ring(&[(0.0, 0.0), (4.0, 0.0), (6.0, 0.0), (5.0, 0.0), (4.0, 4.0)]);
+        assert!(matches!(
+            check_simple(&spike),
+            Err(RingFault::Crossing { .. })
+        ));
+        let line = ring(&[(0.0, 0.0), (1.0, 1.0), (2.0, 2.0)]);
+        assert!(check_simple(&line).is_err());
+    }
+
+    #[test]
+    fn repeated_vertices_are_one_vertex() {
+        let rep = ring(&[(0.0, 0.0), (4.0, 0.0), (4.0, 0.0), (4.0, 4.0), (0.0, 0.0)]);
+        assert_eq!(check_simple(&rep), Ok(()));
+        assert_eq!(winding(&rep), Ok(Winding::Counterclockwise));
+    }
+
+    /// A crossing by one ulp: the float orientation alone cannot see it.
+    #[test]
+    fn a_crossing_an_ulp_deep_is_found() {
+        let e = f64::EPSILON;
+        // vertex 3 at (2, 1ulp below 0): edge 2–3 and edge 3–4 dip through edge 0–1
+        let dip = ring(&[(0.0, 0.0), (4.0, 0.0), (4.0, 4.0), (2.0, -e), (0.0, 4.0)]);
+        assert!(matches!(
+            check_simple(&dip),
+            Err(RingFault::Crossing { .. })
+        ));
+        let clear = ring(&[(0.0, 0.0), (4.0, 0.0), (4.0, 4.0), (2.0, e), (0.0, 4.0)]);
+        assert_eq!(check_simple(&clear), Ok(()));
+    }
+}

@@ -209,6 +209,9 @@ impl MovingPolygon {
                     signed_area: signed_area2(&vertices) / 2.0,
                 })
             }
+            Err(RingFault::Crossing { .. }) if ring::collinear(&vertices) => {
+                return Err(CaseError::ZeroArea)
+            }
             Err(RingFault::Crossing { a, b }) => {
                 return Err(CaseError::SelfIntersecting { a, b });
             }

@@ -280,32 +280,11 @@ fn only_known(
     let Some(key) = obj.keys().find(|k| !known.contains(&k.as_str())) else {
         return Ok(());
     };
-    let suggestion = known
-        .iter()
-        .map(|&k| (edit_distance(&key.to_lowercase(), k), k))
-        .filter(|&(d, k)| d <= 3 && 2 * d < k.len().max(key.len()))
-        .min_by_key(|&(d, _)| d)
-        .map(|(_, k)| k);
+    let suggestion = crate::json::suggest(key, known);
     Err(CaseError::UnknownField {
         field: format!("{prefix}{key}"),
         suggestion,
     })
-}
-
-/// Levenshtein distance (insertions, deletions, substitutions), by characters.
-fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut prev = row[0];
-        row[0] = i + 1;
-        for (j, &cb) in b.iter().enumerate() {
-            let here = row[j + 1];
-            row[j + 1] = (prev + usize::from(ca != cb)).min(row[j] + 1).min(here + 1);
-            prev = here;
-        }
-    }
-    row[b.len()]
 }
 
 /// Builds and validates a case from its JSON object, κ at the format's default when the

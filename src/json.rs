@@ -396,6 +396,50 @@ impl Reader<'_> {
     }
 }
 
+/// The defined name that an unknown `key` most likely misspells: the same letters in
+/// another case, or at most three edits away and fewer than half its letters.
+pub fn suggest(key: &str, known: &[&'static str]) -> Option<&'static str> {
+    known
+        .iter()
+        .map(|&k| (edit_distance(&key.to_lowercase(), k), k))
+        .filter(|&(d, k)| d <= 3 && 2 * d < k.len().max(key.len()))
+        .min_by_key(|&(d, _)| d)
+        .map(|(_, k)| k)
+}
+
+/// Levenshtein distance (insertions, deletions, substitutions), by characters.
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut prev = row[0];
+        row[0] = i + 1;
+        for (j, &cb) in b.iter().enumerate() {
+            let here = row[j + 1];
+            row[j + 1] = (prev + usize::from(ca != cb)).min(row[j] + 1).min(here + 1);
+            prev = here;
+        }
+    }
+    row[b.len()]
+}
+
+/// A JSON value as serde_json's tree (`NaN`/`Infinity` as null): what a format keeps
+/// of members it does not read.
+pub fn to_value(n: &Node) -> serde_json::Value {
+    match &n.value {
+        Json::Null | Json::NotJson(_) => serde_json::Value::Null,
+        Json::Bool(b) => (*b).into(),
+        Json::Number(x) => (*x).into(),
+        Json::String(s) => s.clone().into(),
+        Json::Array(a) => a.iter().map(to_value).collect(),
+        Json::Object(m) => m
+            .iter()
+            .map(|m| (m.key.clone(), to_value(&m.value)))
+            .collect::<serde_json::Map<_, _>>()
+            .into(),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -465,21 +509,6 @@ mod tests {
     /// repeated keys), value for value.
     #[test]
     fn agrees_with_serde_json() {
-        fn to_value(n: &Node) -> serde_json::Value {
-            match &n.value {
-                Json::Null => serde_json::Value::Null,
-                Json::Bool(b) => (*b).into(),
-                Json::Number(x) => (*x).into(),
-                Json::NotJson(_) => serde_json::Value::Null,
-                Json::String(s) => s.clone().into(),
-                Json::Array(a) => a.iter().map(to_value).collect(),
-                Json::Object(m) => m
-                    .iter()
-                    .map(|m| (m.key.clone(), to_value(&m.value)))
-                    .collect::<serde_json::Map<_, _>>()
-                    .into(),
-            }
-        }
         for text in [
             r#"{"type":"FeatureCollection","features":[{"a":[1.5,-0.0,1e-7]}]}"#,
             r#"[ "\t\"\\\/", 123456789012345678901234567890, {} , [] ]"#,

@@ -157,6 +157,17 @@ pub fn winding(p: &[Vect2]) -> Result<Winding, RingFault> {
     }
 }
 
+/// Do all vertices lie on one line (exact; `false` when that cannot be decided)? A
+/// ring that does encloses nothing: callers report it as such rather than as the
+/// folding edges [`check_simple`] finds first.
+pub fn collinear(p: &[Vect2]) -> bool {
+    let Some(&a) = p.first() else { return true };
+    let Some(&b) = p.iter().find(|&&q| q != a) else {
+        return true;
+    };
+    p.iter().all(|&c| orient(a, b, c) == Some(0))
+}
+
 /// Paper A §II's polygon as a case must give it: simple and counterclockwise (a ring
 /// too extreme to check exactly counts as not).
 pub fn simple_ccw(p: &[Vect2]) -> bool {

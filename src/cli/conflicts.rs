@@ -3,7 +3,7 @@
 
 use crate::conflict::{pipeline, stage4::Method, Motion, Object};
 use crate::earth::{inverse_mercator, Merc};
-use crate::scenario::{self, Scenario, ScenarioError};
+use crate::scenario::{self, Scenario, ScenarioError, ScenarioWarning};
 use serde_json::{json, Value};
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -116,6 +116,7 @@ pub fn answer(
     conflicts: &[pipeline::Conflict],
     stats: &pipeline::Stats,
     errors: &[ScenarioError],
+    warnings: &[ScenarioWarning],
     extra_ms: (f64, f64, f64),
     regions: bool,
 ) -> String {
@@ -205,12 +206,23 @@ pub fn answer(
     });
     let errors_v: Vec<Value> = errors
         .iter()
-        .map(|e| json!({"index": e.index, "id": e.id, "field": e.field, "message": e.to_string()}))
+        .map(|e| {
+            json!({"line": e.line, "index": e.index, "id": e.id, "field": e.field,
+                   "message": e.to_string()})
+        })
+        .collect();
+    let warnings_v: Vec<Value> = warnings
+        .iter()
+        .map(|w| {
+            json!({"line": w.line, "index": w.index, "id": w.id, "field": w.field,
+                   "message": w.to_string()})
+        })
         .collect();
     let _ = write!(
         out,
-        "],\n\"stats\":{stats_v},\n\"errors\":{}}}",
-        Value::from(errors_v)
+        "],\n\"stats\":{stats_v},\n\"errors\":{},\n\"warnings\":{}}}",
+        Value::from(errors_v),
+        Value::from(warnings_v)
     );
     out
 }
@@ -221,6 +233,8 @@ pub struct Analysis {
     pub answer: String,
     /// Rejected features.
     pub errors: Vec<ScenarioError>,
+    /// Members kept but not read.
+    pub warnings: Vec<ScenarioWarning>,
     /// The valid features.
     pub scenario: Scenario,
     /// Their stage objects.
@@ -242,7 +256,11 @@ pub fn analyse_with(
     regions: bool,
 ) -> Result<Analysis, ScenarioError> {
     let t_all = Instant::now();
-    let (sc, errors) = scenario::parse(text)?;
+    let scenario::Read {
+        scenario: sc,
+        errors,
+        warnings,
+    } = scenario::parse(text)?;
     let parse_ms = t_all.elapsed().as_secs_f64() * 1e3;
     let t_obj = Instant::now();
     let objects = scenario::objects(&sc);
@@ -269,12 +287,14 @@ pub fn analyse_with(
         &conflicts,
         &stats,
         &errors,
+        &warnings,
         (parse_ms, objects_ms, total_ms),
         regions,
     );
     Ok(Analysis {
         answer,
         errors,
+        warnings,
         scenario: sc,
         objects,
         conflicts,
@@ -389,6 +409,7 @@ pub fn run(args: &ConflictsArgs) -> ExitCode {
     let Analysis {
         answer,
         errors,
+        warnings,
         scenario: sc,
         objects,
         conflicts,
@@ -404,6 +425,9 @@ pub fn run(args: &ConflictsArgs) -> ExitCode {
             return ExitCode::from(EXIT_FATAL);
         }
     };
+    for w in &warnings {
+        eprintln!("polyguard conflicts: warning: {w}");
+    }
     for e in &errors {
         eprintln!("polyguard conflicts: {e}");
     }

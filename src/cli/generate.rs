@@ -119,10 +119,13 @@ pub fn random_area(rng: &mut Rng, bx: ((f64, f64), (f64, f64))) -> Area {
             break a;
         }
     };
-    let ring = angles
+    // Bearings grow clockwise; GeoJSON (RFC 7946 §3.1.6) wants exterior rings
+    // counterclockwise, so the vertices go in decreasing bearing.
+    let mut ring: Vec<LonLat> = angles
         .iter()
         .map(|&b| rhumb_destination(c, b, rng.uniform(50.0, 100.0)))
         .collect();
+    ring.reverse();
     Area {
         ring,
         t0: None,
@@ -164,11 +167,13 @@ pub fn generate(n: usize, mix: Mix, seed: u64, density_box: bool) -> Scenario {
                 Feature {
                     id: format!("a{i}"),
                     kind: Kind::Area(random_area(&mut rng, bx)),
+                    extra: Default::default(),
                 }
             } else {
                 Feature {
                     id: format!("t{i}"),
                     kind: Kind::Track(random_track(&mut rng, bx)),
+                    extra: Default::default(),
                 }
             }
         })

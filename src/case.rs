@@ -1,4 +1,4 @@
-//! Reading one detection case from a JSON line (shared/spec/cases.md).
+//! Reading one detection case from a JSON line (docs/cases.md).
 
 use serde_json::{Map, Value};
 
@@ -90,6 +90,8 @@ pub fn parse_line(line: &str, line_no: usize) -> ParsedLine {
 /// [`parse_line`] with the κ (degrees) that a case without `kappa` gets.
 pub fn parse_line_with(line: &str, line_no: usize, default_kappa_deg: f64) -> ParsedLine {
     let line = line.strip_prefix('\u{feff}').unwrap_or(line);
+    // the line ending is not part of the case (an error at the end says its column)
+    let line = line.trim_end_matches(['\n', '\r']);
     let value: Value = match serde_json::from_str::<Strict>(line) {
         Ok(Strict(v)) => v,
         Err(e) => {

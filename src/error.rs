@@ -1,4 +1,4 @@
-//! Typed errors for bad cases: every rule of shared/spec/cases.md, each naming its field.
+//! Typed errors for bad cases: every rule of docs/cases.md, each naming its field.
 
 #[cfg(feature = "std")]
 use core::fmt;
@@ -7,7 +7,7 @@ use core::fmt;
 use std::string::String;
 
 /// What is wrong with a detection case, and in which field (a path such as
-/// `polygon.vertices[2][1]`, as in the case format of shared/spec/cases.md).
+/// `polygon.vertices[2][1]`, as in the case format of docs/cases.md).
 #[cfg(feature = "std")]
 #[derive(Clone, Debug, PartialEq)]
 pub enum CaseError {

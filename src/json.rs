@@ -396,6 +396,38 @@ impl Reader<'_> {
     }
 }
 
+/// The first key given twice in any object of the tree (depth first): its path
+/// (`a.b[2].c`) and offset.
+pub fn repeated_key(n: &Node) -> Option<(String, usize)> {
+    fn walk(n: &Node, path: &str) -> Option<(String, usize)> {
+        match &n.value {
+            Json::Object(m) => {
+                let mut seen = std::collections::HashSet::with_capacity(m.len());
+                for mem in m {
+                    let p = if path.is_empty() {
+                        mem.key.clone()
+                    } else {
+                        format!("{path}.{}", mem.key)
+                    };
+                    if !seen.insert(mem.key.as_str()) {
+                        return Some((p, mem.at));
+                    }
+                    if let Some(r) = walk(&mem.value, &p) {
+                        return Some(r);
+                    }
+                }
+                None
+            }
+            Json::Array(a) => a
+                .iter()
+                .enumerate()
+                .find_map(|(k, x)| walk(x, &format!("{path}[{k}]"))),
+            _ => None,
+        }
+    }
+    walk(n, "")
+}
+
 /// The defined name that an unknown `key` most likely misspells: the same letters in
 /// another case, or at most three edits away and fewer than half its letters.
 pub fn suggest(key: &str, known: &[&'static str]) -> Option<&'static str> {

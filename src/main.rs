@@ -17,7 +17,7 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Answer detection cases (JSON Lines, shared/spec/cases.md), one line per case.
+    /// Answer detection cases (JSON Lines, docs/cases.md), one line per case.
     Detect(polyguard::cli::detect::DetectArgs),
     /// A seeded safety-assurance run: engine vs paper-exact vs truth on boundary cases.
     Assure(polyguard::cli::assure::AssureArgs),

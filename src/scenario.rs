@@ -741,8 +741,9 @@ mod fast {
 }
 
 /// The fast path: `Some` only for a file with nothing to report (no error, no warning),
-/// which then reads exactly as the general path reads it.
-fn fast_parse(text: &str) -> Option<Read> {
+/// which then reads exactly as the general path reads it (public for the differential
+/// fuzz target; [`parse`] is the reader to use).
+pub fn fast_parse(text: &str) -> Option<Read> {
     let fc: fast::Collection = serde_json::from_str(text).ok()?;
     if fc.ty != "FeatureCollection" {
         return None;
@@ -819,8 +820,8 @@ pub fn parse(text: &str) -> Result<Read, ScenarioError> {
 }
 
 /// [`parse`]'s general path over a tree that knows where each value starts: any JSON,
-/// every member checked by name.
-fn parse_general(text: &str) -> Result<Read, ScenarioError> {
+/// every member checked by name (public for the differential fuzz target).
+pub fn parse_general(text: &str) -> Result<Read, ScenarioError> {
     let r = Reader {
         lines: json::Lines::new(text),
         _text: std::marker::PhantomData,

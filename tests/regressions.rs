@@ -1,6 +1,6 @@
 //! The regression corpus `tests/regressions/*.jsonl`, replayed on every test run.
 //!
-//! Each line is a case of shared/spec/cases.md with two extra fields: `class`, the class
+//! Each line is a case of docs/cases.md with two extra fields: `class`, the class
 //! `harness::classify` gave it when it was recorded, and `why`, why it is there. The
 //! replay parses the line with the CLI's parser, runs engine, paper-exact and truth
 //! (`classify::compare`) and checks that the class still holds. A recorded failure

@@ -326,7 +326,7 @@ fn merge(paths: &[PathBuf], out: &Path) -> ExitCode {
                 return ExitCode::from(2);
             }
         };
-        let r: Report = match serde_json::from_str(&text) {
+        let r = match Report::from_json(&text) {
             Ok(r) => r,
             Err(e) => {
                 eprintln!(

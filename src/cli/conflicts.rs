@@ -1,5 +1,5 @@
 //! `polyguard conflicts SCENARIO`: Paper B Algorithm 1 on a scenario GeoJSON
-//! (shared/spec/scenario.md), writing the answer JSON of that spec.
+//! (docs/scenario.md), writing the answer JSON of that spec.
 
 use crate::conflict::{pipeline, stage4::Method, Motion, Object};
 use crate::earth::{inverse_mercator, Merc};
@@ -21,7 +21,7 @@ const EXIT_FATAL: u8 = 2;
 /// Arguments of `polyguard conflicts`.
 #[derive(clap::Args, Debug, Clone)]
 pub struct ConflictsArgs {
-    /// Scenario GeoJSON (shared/spec/scenario.md); `-` reads standard input.
+    /// Scenario GeoJSON (docs/scenario.md); `-` reads standard input.
     pub scenario: PathBuf,
     /// Write the answer here instead of standard output.
     #[arg(long, short)]

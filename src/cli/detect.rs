@@ -1,4 +1,4 @@
-//! `polyguard detect [FILE]`: answers the case JSON Lines of shared/spec/cases.md.
+//! `polyguard detect [FILE]`: answers the case JSON Lines of docs/cases.md.
 
 use std::collections::BTreeMap;
 use std::fs::File;
@@ -145,6 +145,11 @@ fn answer(case: &Case, engine: Engine, out: &mut Map<String, Value>) -> Result<(
 
 fn open(file: &Option<PathBuf>) -> io::Result<Box<dyn BufRead>> {
     match file {
+        // a directory opens on Unix and fails only at the first read: say so up front
+        Some(p) if p.is_dir() => Err(io::Error::new(
+            io::ErrorKind::InvalidInput,
+            "is a directory, not a case file",
+        )),
         Some(p) if p.as_os_str() != "-" => Ok(Box::new(BufReader::new(File::open(p)?))),
         _ => Ok(Box::new(BufReader::new(io::stdin().lock()))),
     }
@@ -162,8 +167,7 @@ pub fn run(args: &DetectArgs) -> ExitCode {
             let name = args
                 .file
                 .as_ref()
-                .map(|p| p.display().to_string())
-                .unwrap_or_default();
+                .map_or_else(|| "standard input".into(), |p| p.display().to_string());
             eprintln!("polyguard detect: cannot read {name}: {e}");
             return ExitCode::from(2);
         }
@@ -184,7 +188,11 @@ pub fn run(args: &DetectArgs) -> ExitCode {
             }
         }
         Err(e) => {
-            eprintln!("polyguard detect: {e}");
+            let name = args
+                .file
+                .as_ref()
+                .map_or_else(|| "standard input".into(), |p| p.display().to_string());
+            eprintln!("polyguard detect: reading {name}: {e}");
             ExitCode::from(2)
         }
     }

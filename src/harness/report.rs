@@ -9,6 +9,7 @@ use super::classify::{Class, ContractVerdict, Verdict};
 
 /// A kept counterexample (its case is written beside the report).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Kept {
     pub index: u64,
     pub class: Class,
@@ -22,6 +23,7 @@ pub struct Kept {
 /// The contract check of an assurance run: paper A without rounding says yes ⇒ the
 /// engine says yes. Its canary is the plain f64 transcription, which breaks it.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Contract {
     /// Cases where paper-exact says yes.
     pub paper_yes: u64,
@@ -70,8 +72,10 @@ impl Contract {
     }
 }
 
-/// An assurance run's report (`report.json`).
+/// An assurance run's report (`report.json`). Read strictly (`assure merge`): an
+/// unknown field is an error, so is a key given twice ([`Report::from_json`]).
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Report {
     pub seed: u64,
     /// Shards included, as "i/N".
@@ -95,6 +99,22 @@ pub struct Report {
 }
 
 impl Report {
+    /// Reads a report strictly: a byte-order mark is skipped; a key given twice (which
+    /// serde would resolve silently, the last count winning) and an unknown field are
+    /// errors naming the line.
+    pub fn from_json(text: &str) -> Result<Report, String> {
+        let lines = crate::json::Lines::new(text);
+        let tree = crate::json::parse(text).map_err(|e| {
+            let (l, c) = lines.line_col(e.at);
+            format!("line {l} column {c}: {}", e.message)
+        })?;
+        if let Some((path, at)) = crate::json::repeated_key(&tree) {
+            return Err(format!("line {}: {path}: given twice", lines.line(at)));
+        }
+        let body = text.strip_prefix('\u{feff}').unwrap_or(text);
+        serde_json::from_str(body).map_err(|e| e.to_string())
+    }
+
     /// Counts one verdict.
     pub fn add(&mut self, v: &Verdict, mode: &str) {
         self.cases += 1;
@@ -317,7 +337,32 @@ mod tests {
         assert!(a.clone().merge(&other_seed).is_err());
         // JSON round trip.
         let json = serde_json::to_string(&m).expect("serialise");
-        let back: Report = serde_json::from_str(&json).expect("parse");
+        let back = Report::from_json(&json).expect("parse");
         assert_eq!(back, m);
+    }
+
+    /// A merge reads reports strictly: a misspelt field, or a count given twice (serde
+    /// would keep the last), is an error naming it; a byte-order mark is fine.
+    #[test]
+    fn merges_read_reports_strictly() {
+        let mut r = Report {
+            seed: 1,
+            shards: vec!["0/1".into()],
+            ..Default::default()
+        };
+        r.add(&verdict(Class::Agree, Method::DetectSame2d), "free");
+        let json = serde_json::to_string_pretty(&r).expect("serialise");
+        assert_eq!(Report::from_json(&format!("\u{feff}{json}")), Ok(r.clone()));
+        let typo = json.replacen("\"rejected\"", "\"rejectd\"", 1);
+        let e = Report::from_json(&typo).expect_err("unknown field");
+        assert!(e.contains("unknown field `rejectd`"), "{e}");
+        let twice = json.replacen("\"agree\": 1", "\"agree\": 1, \"agree\": 5", 1);
+        assert_ne!(twice, json);
+        let e = Report::from_json(&twice).expect_err("repeated key");
+        assert!(
+            e.ends_with("by_method.detect_same_2d.agree: given twice"),
+            "{e}"
+        );
+        assert!(e.starts_with("line "), "{e}");
     }
 }

@@ -6,7 +6,7 @@ use crate::api::{Case, MovingPoint, MovingPolygon, Params};
 use crate::error::CaseError;
 use crate::vect2::Vect2;
 
-/// A case of shared/spec/cases.md, unvalidated.
+/// A case of docs/cases.md, unvalidated.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct RawCase {
     pub lookahead: f64,

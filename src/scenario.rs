@@ -135,8 +135,6 @@ pub enum Problem {
     ZeroArea,
     /// `crs` names a system other than WGS 84 longitude/latitude.
     UnsupportedCrs(String),
-    /// A longitude outside [−180, 180].
-    LongitudeOutOfRange(f64),
     /// Positions k−1 and k differ by more than 180° of longitude: the step crosses the
     /// antimeridian, which this version does not model (it would be read the long way
     /// round).
@@ -239,7 +237,6 @@ impl fmt::Display for ScenarioError {
                 a.0, a.1, b.0, b.1
             ),
             Problem::ZeroArea => write!(f, "the vertices lie on one line; the area is empty"),
-            Problem::LongitudeOutOfRange(l) => write!(f, "longitude {l} outside [-180, 180]"),
             Problem::CrossesAntimeridian(k) => write!(
                 f,
                 "positions {} and {k} are more than 180° of longitude apart: crossing the \
@@ -297,9 +294,6 @@ fn checked(ctx: &Ctx, field: &str, k: usize, lon: f64, lat: f64) -> Result<LonLa
     }
     if lat.abs() > MAX_ABS_LAT_DEG {
         return Err(ctx.err(format!("{field}[{k}]"), Problem::LatitudeOutOfRange(lat)));
-    }
-    if lon.abs() > 180.0 {
-        return Err(ctx.err(format!("{field}[{k}]"), Problem::LongitudeOutOfRange(lon)));
     }
     Ok(LonLat::from_degrees(lon, lat))
 }
@@ -1345,7 +1339,7 @@ mod tests {
     }
 
     /// What this version cannot model yet is an error, never a silent misreading: a step
-    /// across the antimeridian (read the long way round), a longitude beyond ±180, holes.
+    /// across the antimeridian (read the long way round), holes.
     #[test]
     fn what_is_not_modelled_is_refused() {
         let cases = [
@@ -1353,14 +1347,6 @@ mod tests {
                 TRACK.replace("[[0,0],[1,1]]", "[[179.5,0],[-179.5,0]]"),
                 "geometry.coordinates[1]",
                 "positions 0 and 1 are more than 180° of longitude apart",
-            ),
-            (
-                AREA.replace(
-                    "[[[0,0],[1,0],[1,1],[0,0]]]",
-                    "[[[0,0],[190,0],[1,1],[0,0]]]",
-                ),
-                "geometry.coordinates[0][1]",
-                "longitude 190 outside [-180, 180]",
             ),
             (
                 AREA.replace(

@@ -604,6 +604,10 @@ impl Reader<'_> {
                 continue;
             }
             if ALL_PROPS.contains(&m.key.as_str()) {
+                // null is absent, as for the kind's own properties
+                if m.value.value == Json::Null {
+                    continue;
+                }
                 return Err(self.at(ctx, m.at, field, Problem::NotForKind(this)));
             }
             if let Some(s) = json::suggest(&m.key, own) {
@@ -1304,6 +1308,20 @@ mod tests {
             fast_parse(&cw_text),
             Some(parse_general(&cw_text).expect("collection"))
         );
+    }
+
+    /// `null` is absent everywhere, also for the other kind's properties, on both paths
+    /// (the fast path read `"tf": null` on a track, the general one refused it; found by
+    /// comparing the JSON Schema with the reader).
+    #[test]
+    fn null_is_absent_on_both_paths() {
+        let track = TRACK.replace(r#""side_nm":1"#, r#""side_nm":1,"tf":null"#);
+        let area = AREA.replace(r#""tf":2"#, r#""tf":2,"speed_kn":null"#);
+        for text in [file(&[&track]), file(&[&area])] {
+            let general = parse_general(&text).expect("collection");
+            assert!(general.errors.is_empty(), "{:?}", general.errors);
+            assert_eq!(fast_parse(&text), Some(general));
+        }
     }
 
     /// File-level problems: the line, and a clear reason.

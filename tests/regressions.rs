@@ -1,7 +1,8 @@
 //! The regression corpus `tests/regressions/*.jsonl`, replayed on every test run.
 //!
-//! Each line is a case of docs/cases.md with two extra fields: `class`, the class
-//! `harness::classify` gave it when it was recorded, and `why`, why it is there. The
+//! Each line is a case of docs/cases.md with two annotations in its `meta` object:
+//! `class`, the class `harness::classify` gave it when it was recorded, and `why`, why it
+//! is there. The
 //! replay parses the line with the CLI's parser, runs engine, paper-exact and truth
 //! (`classify::compare`) and checks that the class still holds. A recorded failure
 //! (`missed_detection`, `false_alarm_far`) that now comes out better is reported as fixed:

@@ -142,9 +142,15 @@ pub fn answer(
         num(&mut out, c.t_end);
         let _ = write!(
             out,
-            ",\"decided_by\":\"{decided_by}\",\"method\":\"{method}\",\"projection_windows\":["
+            ",\"decided_by\":\"{decided_by}\",\"method\":\"{method}\",\"projection_windows\":"
         );
-        for (i, w) in c.paper.iter().enumerate() {
+        // not computed with --no-regions: null, not a pair of "no window"s
+        if !regions {
+            out.push_str("null");
+        } else {
+            out.push('[');
+        }
+        for (i, w) in c.paper.iter().enumerate().filter(|_| regions) {
             if i > 0 {
                 out.push(',');
             }
@@ -159,7 +165,10 @@ pub fn answer(
                 None => out.push_str("null"),
             }
         }
-        out.push_str("],\"region\":");
+        if regions {
+            out.push(']');
+        }
+        out.push_str(",\"region\":");
         match if regions { c.rings.len() } else { 0 } {
             0 => out.push_str("null"),
             1 => {

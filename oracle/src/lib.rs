@@ -40,6 +40,7 @@ pub mod geom;
 pub mod proximity;
 pub mod qfield;
 pub mod quad;
+pub mod ring;
 pub mod truth;
 pub mod well_formed;
 

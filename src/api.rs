@@ -199,10 +199,9 @@ impl MovingPolygon {
             None => vec![Vect2::ZERO; vertices.len()],
         };
         // §II: a simple ring, counterclockwise. A crossing is its own error (a bow tie
-        // has no winding); a ring whose exact check would over- or underflow (coordinates
-        // beyond about 1e150, or differences below about 1e-150) keeps the float area's
-        // sign, as before the check existed.
-        match ring::check_simple(&vertices).and_then(|()| ring::winding(&vertices)) {
+        // has no winding); a ring whose exact check would overflow (coordinates beyond
+        // about 1e150) keeps the float area's sign, as before the check existed.
+        match ring::check(&vertices) {
             Ok(Winding::Counterclockwise) => {}
             Ok(Winding::Clockwise) => {
                 return Err(CaseError::Clockwise {

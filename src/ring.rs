@@ -5,8 +5,8 @@
 //!
 //! Rounding: each orientation is first taken in floats with Shewchuk's static bound for
 //! orient2d, |det − fl(det)| ≤ (3 + 16u)·u·(|l| + |r|) where l and r are the two rounded
-//! products (u = 2⁻⁵³); when the float value is within that bound of zero the sign comes
-//! from an exact expansion ([`crate::ball::exact`]). The exact step declines (`None`)
+//! products (u = 2⁻⁵³), used only where no product underflows; when the float value is
+//! within that bound of zero (or tiny) the sign comes from an exact expansion ([`crate::ball::exact`]). The exact step declines (`None`)
 //! only when a product over- or underflows; such a ring is then reported as not
 //! checkable rather than guessed.
 
@@ -16,14 +16,24 @@ use crate::vect2::Vect2;
 /// Shewchuk's ccwerrboundA, (3 + 16u)·u, u = 2⁻⁵³.
 const ORIENT_BOUND: f64 = (3.0 + 16.0 * f64::EPSILON / 2.0) * (f64::EPSILON / 2.0);
 
+/// The float filter is used only when |l| + |r| ≥ 10⁻²⁸⁸ (> 2⁻⁹⁶⁰): then any product
+/// below the normal range adds at most 2⁻¹⁰⁷⁵ of absolute error, far inside the bound's
+/// slack (ORIENT_BOUND·10⁻²⁸⁸ ≈ 2⁻¹⁰⁰⁸), and the others round relatively as the bound
+/// assumes.
+const MIN_RELATIVE: f64 = 1e-288;
+
 /// The exact sign of (b − a) × (c − a): +1 when a, b, c turn left (counterclockwise),
 /// −1 right, 0 collinear; `None` when an exact product would over- or underflow.
 pub fn orient(a: Vect2, b: Vect2, c: Vect2) -> Option<i8> {
     let l = (b.x - a.x) * (c.y - a.y);
     let r = (b.y - a.y) * (c.x - a.x);
     let det = l - r;
-    let bound = ORIENT_BOUND * (l.abs() + r.abs());
-    if det.is_finite() && bound.is_finite() && det.abs() > bound {
+    let size = l.abs() + r.abs();
+    let bound = ORIENT_BOUND * size;
+    // The bound holds for roundings relative to their results: not when a product falls
+    // below the normal range, where its absolute error (up to 2⁻¹⁰⁷⁵) can exceed it. Such
+    // sizes go to the exact step (found by tests/ring_vs_oracle.rs).
+    if size >= MIN_RELATIVE && det.is_finite() && bound.is_finite() && det.abs() > bound {
         return Some(if det > 0.0 { 1 } else { -1 });
     }
     exact::sign_cross(&[b.x, -a.x], &[b.y, -a.y], &[c.x, -a.x], &[c.y, -a.y])
@@ -168,10 +178,56 @@ pub fn collinear(p: &[Vect2]) -> bool {
     p.iter().all(|&c| orient(a, b, c) == Some(0))
 }
 
+/// x·2^k, exactly when the result is a normal float (steps of at most 2⁵⁰⁰, each a
+/// power of two: exact unless it under- or overflows).
+fn times_pow2(mut x: f64, mut k: i32) -> f64 {
+    while k != 0 {
+        let step = k.clamp(-500, 500);
+        x *= 2f64.powi(step);
+        k -= step;
+    }
+    x
+}
+
+/// The exponents that bring the largest |x| and the largest |y| of a ring near 2⁵⁰⁰.
+fn axis_scales(p: &[Vect2]) -> (i32, i32) {
+    let e = |m: f64| if m > 0.0 { m.log2().floor() as i32 } else { 0 };
+    let mx = p.iter().fold(0f64, |m, v| m.max(v.x.abs()));
+    let my = p.iter().fold(0f64, |m, v| m.max(v.y.abs()));
+    (500 - e(mx), 500 - e(my))
+}
+
+/// Paper A §II's polygon: [`check_simple`], then [`winding`]. A ring whose exact
+/// products would under- or overflow is checked again with x and y each scaled by a
+/// power of two (largest coordinate near 2⁵⁰⁰): a positive diagonal map, which keeps
+/// every orientation, every crossing and the direction of collinear edges, and is exact
+/// (checked: every coordinate scales back to itself). Only a ring whose coordinates
+/// differ too much within one axis (about 10⁻¹⁵⁰ and 10¹⁵⁰ of each other) stays
+/// `NotCheckable`.
+pub fn check(p: &[Vect2]) -> Result<Winding, RingFault> {
+    match check_simple(p).and_then(|()| winding(p)) {
+        Err(RingFault::NotCheckable) => {
+            let (kx, ky) = axis_scales(p);
+            let scaled: Vec<Vect2> = p
+                .iter()
+                .map(|v| Vect2::new(times_pow2(v.x, kx), times_pow2(v.y, ky)))
+                .collect();
+            let exact = p.iter().zip(&scaled).all(|(v, w)| {
+                times_pow2(w.x, -kx) == v.x && times_pow2(w.y, -ky) == v.y && w.x.is_finite()
+            });
+            if !exact {
+                return Err(RingFault::NotCheckable);
+            }
+            check_simple(&scaled).and_then(|()| winding(&scaled))
+        }
+        r => r,
+    }
+}
+
 /// Paper A §II's polygon as a case must give it: simple and counterclockwise (a ring
 /// too extreme to check exactly counts as not).
 pub fn simple_ccw(p: &[Vect2]) -> bool {
-    check_simple(p).and_then(|()| winding(p)) == Ok(Winding::Counterclockwise)
+    check(p) == Ok(Winding::Counterclockwise)
 }
 
 #[cfg(test)]
@@ -180,6 +236,34 @@ mod tests {
 
     fn ring(xy: &[(f64, f64)]) -> Vec<Vect2> {
         xy.iter().map(|&(x, y)| Vect2::new(x, y)).collect()
+    }
+
+    #[test]
+    fn powers_of_two_scale_exactly() {
+        assert_eq!(times_pow2(1.5, 1100), 1.5 * 2f64.powi(550) * 2f64.powi(550));
+        assert_eq!(times_pow2(times_pow2(5e-324, 1500), -1500), 5e-324);
+        assert_eq!(axis_scales(&ring(&[(1.0, 4.0), (-2.0, 0.0)])), (499, 498));
+    }
+
+    /// A ring of subnormal size is checked exactly after scaling, not left unchecked.
+    #[test]
+    fn a_tiny_bow_tie_is_still_found() {
+        let t = 1e-310;
+        let bow = ring(&[
+            (0.0, 0.0),
+            (4.0 * t, 4.0 * t),
+            (4.0 * t, 0.0),
+            (0.0, 4.0 * t),
+        ]);
+        assert_eq!(check_simple(&bow), Err(RingFault::NotCheckable));
+        assert!(matches!(check(&bow), Err(RingFault::Crossing { .. })));
+        let sq = ring(&[
+            (0.0, 0.0),
+            (4.0 * t, 0.0),
+            (4.0 * t, 4.0 * t),
+            (0.0, 4.0 * t),
+        ]);
+        assert_eq!(check(&sq), Ok(Winding::Counterclockwise));
     }
 
     #[test]

@@ -317,7 +317,7 @@ fn area_from(
     t0: Option<f64>,
     tf: Option<f64>,
 ) -> Result<Area, ScenarioError> {
-    use crate::ring::{check_simple, collinear, winding, RingFault, Winding};
+    use crate::ring::{check, collinear, RingFault, Winding};
     use crate::vect2::Vect2;
     const FIELD: &str = "geometry.coordinates[0]";
     if ring.len() < 2 || ring.first() != ring.last() {
@@ -342,7 +342,7 @@ fn area_from(
             Vect2::new(x, y)
         })
         .collect();
-    match check_simple(&plane).and_then(|()| winding(&plane)) {
+    match check(&plane) {
         Ok(Winding::Counterclockwise) => {}
         Ok(Winding::Clockwise) => ring.reverse(),
         Err(RingFault::Crossing { .. }) if collinear(&plane) => {

@@ -1,6 +1,6 @@
 //! The benchmark workload, shared by benches/detect.rs (criterion) and
 //! examples/uniform_workload.rs (the same cases as case lines, for `polyguard detect`):
-//! random star-shaped (so simple) counterclockwise polygons of size ~1000, lookahead 300, BUFF 0.01,
+//! random star-shaped counterclockwise polygons of size ~1000, lookahead 300, BUFF 0.01,
 //! F 1e-4, a point starting 1500 from the centre aimed within 800 of it, about half the
 //! cases hitting. No threshold is sought: the uniform workload.
 #![allow(dead_code)]
@@ -50,18 +50,6 @@ pub fn workload(n: usize, warping: bool, seed: u64) -> Workload {
             .map(|_| rng.uniform(0.0, std::f64::consts::TAU))
             .collect();
         angles.sort_by(f64::total_cmp);
-        // All angular gaps below half a turn, or the ring may cross itself (a case the
-        // format refuses): where one is not, the same numbers spread over n sectors,
-        // x_i ↦ τ(i + x_i/τ)/n, which keeps the random stream (and every other case).
-        let widest = angles
-            .windows(2)
-            .map(|w| w[1] - w[0])
-            .fold(angles[0] + std::f64::consts::TAU - angles[n - 1], f64::max);
-        if widest >= std::f64::consts::PI {
-            for (i, a) in angles.iter_mut().enumerate() {
-                *a = std::f64::consts::TAU * (i as f64 + *a / std::f64::consts::TAU) / n as f64;
-            }
-        }
         let verts: Vec<Vect2> = angles
             .iter()
             .map(|&a| {

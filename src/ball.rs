@@ -281,7 +281,7 @@ impl Ball {
         }
     }
 
-    /// self / 2 (exact unless subnormal, which [`prod_err`] covers).
+    /// self / 2 (exact unless subnormal, which `prod_err` covers).
     #[inline(always)]
     pub fn half(self) -> Ball {
         let z = 0.5 * self.z;

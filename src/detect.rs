@@ -521,7 +521,7 @@ fn dot_coeffs(ww: BallV, vv: BallV, aa: BallV, bb: BallV, zero: [bool; 4]) -> [B
     [a, b, c]
 }
 
-/// Paper A §II.I dot_nn_lin (omitted in the paper, derived in [`float_set`]): one of the
+/// Paper A §II.I dot_nn_lin (omitted in the paper, derived in `float_set`): one of the
 /// two intervals whose union is {t ∈ [0, T] : (ww + t·vv)·(aa + t·bb) ≥ 0}.
 ///
 /// Certified as an outer enclosure: the returned interval contains the exact one.
@@ -729,9 +729,9 @@ fn pair_err(nx: f64, rx: f64, ny: f64, ry: f64) -> f64 {
 /// choice meets exactly when some t lies in all four unions, i.e. when the four
 /// quadratics (1 + F)‖a‖² ∓ w·a and F‖a‖² ∓ w×a (a = aa + t·bb, w = ww + t·vv; w·a⊥ =
 /// w × a) are all ≥ 0 at one t. Their coefficients share nine dot and cross products,
-/// formed once, with static error bounds ([`simp_quadratics`]). Each quadratic's set is
-/// enclosed from outside and from inside ([`ball_set`]): no meeting of the outer sets is
-/// a certain `No`; a time at which all four are certainly ≥ 0 ([`quad_at`]), or a
+/// formed once, with static error bounds (`simp_quadratics`). Each quadratic's set is
+/// enclosed from outside and from inside (`ball_set`): no meeting of the outer sets is
+/// a certain `No`; a time at which all four are certainly ≥ 0 (`quad_at`), or a
 /// meeting of the inner sets, a certain `Yes`; anything between is `Unsure`. The
 /// perpendicular conditions go first: they fail for most edges, and where they hold
 /// (short intervals) the along conditions are usually settled by one evaluation, without

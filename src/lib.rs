@@ -1,7 +1,7 @@
 //! polyguard: does a moving point enter a moving (possibly warping) polygon?
 //!
 //! The f64 engine of paper A (Narkawicz & Hagen): [`quad`] (§I), [`contain`] (§II.B–E),
-//! [`proximity`] (§II.G), [`detect`] (§II.H, §II.I, §III), [`well_formed`] (§II.J), every
+//! [`proximity`] (§II.G), [`detect`] (§II.H, §II.I, §III), [`well_formed`](mod@well_formed) (§II.J), every
 //! sign decision in [`predicates`], certified by the arithmetic of [`ball`]. The
 //! high-level entry point is `api::detect`.
 //!

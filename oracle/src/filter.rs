@@ -1,5 +1,5 @@
 //! The floating filter in front of the exact oracle, as CGAL's filtered kernels
-//! do it: every sign decision of [`crate::paper_detect`] and [`crate::truth`] is
+//! do it: every sign decision of [`crate::paper_detect`] and [`crate::truth()`] is
 //! first tried in interval arithmetic on binary floats, and made exactly only when
 //! the interval cannot certify it. The answers are those of the exact path
 //! ([`crate::paper_detect_unfiltered`], [`crate::truth_unfiltered`]), bit for bit.

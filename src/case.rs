@@ -388,6 +388,15 @@ mod tests {
         }
     }
 
+    /// Each (from, to, error): GOOD with `from` replaced by `to` gives that error.
+    fn edits_give(cases: &[(&str, &str, &str)]) {
+        for &(from, to, want) in cases {
+            let line = GOOD.replacen(from, to, 1);
+            assert_ne!(line, GOOD, "{from}");
+            assert_eq!(err(&line), want, "{line}");
+        }
+    }
+
     const GOOD: &str = r#"{"id":"a","lookahead":10,"buff":0.01,"point":{"pos":[5,-3],"vel":[0,1]},"polygon":{"vertices":[[0,0],[2,0],[2,2],[0,2]],"velocities":[[1,0],[1,0],[1,0],[1,0]]}}"#;
 
     #[test]
@@ -448,11 +457,7 @@ mod tests {
                 "point.vel: 2 numbers (as many as point.pos), 3 expected",
             ),
         ];
-        for (from, to, want) in cases {
-            let line = GOOD.replacen(from, to, 1);
-            assert_ne!(line, GOOD, "{from}");
-            assert_eq!(err(&line), want, "{line}");
-        }
+        edits_give(&cases);
         // 3D point without a slab, slab without all three fields.
         let line3 = GOOD.replace(
             r#""pos":[5,-3],"vel":[0,1]"#,
@@ -502,11 +507,7 @@ mod tests {
                 "polygon.Vertices: unknown field; did you mean vertices?",
             ),
         ];
-        for (from, to, want) in cases {
-            let line = GOOD.replacen(from, to, 1);
-            assert_ne!(line, GOOD, "{from}");
-            assert_eq!(err(&line), want, "{line}");
-        }
+        edits_give(&cases);
         // Annotations for people and tools go in `meta`, which detection never reads.
         let meta = GOOD.replace(
             r#""id":"a","#,

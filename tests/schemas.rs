@@ -8,9 +8,7 @@
 #![cfg(all(feature = "cli", feature = "earth"))]
 
 use std::fs;
-use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
 
 use jsonschema::Validator;
 use serde_json::{json, Value};
@@ -102,23 +100,12 @@ fn regression_files() -> Vec<PathBuf> {
     files
 }
 
+mod common;
+
 /// Runs the built binary with `input` on standard input: (stdout, exit code).
 fn polyguard(args: &[&str], input: &[u8]) -> (String, i32) {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_polyguard"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("spawn polyguard");
-    let mut stdin = child.stdin.take().expect("stdin");
-    stdin.write_all(input).expect("write");
-    drop(stdin);
-    let out = child.wait_with_output().expect("wait");
-    (
-        String::from_utf8(out.stdout).expect("stdout is UTF-8"),
-        out.status.code().unwrap_or(-1),
-    )
+    let (out, _, code) = common::run(args, input);
+    (out, code)
 }
 
 // ---------------------------------------------------------------------------------------

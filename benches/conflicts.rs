@@ -5,13 +5,16 @@
 //! (`polyguard generate … --density-box | polyguard conflicts -`), see the note.
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-use polyguard::cli::conflicts::analyse;
-use polyguard::cli::generate::{generate, Mix};
-use polyguard::conflict::{pipeline, stage1, stage2, stage3, stage4, DEFAULT_TIME_TOLERANCE_H};
-use polyguard::scenario;
+use polyguard_cli::commands::generate::seeded;
+use polyguard_earth::analysis::analyse;
+use polyguard_earth::conflict::{
+    pipeline, stage1, stage2, stage3, stage4, DEFAULT_TIME_TOLERANCE_H,
+};
+use polyguard_earth::generate::Mix;
+use polyguard_earth::scenario;
 
 fn text(n: usize, mix: Mix, density_box: bool) -> String {
-    scenario::to_geojson(&generate(n, mix, 1, density_box)).to_string()
+    scenario::to_geojson(&seeded(n, mix, 1, density_box)).to_string()
 }
 
 fn end_to_end(c: &mut Criterion) {
@@ -23,16 +26,14 @@ fn end_to_end(c: &mut Criterion) {
     ] {
         let t = text(800, mix, false);
         g.bench_function(name, |b| {
-            b.iter(|| {
-                analyse(black_box(&t), DEFAULT_TIME_TOLERANCE_H, false).map(|a| a.answer.len())
-            })
+            b.iter(|| analyse(black_box(&t), DEFAULT_TIME_TOLERANCE_H).map(|a| a.answer.len()))
         });
     }
     g.finish();
 }
 
 fn stages(c: &mut Criterion) {
-    let sc = generate(800, Mix::Mixed, 1, false);
+    let sc = seeded(800, Mix::Mixed, 1, false);
     let objs = scenario::objects(&sc);
     let cands = stage1::candidates(&objs);
     let regions = stage2::regions(&objs, &cands, true);
@@ -72,7 +73,7 @@ fn scaling(c: &mut Criterion) {
     let mut g = c.benchmark_group("scaling");
     g.sample_size(10);
     for n in [1_000usize, 10_000] {
-        let objs = scenario::objects(&generate(n, Mix::Mixed, 1, true));
+        let objs = scenario::objects(&seeded(n, Mix::Mixed, 1, true));
         g.throughput(Throughput::Elements(n as u64));
         g.bench_with_input(BenchmarkId::new("mixed_density_box", n), &objs, |b, o| {
             b.iter(|| {

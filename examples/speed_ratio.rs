@@ -1,5 +1,5 @@
 //! The certified engine against the plain f64 transcription (`polyguard::plain`, the
-//! engine of commit b0875a2) on the criterion workload (benches/shared/workload.rs),
+//! engine of commit b0875a2) on the criterion workload (`polyguard_cli::harness::workload`),
 //! interleaved in one process: 30 rounds of `REPS` passes over the 256 cases per engine,
 //! the fastest round of each reported, and their ratio. A quick look between criterion
 //! runs on a noisy machine; callgrind gives instruction counts that the load does not
@@ -16,16 +16,13 @@
 //! and warping, n = 8). With an engine (`certified` or `plain`) and a count, the example
 //! runs that engine alone that many passes (for profilers).
 
-#[path = "../benches/shared/workload.rs"]
-mod workload;
-
 use std::hint::black_box;
 use std::process::exit;
 use std::time::Instant;
 
 use polyguard::detect::{detect_3d, detect_diff_2d, detect_same_2d};
 use polyguard::plain::detect as plain;
-use workload::{workload, Workload, BUFF, CASES, FAC, T};
+use polyguard_cli::harness::workload::{workload, Workload, BUFF, CASES, FAC, T};
 
 /// How many cases of `w` the engine finds, over `reps` passes.
 #[inline(never)]

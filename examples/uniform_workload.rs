@@ -1,4 +1,4 @@
-//! Writes the benchmark workload (benches/shared/workload.rs) as case lines, so that
+//! Writes the benchmark workload (`polyguard_cli::harness::workload`) as case lines, so that
 //! `polyguard detect --repeat R --timing` times it and counts its answers' `kind`:
 //!
 //! ```text
@@ -11,13 +11,10 @@
 //! seeds, as in the criterion bench; the few clockwise polygons of the random workload
 //! are left out (the case format requires counterclockwise ones).
 
-#[path = "../benches/shared/workload.rs"]
-mod workload;
-
 use std::io::{self, BufWriter, Write};
 
 use polyguard::Vect2;
-use workload::{workload, BUFF, FAC, T};
+use polyguard_cli::harness::workload::{workload, BUFF, FAC, T};
 
 fn pairs(v: &[Vect2]) -> String {
     let items: Vec<String> = v.iter().map(|p| format!("[{:?},{:?}]", p.x, p.y)).collect();

@@ -29,22 +29,6 @@
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
 
-#[cfg(feature = "earth")]
-pub mod conflict;
-#[cfg(feature = "earth")]
-pub mod earth;
-#[cfg(feature = "earth")]
-pub mod scenario;
-
-#[cfg(feature = "cli")]
-pub mod case;
-#[cfg(feature = "cli")]
-pub mod cli;
-#[cfg(feature = "cli")]
-pub mod harness;
-#[cfg(any(feature = "cli", feature = "earth"))]
-pub mod json;
-
 #[cfg(feature = "std")]
 pub mod api;
 pub mod ball;

@@ -32,7 +32,7 @@ pub fn orient(a: Vect2, b: Vect2, c: Vect2) -> Option<i8> {
     let bound = ORIENT_BOUND * size;
     // The bound holds for roundings relative to their results: not when a product falls
     // below the normal range, where its absolute error (up to 2⁻¹⁰⁷⁵) can exceed it. Such
-    // sizes go to the exact step (found by tests/ring_vs_oracle.rs).
+    // sizes go to the exact step (found by tests/paper_a_ring_vs_oracle.rs).
     if size >= MIN_RELATIVE && det.is_finite() && bound.is_finite() && det.abs() > bound {
         return Some(if det > 0.0 { 1 } else { -1 });
     }

@@ -52,7 +52,6 @@
 //! their union. The engine and the oracle label the one-interval cases differently (the
 //! engine gives it to σ = +1 except for A = 0, B < 0; the oracle always to σ = −1), so the
 //! interval suites compare the pair of intervals up to that swap.
-#![cfg(feature = "cli")]
 
 use std::cmp::Ordering;
 use std::f64::consts::TAU;
@@ -67,8 +66,7 @@ use polyguard_oracle::convert::{f64_to_exact, to_float};
 use polyguard_oracle::detect::Interval as ExactInterval;
 use polyguard_oracle::qfield::Alg;
 use polyguard_oracle::{
-    contain as oc, detect as od, geom, proximity as op, quad as oq, well_formed as ow, ExactField,
-    Q, V2,
+    contain as oc, detect as od, proximity as op, quad as oq, well_formed as ow, ExactField, Q, V2,
 };
 use proptest::prelude::*;
 
@@ -246,8 +244,7 @@ fn dist2_point_segment(s: &V2<Q>, a: &V2<Q>, b: &V2<Q>) -> Q {
 /// Exact squared distance between the segments a b and c d (attained at an end of one of
 /// them unless they meet).
 fn dist2_segments(a: &V2<Q>, b: &V2<Q>, c: &V2<Q>, d: &V2<Q>) -> Q {
-    let p = |v: &V2<Q>| [v.x.clone(), v.y.clone()];
-    if geom::segments_meet(&p(a), &p(b), &p(c), &p(d)) {
+    if polyguard_oracle::truth::segments_intersect(a, b, c, d) {
         return <Q as ExactField>::zero();
     }
     [

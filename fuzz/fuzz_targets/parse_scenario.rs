@@ -4,7 +4,7 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use polyguard::scenario::{fast_parse, parse, parse_general};
+use polyguard_earth::scenario::{fast_parse, parse, parse_general};
 
 fuzz_target!(|data: &[u8]| {
     let text = String::from_utf8_lossy(data);

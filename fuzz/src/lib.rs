@@ -9,10 +9,10 @@
 //!   ±0, subnormals, the overflow and underflow thresholds of a square).
 
 use arbitrary::{Arbitrary, Unstructured};
-use polyguard::case::parse_line;
-use polyguard::harness::classify::{self, Class};
-use polyguard::harness::gen::{self, Bytes, Mode, Shape, Source};
-use polyguard::harness::spec::RawCase;
+use polyguard_cli::case::parse_line;
+use polyguard_cli::harness::classify::{self, Class};
+use polyguard_cli::harness::gen::{self, Bytes, Mode, Shape, Source};
+use polyguard_cli::harness::spec::RawCase;
 
 /// The snake_case name of a shape, as the target names use it.
 pub fn shape_name(shape: Shape) -> &'static str {

@@ -32,11 +32,8 @@ pub mod case;
 pub mod contain;
 pub mod convert;
 pub mod detect;
-#[cfg(feature = "rug")]
-pub mod earth_ref;
 pub mod field;
 pub mod filter;
-pub mod geom;
 pub mod proximity;
 pub mod qfield;
 pub mod quad;

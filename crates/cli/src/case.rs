@@ -1,0 +1,607 @@
+//! Reading one detection case from a JSON line (docs/cases.md).
+
+use serde_json::{Map, Value};
+
+use polyguard::api::{Case, MovingPoint, MovingPolygon, Params};
+use polyguard::error::CaseError;
+use polyguard::vect2::Vect2;
+
+/// One line of the case file: the id to echo back and the case (or what is wrong with it).
+pub struct ParsedLine {
+    /// The case's `id`, or the 1-based line number when it has none (or the line is not
+    /// an object).
+    pub id: Value,
+    /// The engine's validated case, or the first thing wrong with the line.
+    pub case: Result<Case, CaseError>,
+}
+
+/// The case format (not a paper function): a JSON value read strictly: an object that gives a key twice is an error naming the
+/// key (serde_json alone keeps the last value, silently).
+struct Strict(Value);
+
+impl<'de> serde::Deserialize<'de> for Strict {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        d.deserialize_any(StrictVisitor).map(Strict)
+    }
+}
+
+struct StrictVisitor;
+
+impl<'de> serde::de::Visitor<'de> for StrictVisitor {
+    type Value = Value;
+
+    fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str("a JSON value")
+    }
+    fn visit_bool<E>(self, b: bool) -> Result<Value, E> {
+        Ok(Value::Bool(b))
+    }
+    fn visit_i64<E>(self, x: i64) -> Result<Value, E> {
+        Ok(Value::from(x))
+    }
+    fn visit_u64<E>(self, x: u64) -> Result<Value, E> {
+        Ok(Value::from(x))
+    }
+    fn visit_f64<E>(self, x: f64) -> Result<Value, E> {
+        Ok(Value::from(x))
+    }
+    fn visit_str<E>(self, s: &str) -> Result<Value, E> {
+        Ok(Value::from(s))
+    }
+    fn visit_string<E>(self, s: String) -> Result<Value, E> {
+        Ok(Value::String(s))
+    }
+    fn visit_unit<E>(self) -> Result<Value, E> {
+        Ok(Value::Null)
+    }
+    fn visit_none<E>(self) -> Result<Value, E> {
+        Ok(Value::Null)
+    }
+    fn visit_some<D: serde::Deserializer<'de>>(self, d: D) -> Result<Value, D::Error> {
+        serde::Deserialize::deserialize(d).map(|Strict(v)| v)
+    }
+    fn visit_seq<A: serde::de::SeqAccess<'de>>(self, mut seq: A) -> Result<Value, A::Error> {
+        let mut out = Vec::new();
+        while let Some(Strict(v)) = seq.next_element()? {
+            out.push(v);
+        }
+        Ok(Value::Array(out))
+    }
+    fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<Value, A::Error> {
+        let mut out = Map::new();
+        while let Some(key) = map.next_key::<String>()? {
+            if out.contains_key(&key) {
+                return Err(serde::de::Error::custom(format_args!(
+                    "duplicate key `{key}`"
+                )));
+            }
+            let Strict(v) = map.next_value()?;
+            out.insert(key, v);
+        }
+        Ok(Value::Object(out))
+    }
+}
+
+/// Reads one non-blank line of the case format. A byte-order mark in front (the first
+/// line of a file saved by some editors) is skipped.
+pub fn parse_line(line: &str, line_no: usize) -> ParsedLine {
+    parse_line_with(line, line_no, DEFAULT_KAPPA_DEG)
+}
+
+/// [`parse_line`] with the κ (degrees) that a case without `kappa` gets.
+pub fn parse_line_with(line: &str, line_no: usize, default_kappa_deg: f64) -> ParsedLine {
+    let line = line.strip_prefix('\u{feff}').unwrap_or(line);
+    // the line ending is not part of the case (an error at the end says its column)
+    let line = line.trim_end_matches(['\n', '\r']);
+    let value: Value = match serde_json::from_str::<Strict>(line) {
+        Ok(Strict(v)) => v,
+        Err(e) => {
+            // serde_json places the error "at line 1 column C" of this one line: say
+            // "at column C" (the file's line is in the answer). A line that is JSON but
+            // for a repeated key still gives its id back.
+            let text = e.to_string();
+            let message = match text.find(" at line ") {
+                Some(i) => format!("{} at column {}", &text[..i], e.column()),
+                None => text,
+            };
+            // NaN and ±Infinity (which Python's json writes) are not JSON: read them as
+            // marked strings to name their field and keep the id.
+            let lenient = serde_json::from_str::<Value>(&mark_non_json_numbers(line)).ok();
+            let id = lenient
+                .as_ref()
+                .and_then(|v| v.get("id").cloned())
+                .filter(|v| !is_marked(v))
+                .unwrap_or_else(|| Value::from(line_no));
+            let marked = lenient
+                .as_ref()
+                .and_then(|v| first_marked(v, String::new()));
+            let case = match marked {
+                Some((field, literal)) => Err(CaseError::NotJsonNumber { field, literal }),
+                None => Err(CaseError::Syntax { message }),
+            };
+            return ParsedLine { id, case };
+        }
+    };
+    let Value::Object(obj) = value else {
+        return ParsedLine {
+            id: Value::from(line_no),
+            case: Err(CaseError::Syntax {
+                message: "the line is JSON but not an object".into(),
+            }),
+        };
+    };
+    let id = obj
+        .get("id")
+        .cloned()
+        .unwrap_or_else(|| Value::from(line_no));
+    ParsedLine {
+        id,
+        case: case_from_object_with(&obj, default_kappa_deg),
+    }
+}
+
+/// The literals some writers put where JSON wants a number.
+const NON_JSON_NUMBERS: [&str; 4] = ["-Infinity", "Infinity", "NaN", "+Infinity"];
+/// A marked literal, as a string no JSON writer produces (a NUL character).
+const MARK: char = '\u{0}';
+
+/// `line` with every NaN/Infinity literal outside strings turned into the string
+/// "\u0000NaN" (etc.), so that a JSON reader can place it.
+fn mark_non_json_numbers(line: &str) -> String {
+    let mut out = String::with_capacity(line.len() + 16);
+    let mut in_string = false;
+    let mut escaped = false;
+    let mut rest = line;
+    while let Some(c) = rest.chars().next() {
+        if in_string {
+            in_string = c != '"' || escaped;
+            escaped = c == '\\' && !escaped;
+        } else if c == '"' {
+            in_string = true;
+        } else if let Some(lit) = NON_JSON_NUMBERS.iter().find(|l| rest.starts_with(**l)) {
+            out.push_str(&format!("\"\\u0000{lit}\""));
+            rest = &rest[lit.len()..];
+            continue;
+        }
+        out.push(c);
+        rest = &rest[c.len_utf8()..];
+    }
+    out
+}
+
+fn is_marked(v: &Value) -> bool {
+    v.as_str().is_some_and(|s| s.starts_with(MARK))
+}
+
+/// The path and literal of the first marked value in `v` (depth first, keys in order).
+fn first_marked(v: &Value, path: String) -> Option<(String, String)> {
+    match v {
+        Value::String(s) if is_marked(v) => Some((path, s.trim_start_matches(MARK).to_owned())),
+        Value::Array(a) => a
+            .iter()
+            .enumerate()
+            .find_map(|(k, x)| first_marked(x, format!("{path}[{k}]"))),
+        Value::Object(o) => o.iter().find_map(|(k, x)| {
+            let p = if path.is_empty() {
+                k.clone()
+            } else {
+                format!("{path}.{k}")
+            };
+            first_marked(x, p)
+        }),
+        _ => None,
+    }
+}
+
+fn number(v: &Value, field: &str) -> Result<f64, CaseError> {
+    match v.as_f64() {
+        Some(x) if x.is_finite() => Ok(x),
+        Some(_) => Err(CaseError::NotFinite {
+            field: field.into(),
+        }),
+        None => Err(CaseError::WrongType {
+            field: field.into(),
+            expected: "a number",
+        }),
+    }
+}
+
+fn get<'a>(obj: &'a Map<String, Value>, key: &str, field: &str) -> Result<&'a Value, CaseError> {
+    match obj.get(key) {
+        Some(Value::Null) | None => Err(CaseError::Missing {
+            field: field.into(),
+        }),
+        Some(v) => Ok(v),
+    }
+}
+
+fn object<'a>(v: &'a Value, field: &str) -> Result<&'a Map<String, Value>, CaseError> {
+    v.as_object().ok_or_else(|| CaseError::WrongType {
+        field: field.into(),
+        expected: "an object",
+    })
+}
+
+fn array<'a>(v: &'a Value, field: &str) -> Result<&'a Vec<Value>, CaseError> {
+    v.as_array().ok_or_else(|| CaseError::WrongType {
+        field: field.into(),
+        expected: "an array",
+    })
+}
+
+fn numbers(v: &Value, field: &str) -> Result<Vec<f64>, CaseError> {
+    array(v, field)?
+        .iter()
+        .enumerate()
+        .map(|(k, x)| number(x, &format!("{field}[{k}]")))
+        .collect()
+}
+
+fn points(v: &Value, field: &str) -> Result<Vec<Vect2>, CaseError> {
+    let arr = array(v, field)?;
+    let mut out = Vec::with_capacity(arr.len());
+    for (i, p) in arr.iter().enumerate() {
+        let f = format!("{field}[{i}]");
+        let xy = numbers(p, &f)?;
+        if xy.len() != 2 {
+            return Err(CaseError::WrongLength {
+                field: f,
+                expected: 2,
+                found: xy.len(),
+                what: "numbers (a point is [x, y])",
+            });
+        }
+        out.push(Vect2::new(xy[0], xy[1]));
+    }
+    Ok(out)
+}
+
+/// The keys each level of a case line may have (docs: the case format). `meta` holds
+/// annotations for people and tools (a kept counterexample's class, why a regression
+/// case is there); detection never reads it.
+const TOP_KEYS: [&str; 8] = [
+    "id",
+    "lookahead",
+    "buff",
+    "fac",
+    "kappa",
+    "point",
+    "polygon",
+    "meta",
+];
+const POINT_KEYS: [&str; 2] = ["pos", "vel"];
+const POLYGON_KEYS: [&str; 5] = ["vertices", "velocities", "bottom", "top", "vz"];
+
+/// The first key of `obj` that is not in `known`, as an error naming its path (`prefix`
+/// is "" or "point." …) and the nearest known key when it is close: the same letters in
+/// another case, or at most three edits away (and fewer than half its letters).
+fn only_known(
+    obj: &Map<String, Value>,
+    known: &[&'static str],
+    prefix: &str,
+) -> Result<(), CaseError> {
+    let Some(key) = obj.keys().find(|k| !known.contains(&k.as_str())) else {
+        return Ok(());
+    };
+    let suggestion = polyguard_earth::json::suggest(key, known);
+    Err(CaseError::UnknownField {
+        field: format!("{prefix}{key}"),
+        suggestion,
+    })
+}
+
+/// Builds and validates a case from its JSON object, κ at the format's default when the
+/// case gives none.
+pub fn case_from_object(obj: &Map<String, Value>) -> Result<Case, CaseError> {
+    case_from_object_with(obj, DEFAULT_KAPPA_DEG)
+}
+
+/// κ in degrees when neither the case nor the command line gives one (§II.J leaves it to
+/// the user).
+pub const DEFAULT_KAPPA_DEG: f64 = 5.0;
+
+/// [`case_from_object`] with the κ (degrees) that a case without `kappa` gets.
+pub fn case_from_object_with(
+    obj: &Map<String, Value>,
+    default_kappa_deg: f64,
+) -> Result<Case, CaseError> {
+    only_known(obj, &TOP_KEYS, "")?;
+    if let Some(m) = obj.get("meta") {
+        object(m, "meta")?;
+    }
+    let lookahead = number(get(obj, "lookahead", "lookahead")?, "lookahead")?;
+    let buff = number(get(obj, "buff", "buff")?, "buff")?;
+    let mut params = Params::new(buff)?;
+    match obj.get("fac") {
+        None | Some(Value::Null) => {}
+        Some(f) => params = params.with_fac(number(f, "fac")?)?,
+    }
+    match obj.get("kappa") {
+        None | Some(Value::Null) => params = params.with_kappa_degrees(default_kappa_deg)?,
+        Some(k) => params = params.with_kappa_degrees(number(k, "kappa")?)?,
+    }
+
+    let point = object(get(obj, "point", "point")?, "point")?;
+    only_known(point, &POINT_KEYS, "point.")?;
+    let pos = numbers(get(point, "pos", "point.pos")?, "point.pos")?;
+    let vel = numbers(get(point, "vel", "point.vel")?, "point.vel")?;
+    if pos.len() != 2 && pos.len() != 3 {
+        return Err(CaseError::PointLength { found: pos.len() });
+    }
+    if vel.len() != pos.len() {
+        return Err(CaseError::WrongLength {
+            field: "point.vel".into(),
+            expected: pos.len(),
+            found: vel.len(),
+            what: "numbers (as many as point.pos)",
+        });
+    }
+    let point = if pos.len() == 3 {
+        MovingPoint::new_3d([pos[0], pos[1], pos[2]], [vel[0], vel[1], vel[2]])?
+    } else {
+        MovingPoint::new_2d(Vect2::new(pos[0], pos[1]), Vect2::new(vel[0], vel[1]))?
+    };
+
+    let poly = object(get(obj, "polygon", "polygon")?, "polygon")?;
+    only_known(poly, &POLYGON_KEYS, "polygon.")?;
+    let vertices = points(
+        get(poly, "vertices", "polygon.vertices")?,
+        "polygon.vertices",
+    )?;
+    let velocities = match poly.get("velocities") {
+        None | Some(Value::Null) => None,
+        Some(v) => Some(points(v, "polygon.velocities")?),
+    };
+    let mut polygon = MovingPolygon::new(vertices, velocities)?;
+    let slab_fields = ["bottom", "top", "vz"].map(|k| poly.get(k).filter(|v| !v.is_null()));
+    match slab_fields {
+        [None, None, None] => {}
+        [Some(b), Some(t), Some(z)] => {
+            polygon = polygon.with_slab(
+                number(b, "polygon.bottom")?,
+                number(t, "polygon.top")?,
+                number(z, "polygon.vz")?,
+            )?;
+        }
+        _ => {
+            let missing = ["bottom", "top", "vz"]
+                .iter()
+                .zip(slab_fields.iter())
+                .find(|(_, v)| v.is_none())
+                .map(|(k, _)| *k)
+                .unwrap_or("bottom");
+            return Err(CaseError::Missing {
+                field: format!("polygon.{missing}"),
+            });
+        }
+    }
+    Case::new(lookahead, point, polygon, params)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn err(line: &str) -> String {
+        match parse_line(line, 7).case {
+            Err(e) => e.to_string(),
+            Ok(_) => String::from("ok"),
+        }
+    }
+
+    /// Each (from, to, error): GOOD with `from` replaced by `to` gives that error.
+    fn edits_give(cases: &[(&str, &str, &str)]) {
+        for &(from, to, want) in cases {
+            let line = GOOD.replacen(from, to, 1);
+            assert_ne!(line, GOOD, "{from}");
+            assert_eq!(err(&line), want, "{line}");
+        }
+    }
+
+    const GOOD: &str = r#"{"id":"a","lookahead":10,"buff":0.01,"point":{"pos":[5,-3],"vel":[0,1]},"polygon":{"vertices":[[0,0],[2,0],[2,2],[0,2]],"velocities":[[1,0],[1,0],[1,0],[1,0]]}}"#;
+
+    #[test]
+    fn good_line_reads() {
+        let p = parse_line(GOOD, 1);
+        assert_eq!(p.id, Value::from("a"));
+        let c = p.case.expect("valid");
+        assert_eq!(c.lookahead(), 10.0);
+        assert_eq!(c.params().fac(), Params::DEFAULT_FAC);
+        assert!(c.polygon().statically_shaped());
+    }
+
+    #[test]
+    fn each_bad_field_is_named() {
+        assert_eq!(err("not json").split(':').next(), Some("line"));
+        assert_eq!(err("[1,2]").split(':').next(), Some("line"));
+        let cases = [
+            (
+                r#""lookahead":10,"#,
+                r#""lookahead":-1,"#,
+                "lookahead: -1 is not > 0",
+            ),
+            (r#""lookahead":10,"#, r#""#, "lookahead: missing"),
+            (r#""buff":0.01,"#, r#""buff":0,"#, "buff: 0 is not > 0"),
+            (
+                r#""buff":0.01,"#,
+                r#""buff":0.01,"fac":1.5,"#,
+                "fac: 1.5 is outside (0, 1)",
+            ),
+            (
+                r#""buff":0.01,"#,
+                r#""buff":"x","#,
+                "buff: must be a number",
+            ),
+            (
+                r#""vel":[0,1]"#,
+                r#""vel":[0,1,2]"#,
+                "point.vel: 3 numbers (as many as point.pos), 2 expected",
+            ),
+            (
+                r#"[[0,0],[2,0],[2,2],[0,2]]"#,
+                r#"[[0,0],[2,0]]"#,
+                "polygon.vertices: 2 points, at least 3 are needed",
+            ),
+            (
+                r#"[[0,0],[2,0],[2,2],[0,2]]"#,
+                r#"[[0,0],[2,0],[2,2,1],[0,2]]"#,
+                "polygon.vertices[2]: 3 numbers (a point is [x, y]), 2 expected",
+            ),
+            (
+                r#","velocities":[[1,0],[1,0],[1,0],[1,0]]"#,
+                r#","velocities":[[1,0],[1,0]]"#,
+                "polygon.velocities: 2 velocities (one per vertex), 4 expected",
+            ),
+            (
+                r#""pos":[5,-3]"#,
+                r#""pos":[5,-3,1]"#,
+                "point.vel: 2 numbers (as many as point.pos), 3 expected",
+            ),
+        ];
+        edits_give(&cases);
+        // 3D point without a slab, slab without all three fields.
+        let line3 = GOOD.replace(
+            r#""pos":[5,-3],"vel":[0,1]"#,
+            r#""pos":[5,-3,1],"vel":[0,1,0]"#,
+        );
+        assert!(err(&line3).starts_with("polygon.bottom: 2D and 3D mixed"));
+        let partial = GOOD.replace(r#""velocities""#, r#""bottom":0,"top":5,"velocities""#);
+        assert_eq!(err(&partial), "polygon.vz: missing");
+        let slab2d = GOOD.replace(
+            r#""velocities""#,
+            r#""bottom":0,"top":5,"vz":0,"velocities""#,
+        );
+        assert!(err(&slab2d).starts_with("point.pos: 2D and 3D mixed"));
+        // A number too large for an f64 is a syntax error of serde_json, not a panic.
+        assert!(err(&GOOD.replace("10,", "1e400,")).starts_with("line:"));
+    }
+
+    /// A typo must never turn a hit into a miss: the misspelt `velocity` was read as a
+    /// polygon at rest. Every unknown key, at every level, is an error naming its path,
+    /// with the nearest known name when one is close.
+    #[test]
+    fn unknown_fields_are_errors() {
+        let cases = [
+            (
+                r#""velocities""#,
+                r#""velocity""#,
+                "polygon.velocity: unknown field; did you mean velocities?",
+            ),
+            (
+                r#""lookahead""#,
+                r#""look_ahead""#,
+                "look_ahead: unknown field; did you mean lookahead?",
+            ),
+            (
+                r#""vel""#,
+                r#""velo""#,
+                "point.velo: unknown field; did you mean vel?",
+            ),
+            (
+                r#""buff":0.01,"#,
+                r#""buff":0.01,"colour":"red","#,
+                "colour: unknown field",
+            ),
+            (
+                r#""vertices""#,
+                r#""Vertices""#,
+                "polygon.Vertices: unknown field; did you mean vertices?",
+            ),
+        ];
+        edits_give(&cases);
+        // Annotations for people and tools go in `meta`, which detection never reads.
+        let meta = GOOD.replace(
+            r#""id":"a","#,
+            r#""id":"a","meta":{"class":"agree","why":"x"},"#,
+        );
+        assert_eq!(err(&meta), "ok");
+        let bad_meta = GOOD.replace(r#""id":"a","#, r#""id":"a","meta":3,"#);
+        assert_eq!(err(&bad_meta), "meta: must be an object");
+    }
+
+    /// A key given twice would silently keep its last value: an error naming the key.
+    /// A byte-order mark before the first line is not part of the case.
+    #[test]
+    fn duplicate_keys_are_errors_and_a_bom_is_skipped() {
+        let twice = GOOD.replace(r#""buff":0.01,"#, r#""buff":0.01,"buff":5,"#);
+        assert!(
+            err(&twice).starts_with("line: not a JSON object: duplicate key `buff`"),
+            "{}",
+            err(&twice)
+        );
+        let nested = GOOD.replace(r#""vel":[0,1]"#, r#""vel":[0,1],"vel":[1,0]"#);
+        assert!(
+            err(&nested).contains("duplicate key `vel`"),
+            "{}",
+            err(&nested)
+        );
+        let bom = format!("\u{feff}{GOOD}");
+        assert_eq!(err(&bom), "ok");
+        assert_eq!(parse_line(&bom, 1).id, Value::from("a"));
+    }
+
+    /// Python's json writes NaN and Infinity, which JSON lacks: the error names the field
+    /// and the id is kept (it said "expected value at line 1 column 64" and lost both).
+    #[test]
+    fn non_json_numbers_name_their_field_and_keep_the_id() {
+        for (lit, field) in [("NaN", "point.pos[0]"), ("-Infinity", "point.pos[0]")] {
+            let line = GOOD.replace(r#""pos":[5,-3]"#, &format!(r#""pos":[{lit},-3]"#));
+            let p = parse_line(&line, 3);
+            assert_eq!(p.id, Value::from("a"));
+            assert_eq!(
+                p.case.err().map(|e| e.to_string()),
+                Some(format!(
+                    "{field}: {lit} is not a JSON number; a case needs finite numbers"
+                ))
+            );
+        }
+        // inside a string it is text, not a number
+        let named = GOOD.replace(r#""id":"a""#, r#""id":"NaN run""#);
+        assert_eq!(parse_line(&named, 3).id, Value::from("NaN run"));
+        assert_eq!(err(&named), "ok");
+    }
+
+    /// A point of one number: 2 or 3 are allowed, and the message says both.
+    #[test]
+    fn a_point_of_one_number_says_two_or_three() {
+        let line = GOOD.replace(r#""pos":[5,-3]"#, r#""pos":[5]"#);
+        assert_eq!(
+            err(&line),
+            "point.pos: 1 number, 2 (x, y) or 3 (x, y, z) expected"
+        );
+    }
+
+    /// κ per case, in degrees, in (0, 180).
+    #[test]
+    fn kappa_is_read_in_degrees() {
+        let with =
+            |k: &str| GOOD.replace(r#""buff":0.01,"#, &format!(r#""buff":0.01,"kappa":{k},"#));
+        let c = parse_line(&with("30"), 1).case.expect("valid");
+        assert_eq!(c.params().kappa(), 30f64.to_radians());
+        assert_eq!(err(&with("180")), "kappa: 180 is outside (0, 180) degrees");
+        assert_eq!(err(&with("0")), "kappa: 0 is outside (0, 180) degrees");
+        let d = parse_line(GOOD, 1).case.expect("valid");
+        assert_eq!(d.params().kappa(), Params::DEFAULT_KAPPA);
+        let e = parse_line_with(GOOD, 1, 12.5).case.expect("valid");
+        assert_eq!(e.params().kappa(), 12.5f64.to_radians());
+    }
+
+    /// A bow tie is its own error naming the crossing edges, not "clockwise".
+    #[test]
+    fn a_bow_tie_names_its_edges() {
+        let line = GOOD.replace("[[0,0],[2,0],[2,2],[0,2]]", "[[0,0],[2,0],[0,2],[2,2]]");
+        assert_eq!(
+            err(&line),
+            "polygon.vertices: edges 1–2 and 3–0 cross (vertices numbered from 0); \
+             the polygon must not intersect itself"
+        );
+        let cw = GOOD.replace("[[0,0],[2,0],[2,2],[0,2]]", "[[0,0],[0,2],[2,2],[2,0]]");
+        assert!(err(&cw).starts_with("polygon.vertices: clockwise order"));
+    }
+
+    #[test]
+    fn missing_id_uses_line_number() {
+        let line = GOOD.replace(r#""id":"a","#, "");
+        assert_eq!(parse_line(&line, 7).id, Value::from(7));
+    }
+}

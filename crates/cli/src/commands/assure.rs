@@ -1,0 +1,367 @@
+//! `polyguard assure`: a seeded safety-assurance run of the f64 engine against paper A
+//! in exact arithmetic and the exact ground truth, on boundary-biased cases.
+
+use std::collections::BTreeMap;
+use std::fs;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::Mutex;
+use std::time::Instant;
+
+use crate::harness::classify::{check_contract, compare, Class, Verdict};
+use crate::harness::gen::{any_case, SplitMix};
+use crate::harness::minimise::minimise;
+use crate::harness::report::{Kept, Report};
+use crate::harness::spec::RawCase;
+use crate::harness::svg::picture;
+
+/// Counterexamples kept (minimised, written with a picture) per class.
+pub const KEEP_PER_CLASS: usize = 5;
+
+/// Arguments of `polyguard assure`.
+#[derive(Debug, clap::Args)]
+#[command(args_conflicts_with_subcommands = true)]
+pub struct AssureArgs {
+    /// `assure merge`: add shard reports instead of running cases.
+    #[command(subcommand)]
+    pub merge: Option<MergeCommand>,
+    /// How many cases (the default takes about a minute on 2 cores).
+    #[arg(long, default_value_t = 250_000)]
+    pub cases: u64,
+    /// The campaign's seed: case k is the same for every thread count and shard.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Worker threads (default: all cores).
+    #[arg(long)]
+    pub threads: Option<usize>,
+    /// Where report.json and the counterexamples go.
+    #[arg(long, default_value = "assure-out")]
+    pub out: PathBuf,
+    /// Run only shard i of N ("i/N", 0-based): case k belongs to shard k mod N.
+    #[arg(long, value_parser = parse_shard)]
+    pub shard: Option<(u64, u64)>,
+    /// No progress bar.
+    #[arg(long)]
+    pub quiet: bool,
+    /// Check only the engine's contract (paper A without rounding says yes ⇒ the engine
+    /// says yes), for long campaigns: no truth, no classes, and paper A in exact
+    /// arithmetic only where the engine does not certify a yes.
+    #[arg(long)]
+    pub contract: bool,
+}
+
+/// `polyguard assure merge`.
+#[derive(Debug, clap::Subcommand)]
+pub enum MergeCommand {
+    /// Join the report.json files of shards of one campaign exactly.
+    Merge {
+        /// The shards' report.json files.
+        #[arg(required = true)]
+        reports: Vec<PathBuf>,
+        /// Where the merged report.json goes.
+        #[arg(long, default_value = "assure-merged")]
+        out: PathBuf,
+    },
+}
+
+fn parse_shard(s: &str) -> Result<(u64, u64), String> {
+    let (i, n) = s.split_once('/').ok_or("expected i/N, e.g. 0/4")?;
+    let i: u64 = i
+        .trim()
+        .parse()
+        .map_err(|_| format!("shard index {i:?} is not a number"))?;
+    let n: u64 = n
+        .trim()
+        .parse()
+        .map_err(|_| format!("shard count {n:?} is not a number"))?;
+    if n == 0 || i >= n {
+        return Err(format!("shard {i}/{n}: need 0 ≤ i < N"));
+    }
+    Ok((i, n))
+}
+
+/// The generator's seed for case k of a campaign.
+fn case_seed(seed: u64, k: u64) -> u64 {
+    let mut m = SplitMix(seed ^ k.wrapping_mul(0xD1B5_4A32_D192_ED03));
+    crate::harness::gen::Source::next_u64(&mut m)
+}
+
+/// Case k of a campaign, with its generator mode.
+pub fn campaign_case(seed: u64, k: u64) -> (RawCase, &'static str) {
+    let mut src = SplitMix(case_seed(seed, k));
+    let (raw, _, _, name) = any_case(&mut src);
+    (raw, name)
+}
+
+fn is_kept_class(c: Class) -> bool {
+    matches!(
+        c,
+        Class::MissedDetection | Class::FalseAlarmFar | Class::PaperGap | Class::FloatDivergence
+    )
+}
+
+fn write_counterexample(
+    dir: &Path,
+    k: u64,
+    v: &Verdict,
+    raw: &RawCase,
+    mode: &str,
+) -> std::io::Result<Kept> {
+    let small = minimise(raw, v.class);
+    let event = compare(&small)
+        .ok()
+        .and_then(|w| w.entry_time)
+        .and_then(|t| t.parse::<f64>().ok())
+        .unwrap_or(small.lookahead);
+    let stem = format!("{}-{k}", v.class.name());
+    let case_file = format!("counterexamples/{stem}.jsonl");
+    let svg_file = format!("counterexamples/{stem}.svg");
+    fs::create_dir_all(dir.join("counterexamples"))?;
+    let extra = [
+        ("class", serde_json::Value::from(v.class.name())),
+        ("function", v.method.name().into()),
+        ("mode", mode.into()),
+        ("engine", v.engine.into()),
+        ("paper_exact", v.paper.into()),
+        (
+            "truth",
+            v.truth
+                .map(serde_json::Value::from)
+                .unwrap_or(serde_json::Value::Null),
+        ),
+    ];
+    fs::write(
+        dir.join(&case_file),
+        small.to_json_line(&stem, &extra) + "\n",
+    )?;
+    let title = format!("{} in {} ({mode})", v.class.name(), v.method.name());
+    fs::write(dir.join(&svg_file), picture(&small, event, &title))?;
+    Ok(Kept {
+        index: k,
+        class: v.class,
+        method: v.method.name().into(),
+        mode: mode.into(),
+        case_file,
+        svg_file,
+    })
+}
+
+/// Runs `polyguard assure`.
+pub fn run(args: &AssureArgs) -> ExitCode {
+    if let Some(MergeCommand::Merge { reports, out }) = &args.merge {
+        return merge(reports, out);
+    }
+    let (shard_i, shard_n) = args.shard.unwrap_or((0, 1));
+    let threads = args
+        .threads
+        .unwrap_or_else(|| {
+            std::thread::available_parallelism()
+                .map(|n| n.get())
+                .unwrap_or(1)
+        })
+        .max(1);
+    if let Err(e) = fs::create_dir_all(&args.out) {
+        eprintln!(
+            "polyguard assure: cannot create {}: {e}",
+            args.out.display()
+        );
+        return ExitCode::from(2);
+    }
+    let mine: u64 = (0..args.cases).filter(|k| k % shard_n == shard_i).count() as u64;
+    let bar = if args.quiet {
+        indicatif::ProgressBar::hidden()
+    } else {
+        indicatif::ProgressBar::new(mine)
+    };
+    bar.set_style(
+        indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} {per_sec} eta {eta} {msg}")
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+    );
+    let next = AtomicU64::new(0);
+    let report = Mutex::new(Report {
+        seed: args.seed,
+        shards: vec![format!("{shard_i}/{shard_n}")],
+        ..Default::default()
+    });
+    let interesting: Mutex<Vec<(u64, Verdict, RawCase, &'static str)>> = Mutex::new(Vec::new());
+    let start = Instant::now();
+    std::thread::scope(|scope| {
+        for _ in 0..threads {
+            scope.spawn(|| {
+                let mut local = Report::default();
+                let mut local_rejected = 0u64;
+                loop {
+                    let j = next.fetch_add(1, Ordering::Relaxed);
+                    if j >= mine {
+                        break;
+                    }
+                    let k = j * shard_n + shard_i;
+                    let (raw, mode) = campaign_case(args.seed, k);
+                    if args.contract {
+                        match check_contract(&raw) {
+                            Ok(c) => local.add_contract(&c),
+                            Err(e) => {
+                                eprintln!("polyguard assure: case {k} rejected: {e:?}");
+                                local_rejected += 1;
+                            }
+                        }
+                        bar.inc(1);
+                        continue;
+                    }
+                    match compare(&raw) {
+                        Ok(v) => {
+                            local.add(&v, mode);
+                            if is_kept_class(v.class) {
+                                if let Ok(mut g) = interesting.lock() {
+                                    let same =
+                                        g.iter().filter(|(_, w, _, _)| w.class == v.class).count();
+                                    if same < KEEP_PER_CLASS {
+                                        g.push((k, v, raw, mode));
+                                    }
+                                }
+                            }
+                        }
+                        Err(e) => {
+                            // The generator's cases are valid by construction: say which
+                            // one was not, so that it can be reproduced.
+                            eprintln!("polyguard assure: case {k} rejected: {e:?}");
+                            local_rejected += 1;
+                        }
+                    }
+                    bar.inc(1);
+                }
+                local.rejected = local_rejected;
+                if let Ok(mut r) = report.lock() {
+                    r.absorb(&local);
+                }
+            });
+        }
+    });
+    bar.finish_and_clear();
+    let mut report = report.into_inner().unwrap_or_default();
+    report.wall_seconds = start.elapsed().as_secs_f64();
+    let mut found = interesting.into_inner().unwrap_or_default();
+    found.sort_by_key(|(k, _, _, _)| *k);
+    for (k, v, raw, mode) in &found {
+        match write_counterexample(&args.out, *k, v, raw, mode) {
+            Ok(kept) => report.kept.push(kept),
+            Err(e) => eprintln!("polyguard assure: cannot write counterexample {k}: {e}"),
+        }
+    }
+    finish(&report, &args.out)
+}
+
+/// Writes `DIR/report.json`, then prints the summary. The report is written first and a
+/// closed standard output (`polyguard assure | head`) is not an error: the campaign's
+/// result must not depend on who reads the summary.
+fn finish(report: &Report, out: &Path) -> ExitCode {
+    let path = out.join("report.json");
+    match serde_json::to_string_pretty(report) {
+        Ok(json) => {
+            if let Err(e) = fs::write(&path, json + "\n") {
+                eprintln!("polyguard assure: cannot write {}: {e}", path.display());
+                return ExitCode::from(2);
+            }
+        }
+        Err(e) => {
+            eprintln!("polyguard assure: cannot serialise the report: {e}");
+            return ExitCode::from(2);
+        }
+    }
+    let mut text = report.table();
+    if report.rejected > 0 {
+        text += &format!(
+            "{} generated cases were rejected by the engine or the oracle\n",
+            report.rejected
+        );
+    }
+    for k in &report.kept {
+        text += &format!(
+            "kept {} ({}, {}): {} {}\n",
+            k.class.name(),
+            k.method,
+            k.mode,
+            k.case_file,
+            k.svg_file
+        );
+    }
+    text += &format!("report: {}\n", path.display());
+    let mut stdout = std::io::stdout().lock();
+    let _ = stdout
+        .write_all(text.as_bytes())
+        .and_then(|()| stdout.flush());
+    if report.has_failures() {
+        let mut by_mode: BTreeMap<&str, u64> = BTreeMap::new();
+        for (mode, counts) in &report.by_mode {
+            let bad: u64 = counts
+                .iter()
+                .filter(|(c, _)| c.is_failure())
+                .map(|(_, n)| n)
+                .sum();
+            by_mode.insert(mode, bad);
+        }
+        let modes: Vec<String> = by_mode
+            .iter()
+            .filter(|(_, n)| **n > 0)
+            .map(|(m, n)| format!("{m}: {n}"))
+            .collect();
+        eprintln!(
+            "polyguard assure: missed detections or far false alarms found ({})",
+            modes.join(", ")
+        );
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    }
+}
+
+fn merge(paths: &[PathBuf], out: &Path) -> ExitCode {
+    let mut merged = Report::default();
+    for p in paths {
+        let text = match fs::read_to_string(p) {
+            Ok(t) => t,
+            Err(e) => {
+                eprintln!("polyguard assure merge: cannot read {}: {e}", p.display());
+                return ExitCode::from(2);
+            }
+        };
+        let r = match Report::from_json(&text) {
+            Ok(r) => r,
+            Err(e) => {
+                eprintln!(
+                    "polyguard assure merge: {} is not a report: {e}",
+                    p.display()
+                );
+                return ExitCode::from(2);
+            }
+        };
+        if let Err(e) = merged.merge(&r) {
+            eprintln!("polyguard assure merge: {}: {e}", p.display());
+            return ExitCode::from(2);
+        }
+    }
+    if let Err(e) = fs::create_dir_all(out) {
+        eprintln!(
+            "polyguard assure merge: cannot create {}: {e}",
+            out.display()
+        );
+        return ExitCode::from(2);
+    }
+    finish(&merged, out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn shards_parse_and_cases_are_reproducible() {
+        assert_eq!(parse_shard("1/4"), Ok((1, 4)));
+        assert!(parse_shard("4/4").is_err());
+        assert!(parse_shard("x").is_err());
+        assert_eq!(campaign_case(9, 123).0, campaign_case(9, 123).0);
+        assert_ne!(campaign_case(9, 123).0, campaign_case(9, 124).0);
+    }
+}

@@ -1,0 +1,287 @@
+//! `polyguard detect [FILE]`: answers the case JSON Lines of docs/cases.md.
+
+use std::collections::BTreeMap;
+use std::fs::File;
+use std::hint::black_box;
+use std::io::{self, BufRead, BufReader, BufWriter, Write};
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::Instant;
+
+use serde_json::{json, Map, Value};
+
+use crate::case::parse_line_with;
+use crate::harness::classify::Exact;
+use crate::harness::spec::RawCase;
+use polyguard::api::{self, Case};
+
+/// Which implementation answers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Engine {
+    /// The certified f64 engine (paper A in floating point): the product.
+    F64,
+    /// The plain f64 transcription of paper A, without certificate: for comparison only
+    /// (it misses true entries on long relative paths).
+    Plain,
+    /// Paper A's functions in exact rational arithmetic (the oracle).
+    Exact,
+    /// The exact ground truth: does the point really enter the closed polygon, and when?
+    Truth,
+}
+
+/// Arguments of `polyguard detect`.
+#[derive(Debug, clap::Args)]
+pub struct DetectArgs {
+    /// The case file (JSON Lines); standard input when absent or "-".
+    pub file: Option<PathBuf>,
+    /// Which implementation answers.
+    #[arg(long, value_enum, default_value = "f64")]
+    pub engine: Engine,
+    /// Run each case this many times (for --timing); the answer is printed once.
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..))]
+    pub repeat: u32,
+    /// Print the engine's time per call (I/O and parsing excluded) per group to stderr.
+    #[arg(long)]
+    pub timing: bool,
+    /// κ, the corner angle of the well-formedness report (§II.J), in degrees, for cases
+    /// that give no `kappa` of their own.
+    #[arg(long, default_value_t = crate::case::DEFAULT_KAPPA_DEG)]
+    pub kappa: f64,
+}
+
+/// Timing totals of one group of cases.
+#[derive(Default)]
+struct Group {
+    calls: u64,
+    nanos: u128,
+}
+
+fn group_key(case: &Case) -> (&'static str, &'static str, usize) {
+    let dim = if case.point().z.is_some() { "3D" } else { "2D" };
+    let shape = if case.polygon().statically_shaped() {
+        "static"
+    } else {
+        "warping"
+    };
+    (dim, shape, case.polygon().vertices().len())
+}
+
+/// The exact case the oracle reads: the rationals the f64 inputs denote.
+fn exact_case(case: &Case) -> Result<polyguard_oracle::ExactCase<Exact>, String> {
+    RawCase::from_api(case)
+        .exact::<Exact>()
+        .map_err(|e| e.to_string())
+}
+
+/// `well_formed` and, when false, `well_formed_reason`: which §II.J rule failed.
+fn well_formed_fields(out: &mut Map<String, Value>, fault: Option<impl std::fmt::Display>) {
+    out.insert("well_formed".into(), fault.is_none().into());
+    if let Some(f) = fault {
+        out.insert("well_formed_reason".into(), f.to_string().into());
+    }
+}
+
+/// §II.J decided exactly (the exact and truth engines): κ enters as the f64 cos κ that
+/// the f64 engine uses, read as the rational it denotes.
+fn exact_well_formed(
+    case: &Case,
+    exact: &polyguard_oracle::ExactCase<Exact>,
+) -> Result<Option<polyguard_oracle::well_formed::Fault>, String> {
+    let cos_kappa = polyguard_oracle::convert::f64_to_exact::<Exact>(case.params().cos_kappa())
+        .ok_or("kappa: cos κ is not finite")?;
+    Ok(polyguard_oracle::well_formed::well_formed_fault(
+        &exact.vertices,
+        &exact.buff,
+        &cos_kappa,
+    ))
+}
+
+/// Answers one valid case with the chosen engine; the fields after `id`.
+fn answer(case: &Case, engine: Engine, out: &mut Map<String, Value>) -> Result<(), String> {
+    match engine {
+        Engine::F64 => {
+            let d = api::detect(case);
+            out.insert("detected".into(), d.detected.into());
+            out.insert("kind".into(), d.kind.name().into());
+            out.insert("decided_by".into(), d.method.name().into());
+            well_formed_fields(out, d.well_formed_fault);
+        }
+        Engine::Plain => {
+            out.insert("detected".into(), api::detected_plain(case).into());
+            out.insert("decided_by".into(), case.method().name().into());
+            well_formed_fields(out, api::detect(case).well_formed_fault);
+        }
+        Engine::Exact => {
+            let exact = exact_case(case)?;
+            let a = polyguard_oracle::paper_detect(&exact);
+            out.insert("detected".into(), a.detected.into());
+            out.insert("decided_by".into(), a.decided_by.into());
+            well_formed_fields(out, exact_well_formed(case, &exact)?);
+        }
+        Engine::Truth => {
+            let exact = exact_case(case)?;
+            match polyguard_oracle::truth(&exact) {
+                polyguard_oracle::Truth::Enters { entry_time } => {
+                    out.insert("detected".into(), true.into());
+                    out.insert(
+                        "entry_time".into(),
+                        polyguard_oracle::convert::time_to_f64(&entry_time).into(),
+                    );
+                    out.insert("entry_time_exact".into(), entry_time.exact_text().into());
+                }
+                polyguard_oracle::Truth::Misses => {
+                    out.insert("detected".into(), false.into());
+                }
+                polyguard_oracle::Truth::Undefined { reason } => {
+                    return Err(format!("truth undefined: {reason}"));
+                }
+            }
+            out.insert("decided_by".into(), "truth".into());
+            well_formed_fields(out, exact_well_formed(case, &exact)?);
+        }
+    }
+    Ok(())
+}
+
+fn open(file: &Option<PathBuf>) -> io::Result<Box<dyn BufRead>> {
+    match file {
+        // a directory opens on Unix and fails only at the first read: say so up front
+        Some(p) if p.is_dir() => Err(io::Error::new(
+            io::ErrorKind::InvalidInput,
+            "is a directory, not a case file",
+        )),
+        Some(p) if p.as_os_str() != "-" => Ok(Box::new(BufReader::new(File::open(p)?))),
+        _ => Ok(Box::new(BufReader::new(io::stdin().lock()))),
+    }
+}
+
+/// Runs `polyguard detect`: one answer line per non-blank input line, in order.
+pub fn run(args: &DetectArgs) -> ExitCode {
+    if let Err(e) = api::Params::new(1.0).and_then(|p| p.with_kappa_degrees(args.kappa)) {
+        eprintln!("polyguard detect: --kappa: {e}");
+        return ExitCode::from(2);
+    }
+    let reader = match open(&args.file) {
+        Ok(r) => r,
+        Err(e) => {
+            let name = args
+                .file
+                .as_ref()
+                .map_or_else(|| "standard input".into(), |p| p.display().to_string());
+            eprintln!("polyguard detect: cannot read {name}: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let stdout = io::stdout();
+    let mut out = BufWriter::new(stdout.lock());
+    match process(reader, &mut out, args) {
+        Ok(failed) => {
+            if let Err(e) = out.flush() {
+                eprintln!("polyguard detect: cannot write: {e}");
+                return ExitCode::from(2);
+            }
+            if failed > 0 {
+                eprintln!("polyguard detect: {failed} line(s) could not be answered");
+                ExitCode::from(1)
+            } else {
+                ExitCode::SUCCESS
+            }
+        }
+        Err(e) => {
+            let name = args
+                .file
+                .as_ref()
+                .map_or_else(|| "standard input".into(), |p| p.display().to_string());
+            eprintln!("polyguard detect: reading {name}: {e}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+/// Streams cases from `reader` to `out`; returns the number of lines that failed.
+pub fn process<R: BufRead, W: Write>(
+    mut reader: R,
+    out: &mut W,
+    args: &DetectArgs,
+) -> io::Result<u64> {
+    let mut buf = Vec::new();
+    let mut line_no = 0usize;
+    let mut failed = 0u64;
+    let mut groups: BTreeMap<(&'static str, &'static str, usize), Group> = BTreeMap::new();
+    loop {
+        buf.clear();
+        if reader.read_until(b'\n', &mut buf)? == 0 {
+            break;
+        }
+        line_no += 1;
+        let mut obj = Map::new();
+        let text = match std::str::from_utf8(&buf) {
+            Ok(t) => t,
+            Err(_) => {
+                failed += 1;
+                let line = json!({"id": line_no, "line": line_no, "error": "line: not UTF-8"});
+                writeln!(out, "{line}")?;
+                continue;
+            }
+        };
+        if text.trim().is_empty() {
+            continue;
+        }
+        let parsed = parse_line_with(text, line_no, args.kappa);
+        obj.insert("id".into(), parsed.id);
+        let result = parsed.case.map_err(|e| e.to_string()).and_then(|case| {
+            // The engine asked for is the one timed: its decision alone for f64 and plain,
+            // the whole answer (conversion to rationals included) for exact and truth.
+            let once = |case: &Case| match args.engine {
+                Engine::F64 => {
+                    black_box(api::detected(black_box(case)));
+                }
+                Engine::Plain => {
+                    black_box(api::detected_plain(black_box(case)));
+                }
+                Engine::Exact | Engine::Truth => {
+                    let _ = black_box(answer(black_box(case), args.engine, &mut Map::new()));
+                }
+            };
+            if args.timing {
+                let start = Instant::now();
+                for _ in 0..args.repeat {
+                    once(&case);
+                }
+                let g = groups.entry(group_key(&case)).or_default();
+                g.calls += u64::from(args.repeat);
+                g.nanos += start.elapsed().as_nanos();
+            } else {
+                for _ in 1..args.repeat {
+                    once(&case);
+                }
+            }
+            answer(&case, args.engine, &mut obj)
+        });
+        if let Err(e) = result {
+            failed += 1;
+            obj.insert("line".into(), line_no.into());
+            obj.insert("error".into(), e.into());
+        }
+        writeln!(out, "{}", Value::Object(obj))?;
+    }
+    if args.timing {
+        report_timing(&groups);
+    }
+    Ok(failed)
+}
+
+fn report_timing(groups: &BTreeMap<(&'static str, &'static str, usize), Group>) {
+    eprintln!(
+        "{:<4} {:<8} {:>9} {:>12} {:>12}",
+        "dim", "shape", "vertices", "calls", "ns/call"
+    );
+    for ((dim, shape, n), g) in groups {
+        let per = if g.calls == 0 {
+            0.0
+        } else {
+            g.nanos as f64 / g.calls as f64
+        };
+        eprintln!("{dim:<4} {shape:<8} {n:>9} {:>12} {per:>12.1}", g.calls);
+    }
+}

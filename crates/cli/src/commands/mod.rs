@@ -1,0 +1,5 @@
+//! The command-line tool's subcommands, one module each.
+pub mod assure;
+pub mod conflicts;
+pub mod detect;
+pub mod generate;

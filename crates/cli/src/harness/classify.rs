@@ -1,0 +1,281 @@
+//! The verdict on one case: the f64 engine against paper A in exact arithmetic and the
+//! exact ground truth.
+
+use std::time::{Duration, Instant};
+
+use serde::{Deserialize, Serialize};
+
+use super::spec::RawCase;
+use polyguard::api::{self, Method};
+
+/// The oracle's number type: GMP rationals with the `rug` feature, else num-rational.
+#[cfg(feature = "rug")]
+pub type Exact = polyguard_oracle::field::R;
+/// The oracle's number type: GMP rationals with the `rug` feature, else num-rational.
+#[cfg(not(feature = "rug"))]
+pub type Exact = polyguard_oracle::Q;
+
+/// How far BUFF and F are widened to tell a false alarm "in the band" from one "far"
+/// outside it: an engine alarm that paper A's own exact algorithm would not raise even
+/// with 4× the slack is far from anything the paper flags by design.
+pub const WIDE_BAND: f64 = 4.0;
+
+/// The class of a compared case (issue "differential hunting", item 1).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Class {
+    /// Engine, paper-exact and truth tell the same story.
+    Agree,
+    /// Engine ≠ paper-exact, and neither a miss nor a false alarm (e.g. the engine
+    /// does not raise a band alarm that the exact paper raises).
+    FloatDivergence,
+    /// Truth: the point enters; the engine says no. The one unforgivable bug.
+    MissedDetection,
+    /// Engine yes, truth no, within the BUFF/F band (paper-exact with 4× slack agrees).
+    FalseAlarmInBand,
+    /// Engine yes, truth no, and not even paper-exact with 4× slack flags it: a bug.
+    FalseAlarmFar,
+    /// Truth enters, paper-exact says no: a finding about the paper itself.
+    PaperGap,
+    /// The truth is undefined (the polygon stops being simple): not judged.
+    Undefined,
+}
+
+impl Class {
+    /// Every class, in report order.
+    pub const ALL: [Class; 7] = [
+        Class::Agree,
+        Class::FloatDivergence,
+        Class::MissedDetection,
+        Class::FalseAlarmInBand,
+        Class::FalseAlarmFar,
+        Class::PaperGap,
+        Class::Undefined,
+    ];
+
+    /// snake_case name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Class::Agree => "agree",
+            Class::FloatDivergence => "float_divergence",
+            Class::MissedDetection => "missed_detection",
+            Class::FalseAlarmInBand => "false_alarm_in_band",
+            Class::FalseAlarmFar => "false_alarm_far",
+            Class::PaperGap => "paper_gap",
+            Class::Undefined => "undefined",
+        }
+    }
+
+    /// A failure that a campaign must report with a non-zero exit status.
+    pub fn is_failure(self) -> bool {
+        matches!(self, Class::MissedDetection | Class::FalseAlarmFar)
+    }
+}
+
+/// The three answers on one case and its class.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Verdict {
+    /// What the three answers say together.
+    pub class: Class,
+    /// The paper-A function that decided (§II.H, §II.I or §III).
+    pub method: Method,
+    /// The engine's answer.
+    pub engine: bool,
+    /// The engine's "yes" was taken on an undecided comparison (`api::Kind::Conservative`).
+    pub conservative: bool,
+    /// The plain f64 transcription's answer (the canary of the contract check).
+    pub plain: bool,
+    /// Paper A's answer without rounding (the oracle).
+    pub paper: bool,
+    /// Some(true) enters, Some(false) misses, None undefined.
+    pub truth: Option<bool>,
+    /// The exact first entry time, as a decimal, when the point enters.
+    pub entry_time: Option<String>,
+    /// Time spent in the engine, paper-exact and truth (ns).
+    pub nanos: [u64; 3],
+}
+
+/// Why a case could not be compared.
+#[derive(Clone, Debug, PartialEq)]
+pub enum CompareError {
+    /// The engine rejects the case.
+    Engine(String),
+    /// The oracle rejects the case.
+    Oracle(String),
+}
+
+/// The class from the three answers (`wide` is paper-exact with [`WIDE_BAND`]× slack,
+/// asked only when needed).
+pub fn classify(
+    engine: bool,
+    paper: bool,
+    truth: Option<bool>,
+    wide: impl FnOnce() -> bool,
+) -> Class {
+    match truth {
+        None => Class::Undefined,
+        Some(true) if !engine => Class::MissedDetection,
+        Some(true) if !paper => Class::PaperGap,
+        Some(false) if engine => {
+            if paper || wide() {
+                Class::FalseAlarmInBand
+            } else {
+                Class::FalseAlarmFar
+            }
+        }
+        _ if engine != paper => Class::FloatDivergence,
+        _ => Class::Agree,
+    }
+}
+
+/// Runs the engine, paper-exact and the truth on one case.
+pub fn compare(raw: &RawCase) -> Result<Verdict, CompareError> {
+    let case = raw
+        .to_api()
+        .map_err(|e| CompareError::Engine(e.to_string()))?;
+    let clock = Instant::now();
+    let tri = api::decide(&case);
+    let t_engine = clock.elapsed();
+    let engine = tri.or_true();
+    let conservative = tri == polyguard::ball::Tri::Unsure;
+    let plain = api::detected_plain(&case);
+    let clock = Instant::now();
+    let exact = raw
+        .exact::<Exact>()
+        .map_err(|e| CompareError::Oracle(e.to_string()))?;
+    let paper = polyguard_oracle::paper_detect(&exact).detected;
+    let t_paper = clock.elapsed();
+    let clock = Instant::now();
+    let answer = polyguard_oracle::truth(&exact);
+    let t_truth = clock.elapsed();
+    let (truth, entry_time) = match answer {
+        polyguard_oracle::Truth::Enters { entry_time } => {
+            (Some(true), Some(entry_time.to_decimal_string(12)))
+        }
+        polyguard_oracle::Truth::Misses => (Some(false), None),
+        polyguard_oracle::Truth::Undefined { .. } => (None, None),
+    };
+    let wide = || {
+        raw.widened(WIDE_BAND)
+            .exact::<Exact>()
+            .map(|c| polyguard_oracle::paper_detect(&c).detected)
+            .unwrap_or(true)
+    };
+    let class = classify(engine, paper, truth, wide);
+    let ns = |d: Duration| u64::try_from(d.as_nanos()).unwrap_or(u64::MAX);
+    Ok(Verdict {
+        class,
+        method: case.method(),
+        engine,
+        conservative,
+        plain,
+        paper,
+        truth,
+        entry_time,
+        nanos: [ns(t_engine), ns(t_paper), ns(t_truth)],
+    })
+}
+
+/// The contract check of one case (`polyguard assure --contract`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ContractVerdict {
+    /// The paper-A function that decided.
+    pub method: Method,
+    /// The engine's three-valued answer.
+    pub engine: polyguard::ball::Tri,
+    /// The plain f64 transcription's answer (the canary).
+    pub plain: bool,
+    /// Paper A in exact arithmetic, asked only when the engine does not certify a yes
+    /// (a certified yes is paper A's yes by the engine's certificate).
+    pub paper: Option<bool>,
+}
+
+/// The engine's contract on one case: the engine, the plain transcription, and paper A
+/// in exact arithmetic where needed. No truth.
+pub fn check_contract(raw: &RawCase) -> Result<ContractVerdict, CompareError> {
+    let case = raw
+        .to_api()
+        .map_err(|e| CompareError::Engine(e.to_string()))?;
+    let engine = api::decide(&case);
+    let plain = api::detected_plain(&case);
+    let paper = if engine == polyguard::ball::Tri::Yes {
+        None
+    } else {
+        let exact = raw
+            .exact::<Exact>()
+            .map_err(|e| CompareError::Oracle(e.to_string()))?;
+        Some(polyguard_oracle::paper_detect(&exact).detected)
+    };
+    Ok(ContractVerdict {
+        method: case.method(),
+        engine,
+        plain,
+        paper,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn classes_follow_the_definitions() {
+        let never = || panic!("not needed");
+        assert_eq!(classify(true, true, Some(true), never), Class::Agree);
+        assert_eq!(classify(false, false, Some(false), never), Class::Agree);
+        assert_eq!(
+            classify(false, true, Some(true), never),
+            Class::MissedDetection
+        );
+        assert_eq!(
+            classify(false, false, Some(true), never),
+            Class::MissedDetection
+        );
+        assert_eq!(classify(true, false, Some(true), never), Class::PaperGap);
+        assert_eq!(
+            classify(true, true, Some(false), never),
+            Class::FalseAlarmInBand
+        );
+        assert_eq!(
+            classify(true, false, Some(false), || true),
+            Class::FalseAlarmInBand
+        );
+        assert_eq!(
+            classify(true, false, Some(false), || false),
+            Class::FalseAlarmFar
+        );
+        assert_eq!(
+            classify(false, true, Some(false), never),
+            Class::FloatDivergence
+        );
+        assert_eq!(classify(true, true, None, never), Class::Undefined);
+    }
+
+    #[test]
+    fn compare_runs_all_three() {
+        let raw = RawCase {
+            lookahead: 10.0,
+            buff: 0.01,
+            fac: 1e-4,
+            pos: vec![5.0, -3.0],
+            vel: vec![0.0, 1.0],
+            vertices: vec![[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]],
+            velocities: vec![[1.0, 0.0]; 4],
+            slab: None,
+        };
+        let v = compare(&raw).expect("comparable");
+        assert_eq!(
+            (v.engine, v.paper, v.truth, v.class),
+            (true, true, Some(true), Class::Agree)
+        );
+        // Far away and moving away: every answer no.
+        let far = RawCase {
+            pos: vec![50.0, -3.0],
+            vel: vec![1.0, 0.0],
+            ..raw
+        };
+        let v = compare(&far).expect("comparable");
+        assert_eq!(v.class, Class::Agree);
+        assert!(!v.engine && v.truth == Some(false));
+    }
+}

@@ -1,0 +1,19 @@
+//! The harness: the one place where the three answers meet (the f64 engine, paper A in
+//! exact arithmetic, the exact ground truth). Tests, fuzz targets and `polyguard assure`
+//! all call it.
+//!
+//! - [`spec`]: a case as raw f64 fields (the JSON Lines format), convertible to the
+//!   engine's validated [`polyguard::api::Case`] and to the oracle's exact case.
+//! - [`gen`]: boundary-biased case generators over a seeded or byte-fed [`gen::Source`].
+//! - [`classify`]: the verdict of one case (agree, float divergence, missed detection, …).
+//! - [`report`]: counts per function, mode and class; shards merge exactly.
+//! - [`minimise`]: a smaller case of the same class. [`svg`]: its picture.
+//! - [`workload`]: the uniform benchmark workload (no threshold sought).
+
+pub mod classify;
+pub mod gen;
+pub mod minimise;
+pub mod report;
+pub mod spec;
+pub mod svg;
+pub mod workload;

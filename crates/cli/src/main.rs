@@ -1,0 +1,38 @@
+//! The `polyguard` command-line tool.
+
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+#[derive(Parser)]
+#[command(
+    name = "polyguard",
+    version,
+    about = "Does a moving point enter a moving polygon? (paper A) Which moving areas conflict, and when? (paper B)"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Answer detection cases (JSON Lines, docs/cases.md), one line per case.
+    Detect(polyguard_cli::commands::detect::DetectArgs),
+    /// A seeded safety-assurance run: engine vs paper-exact vs truth on boundary cases.
+    Assure(polyguard_cli::commands::assure::AssureArgs),
+    /// Which areas and tracks of a scenario GeoJSON conflict, and when (paper B).
+    Conflicts(polyguard_cli::commands::conflicts::ConflictsArgs),
+    /// A random scenario as in paper B, Section VI.D.
+    Generate(polyguard_cli::commands::generate::GenerateArgs),
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match &cli.command {
+        Command::Detect(a) => polyguard_cli::commands::detect::run(a),
+        Command::Assure(a) => polyguard_cli::commands::assure::run(a),
+        Command::Conflicts(a) => polyguard_cli::commands::conflicts::run(a),
+        Command::Generate(a) => polyguard_cli::commands::generate::run(a),
+    }
+}

@@ -1,0 +1,83 @@
+//! `polyguard detect` end to end: good and bad lines, order, exit status, engines.
+
+mod common;
+
+fn run(args: &[&str], input: &str) -> (String, String, i32) {
+    common::run(args, input.as_bytes())
+}
+
+fn json_lines(s: &str) -> Vec<serde_json::Value> {
+    s.lines()
+        .map(|l| serde_json::from_str(l).expect("answer is JSON"))
+        .collect()
+}
+
+const HIT: &str = r#"{"id":"hit","lookahead":10,"buff":0.01,"point":{"pos":[5,-3],"vel":[0,1]},"polygon":{"vertices":[[0,0],[2,0],[2,2],[0,2]],"velocities":[[1,0],[1,0],[1,0],[1,0]]}}"#;
+const MISS: &str = r#"{"lookahead":2.5,"buff":0.01,"point":{"pos":[5,-3],"vel":[0,1]},"polygon":{"vertices":[[0,0],[2,0],[2,2],[0,2]],"velocities":[[1,0],[1,0],[1,0],[1,0]]}}"#;
+
+#[test]
+fn good_and_bad_lines_in_order() {
+    let bad_vertices = r#"{"id":"few","lookahead":1,"buff":0.1,"point":{"pos":[0,0],"vel":[0,0]},"polygon":{"vertices":[[0,0],[1,0]]}}"#;
+    let input = format!("{HIT}\n\nnot json\n{bad_vertices}\n{MISS}\n");
+    let (out, err, code) = run(&["detect"], &input);
+    let lines = json_lines(&out);
+    assert_eq!(lines.len(), 4, "{out}");
+    assert_eq!(lines[0]["id"], "hit");
+    assert_eq!(lines[0]["detected"], true);
+    // "not json" is physical line 3 (the blank line 2 gets no answer).
+    assert_eq!(lines[1]["id"], 3);
+    assert_eq!(lines[1]["line"], 3);
+    assert!(lines[1]["error"]
+        .as_str()
+        .is_some_and(|e| e.starts_with("line:")));
+    assert_eq!(lines[2]["id"], "few");
+    assert_eq!(
+        lines[2]["error"],
+        "polygon.vertices: 2 points, at least 3 are needed"
+    );
+    assert_eq!(lines[3]["id"], 5);
+    assert_eq!(lines[3]["detected"], false);
+    assert_eq!(code, 1, "exit status with failed lines");
+    assert!(err.contains("2 line(s)"), "{err}");
+    // The answer's first key is the id, as in the spec's example.
+    assert!(out.starts_with(r#"{"id":"hit""#), "{out}");
+}
+
+#[test]
+fn all_good_exits_zero_and_engines_agree_here() {
+    let input = format!("{HIT}\n{MISS}\n");
+    for engine in ["f64", "exact", "truth"] {
+        let (out, _, code) = run(&["detect", "--engine", engine], &input);
+        assert_eq!(code, 0, "{engine}");
+        let lines = json_lines(&out);
+        assert_eq!(lines[0]["detected"], true, "{engine}");
+        assert_eq!(lines[1]["detected"], false, "{engine}");
+    }
+    // The truth gives the entry time: the point (5, −3 + t) reaches y = 0 at t = 3, when
+    // the square (drifting east at 1) spans x ∈ [3, 5]: it enters at the corner (5, 0).
+    let (out, _, _) = run(&["detect", "--engine", "truth"], HIT);
+    assert_eq!(json_lines(&out)[0]["entry_time_exact"], "3/1");
+}
+
+#[test]
+fn timing_reports_groups_on_stderr() {
+    let (out, err, code) = run(
+        &["detect", "--repeat", "50", "--timing"],
+        &format!("{HIT}\n{MISS}\n"),
+    );
+    assert_eq!(code, 0);
+    assert_eq!(json_lines(&out).len(), 2);
+    assert!(err.contains("ns/call"), "{err}");
+    assert!(
+        err.lines()
+            .any(|l| l.starts_with("2D") && l.contains("static") && l.contains(" 100 ")),
+        "{err}"
+    );
+}
+
+#[test]
+fn missing_file_is_a_clear_error() {
+    let (_, err, code) = run(&["detect", "/nonexistent/cases.jsonl"], "");
+    assert_eq!(code, 2);
+    assert!(err.contains("cannot read"), "{err}");
+}

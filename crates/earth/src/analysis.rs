@@ -1,0 +1,386 @@
+//! Paper B Algorithm 1 on a scenario GeoJSON (docs/scenario.md): the conflicts answer of
+//! that spec, and an SVG drawing of the scenario and its conflicts.
+
+use crate::conflict::{pipeline, stage4::Method, Motion, Object};
+use crate::scenario::{self, Scenario, ScenarioError, ScenarioWarning};
+use crate::sphere::{inverse_mercator, Merc};
+use serde_json::{json, Value};
+use std::fmt::Write as _;
+use std::time::Instant;
+
+/// Told when the four stages start and end, which can take long on large scenarios; the
+/// command-line tool draws a spinner. `()` ignores both.
+pub trait Progress {
+    /// The four stages start over `objects` objects.
+    fn stages_start(&mut self, objects: usize) {
+        let _ = objects;
+    }
+    /// The four stages are done.
+    fn stages_end(&mut self) {}
+}
+
+impl Progress for () {}
+
+/// A JSON number, or `null` for the unbounded ends of always-present areas.
+fn num(out: &mut String, x: f64) {
+    if x.is_finite() {
+        let _ = write!(out, "{x}");
+    } else {
+        out.push_str("null");
+    }
+}
+
+/// A JSON string literal.
+fn string(out: &mut String, s: &str) {
+    out.push_str(&Value::from(s).to_string());
+}
+
+/// Region coordinates are written with this many decimals of a degree: 1e-7° ≈ 1.1 cm,
+/// far below the stage tolerances, and a fixed-point writer is several times faster than
+/// shortest round-trip formatting on the megabytes of a large answer.
+const REGION_DECIMALS: u32 = 7;
+
+fn coord(out: &mut String, x: f64) {
+    let scale = 10i64.pow(REGION_DECIMALS);
+    let v = (x * scale as f64).round() as i64;
+    if v < 0 {
+        out.push('-');
+    }
+    let a = v.unsigned_abs();
+    let (int, frac) = (a / scale as u64, a % scale as u64);
+    push_digits(out, int, 1);
+    out.push('.');
+    push_digits(out, frac, REGION_DECIMALS as usize);
+}
+
+/// n in decimal, left-padded with zeros to at least `width` digits (core::fmt's padding
+/// machinery was a tenth of a large answer's run time).
+fn push_digits(out: &mut String, mut n: u64, width: usize) {
+    let mut buf = [b'0'; 20];
+    let mut k = buf.len();
+    while n > 0 {
+        k -= 1;
+        buf[k] = b'0' + (n % 10) as u8;
+        n /= 10;
+    }
+    let start = k.min(buf.len() - width.min(buf.len()));
+    for &d in &buf[start..] {
+        out.push(char::from(d));
+    }
+}
+
+fn ring_lonlat(out: &mut String, ring: &[Merc]) {
+    out.push('[');
+    for (k, &m) in ring.iter().chain(ring.first()).enumerate() {
+        let (lon, lat) = inverse_mercator(m).to_degrees();
+        if k > 0 {
+            out.push(',');
+        }
+        out.push('[');
+        coord(out, lon);
+        out.push(',');
+        coord(out, lat);
+        out.push(']');
+    }
+    out.push(']');
+}
+
+/// The answer JSON of the spec for a pipeline result, written directly (the answer of a
+/// large scenario holds megabytes of region coordinates; building a `serde_json::Value`
+/// first costs more than the four stages).
+pub fn answer(
+    scenario: &Scenario,
+    conflicts: &[pipeline::Conflict],
+    stats: &pipeline::Stats,
+    errors: &[ScenarioError],
+    warnings: &[ScenarioWarning],
+    extra_ms: (f64, f64, f64),
+    regions: bool,
+) -> String {
+    let per = if regions { 640 } else { 200 };
+    let mut out = String::with_capacity(1024 + conflicts.len() * per);
+    out.push_str("{\"conflicts\":[");
+    for (k, c) in conflicts.iter().enumerate() {
+        if k > 0 {
+            out.push(',');
+        }
+        let (decided_by, method) = match c.method {
+            Method::AreaOverlap => ("area_overlap", "area_overlap"),
+            Method::Linear => ("time_of_intersection", "exact_linear"),
+            Method::Advancement => ("time_of_intersection", "certified_advancement"),
+        };
+        out.push_str("\n{\"a\":");
+        string(&mut out, &scenario.features[c.a as usize].id);
+        out.push_str(",\"b\":");
+        string(&mut out, &scenario.features[c.b as usize].id);
+        out.push_str(",\"t_start\":");
+        num(&mut out, c.t_start);
+        out.push_str(",\"t_end\":");
+        num(&mut out, c.t_end);
+        let _ = write!(
+            out,
+            ",\"decided_by\":\"{decided_by}\",\"method\":\"{method}\",\"projection_windows\":"
+        );
+        // not computed with --no-regions: null, not a pair of "no window"s
+        if !regions {
+            out.push_str("null");
+        } else {
+            out.push('[');
+        }
+        for (i, w) in c.paper.iter().enumerate().filter(|_| regions) {
+            if i > 0 {
+                out.push(',');
+            }
+            match w {
+                Some((a, b)) => {
+                    out.push('[');
+                    num(&mut out, *a);
+                    out.push(',');
+                    num(&mut out, *b);
+                    out.push(']');
+                }
+                None => out.push_str("null"),
+            }
+        }
+        if regions {
+            out.push(']');
+        }
+        out.push_str(",\"region\":");
+        match if regions { c.rings.len() } else { 0 } {
+            0 => out.push_str("null"),
+            1 => {
+                out.push_str("{\"type\":\"Polygon\",\"coordinates\":[");
+                ring_lonlat(&mut out, &c.rings[0]);
+                out.push_str("]}");
+            }
+            _ => {
+                out.push_str("{\"type\":\"MultiPolygon\",\"coordinates\":[");
+                for (i, r) in c.rings.iter().enumerate() {
+                    if i > 0 {
+                        out.push(',');
+                    }
+                    out.push('[');
+                    ring_lonlat(&mut out, r);
+                    out.push(']');
+                }
+                out.push_str("]}");
+            }
+        }
+        out.push('}');
+    }
+    let (parse_ms, objects_ms, total_ms) = extra_ms;
+    let stats_v = json!({
+        "objects": scenario.features.len(),
+        "stage_objects": stats.objects,
+        "candidate_pairs": stats.candidate_pairs,
+        "region_pairs": stats.region_pairs,
+        "window_pairs": stats.window_pairs,
+        "interval_pairs": stats.interval_pairs,
+        "exact_linear_pairs": stats.linear_pairs,
+        "advancement_pairs": stats.advancement_pairs,
+        "conflicts": conflicts.len(),
+        "rejected_features": errors.len(),
+        "timings_ms": {
+            "parse": parse_ms,
+            "objects": objects_ms,
+            "stage1": stats.stage1_ms,
+            "stage2": stats.stage2_ms,
+            "stage3": stats.stage3_ms,
+            "stage4": stats.stage4_ms,
+            "total": total_ms,
+        }
+    });
+    let errors_v: Vec<Value> = errors
+        .iter()
+        .map(|e| {
+            json!({"line": e.line, "index": e.index, "id": e.id, "field": e.field,
+                   "message": e.to_string()})
+        })
+        .collect();
+    let warnings_v: Vec<Value> = warnings
+        .iter()
+        .map(|w| {
+            json!({"line": w.line, "index": w.index, "id": w.id, "field": w.field,
+                   "message": w.to_string()})
+        })
+        .collect();
+    let _ = write!(
+        out,
+        "],\n\"stats\":{stats_v},\n\"errors\":{},\n\"warnings\":{}}}",
+        Value::from(errors_v),
+        Value::from(warnings_v)
+    );
+    out
+}
+
+/// Everything `conflicts` computes for one scenario.
+pub struct Analysis {
+    /// The answer JSON text.
+    pub answer: String,
+    /// Rejected features.
+    pub errors: Vec<ScenarioError>,
+    /// Members kept but not read.
+    pub warnings: Vec<ScenarioWarning>,
+    /// The valid features.
+    pub scenario: Scenario,
+    /// Their stage objects.
+    pub objects: Vec<Object>,
+    /// The conflicts.
+    pub conflicts: Vec<pipeline::Conflict>,
+}
+
+/// Paper B Algorithm 1 on scenario text.
+pub fn analyse(text: &str, tolerance_h: f64) -> Result<Analysis, ScenarioError> {
+    analyse_with(text, tolerance_h, true, &mut ())
+}
+
+/// [`analyse`], optionally without the regions in the answer, telling `progress` when the
+/// four stages start and end.
+pub fn analyse_with(
+    text: &str,
+    tolerance_h: f64,
+    regions: bool,
+    progress: &mut dyn Progress,
+) -> Result<Analysis, ScenarioError> {
+    let t_all = Instant::now();
+    let scenario::Read {
+        scenario: sc,
+        errors,
+        warnings,
+    } = scenario::parse(text)?;
+    let parse_ms = t_all.elapsed().as_secs_f64() * 1e3;
+    let t_obj = Instant::now();
+    let objects = scenario::objects(&sc);
+    let objects_ms = t_obj.elapsed().as_secs_f64() * 1e3;
+    progress.stages_start(objects.len());
+    let (conflicts, stats) = pipeline::run(
+        &objects,
+        pipeline::Options {
+            tolerance_h,
+            details: regions,
+        },
+    );
+    progress.stages_end();
+    let total_ms = t_all.elapsed().as_secs_f64() * 1e3;
+    let answer = answer(
+        &sc,
+        &conflicts,
+        &stats,
+        &errors,
+        &warnings,
+        (parse_ms, objects_ms, total_ms),
+        regions,
+    );
+    Ok(Analysis {
+        answer,
+        errors,
+        warnings,
+        scenario: sc,
+        objects,
+        conflicts,
+    })
+}
+
+/// An SVG drawing in the Mercator plane: areas blue, track rectangles' swept hulls dashed
+/// green with the reference track solid, conflict regions red.
+pub fn svg(sc: &Scenario, objects: &[Object], conflicts: &[pipeline::Conflict]) -> String {
+    let mut b = [
+        f64::INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NEG_INFINITY,
+    ];
+    for o in objects {
+        b[0] = b[0].min(o.aabb[0]);
+        b[1] = b[1].min(o.aabb[1]);
+        b[2] = b[2].max(o.aabb[2]);
+        b[3] = b[3].max(o.aabb[3]);
+    }
+    let size = 1000.0;
+    let span = (b[2] - b[0]).max(b[3] - b[1]).max(f64::MIN_POSITIVE);
+    let k = size / span;
+    let pt = |p: Merc| ((p[0] - b[0]) * k, (b[3] - p[1]) * k);
+    let path = |ring: &[Merc]| {
+        let mut s = String::new();
+        for (i, &p) in ring.iter().enumerate() {
+            let (x, y) = pt(p);
+            let _ = write!(s, "{}{x:.2},{y:.2} ", if i == 0 { "M" } else { "L" });
+        }
+        s.push('Z');
+        s
+    };
+    let mut out = format!(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"-10 -10 {} {}\">\n",
+        size + 20.0,
+        size + 20.0
+    );
+    // features take turns in the paper's colours (blue, green) and two more
+    const PALETTE: [&str; 4] = ["blue", "green", "purple", "darkorange"];
+    for o in objects {
+        let id = &sc.features[o.owner as usize].id;
+        let colour = PALETTE[o.owner as usize % PALETTE.len()];
+        match &o.motion {
+            Motion::Static { ring, .. } => {
+                let _ = writeln!(
+                    out,
+                    "<path d=\"{}\" fill=\"none\" stroke=\"{colour}\"><title>{id}</title></path>",
+                    path(ring)
+                );
+            }
+            Motion::Moving(leg) => {
+                let _ = writeln!(
+                    out,
+                    "<path d=\"{}\" fill=\"none\" stroke=\"{colour}\" stroke-dasharray=\"4 3\"><title>{id}</title></path>",
+                    path(&o.sweep)
+                );
+                let (x0, y0) = pt(crate::sphere::mercator(leg.start));
+                let (x1, y1) = pt(crate::sphere::mercator(leg.end));
+                let _ = writeln!(
+                    out,
+                    "<line x1=\"{x0:.2}\" y1=\"{y0:.2}\" x2=\"{x1:.2}\" y2=\"{y1:.2}\" stroke=\"{colour}\"/>"
+                );
+                for t in [leg.t0, leg.t1] {
+                    let _ = writeln!(
+                        out,
+                        "<path d=\"{}\" fill=\"none\" stroke=\"{colour}\"/>",
+                        path(&leg.merc_vertices_at(t))
+                    );
+                }
+            }
+        }
+    }
+    for c in conflicts {
+        for r in &c.rings {
+            let _ = writeln!(
+                out,
+                "<path d=\"{}\" fill=\"red\" fill-opacity=\"0.3\" stroke=\"red\" stroke-dasharray=\"2 2\"/>",
+                path(r)
+            );
+        }
+    }
+    out.push_str("</svg>\n");
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn coord_is_fixed_point_with_seven_decimals() {
+        for &(x, want) in &[
+            (0.0, "0.0000000"),
+            (-0.0, "0.0000000"),
+            (39.5, "39.5000000"),
+            (-45.123456789, "-45.1234568"),
+            (179.99999999, "180.0000000"),
+            (-0.00000004, "0.0000000"),
+            (-0.00000006, "-0.0000001"),
+            (1.0000001, "1.0000001"),
+        ] {
+            let mut s = String::new();
+            coord(&mut s, x);
+            assert_eq!(s, want, "{x}");
+        }
+    }
+}

@@ -1,0 +1,174 @@
+//! Paper B, Sections III–IV: the four-stage interference identification.
+//!
+//! Stages are separate functions with typed inputs and outputs, composed by
+//! [`pipeline::run`]:
+//!
+//! | stage | paper | input → output |
+//! | --- | --- | --- |
+//! | [`stage1`] | Algorithm 2, eqs 3–6 | objects → [`stage1::Candidates`] |
+//! | [`stage2`] | eqs 7–10 | candidates → [`stage2::Region`]s |
+//! | [`stage3`] | eqs 11–13, Algorithm 3 | regions → [`stage3::Window`]s |
+//! | [`stage4`] | eqs 14–20 (replaced) | windows → [`stage4::Interval`]s |
+//!
+//! Everything happens in the Mercator plane of [`crate::sphere`] (radians). A track of
+//! several waypoints becomes one [`Object`] per leg; legs of one track never conflict
+//! with each other, and the pipeline merges the legs' answers per feature pair.
+
+pub mod geom;
+pub mod pipeline;
+pub mod stage1;
+pub mod stage2;
+pub mod stage3;
+pub mod stage4;
+
+use crate::sphere::{Leg, Merc};
+
+/// Paper B stage 4 tolerance: the default time tolerance of first/last conflict times,
+/// one second in hours (issue 5: "default 1 s").
+pub const DEFAULT_TIME_TOLERANCE_H: f64 = 1.0 / 3600.0;
+
+/// How an object moves (Paper B eq 1: static polygons have constant vertices).
+#[derive(Clone, Debug)]
+// Legs are most objects and their vertices are evaluated in stage 4's inner loop: kept
+// inline rather than boxed.
+#[allow(clippy::large_enum_variant)]
+pub enum Motion {
+    /// A static area: a simple ring in the Mercator plane, counter-clockwise, not closed
+    /// (the last vertex differs from the first), possibly non-convex.
+    Static {
+        /// The ring.
+        ring: Vec<Merc>,
+        /// Whether the ring is convex (enables the fast convex paths).
+        convex: bool,
+    },
+    /// One leg of a track: a Table 2 rectangle on a rhumb line.
+    Moving(Leg),
+}
+
+/// Paper B eq 1: one polygon `i` with its life `[t0, tf]`, its motion, the conservative
+/// region `Γ` it can occupy (eq 7/8) and the AABB of that region (eqs 3–6).
+#[derive(Clone, Debug)]
+pub struct Object {
+    /// Index of the scenario feature the object belongs to.
+    pub owner: u32,
+    /// `t0^i` (h); `-∞` for an area without a start.
+    pub t0: f64,
+    /// `tf^i` (h); `+∞` for an area without an end.
+    pub t1: f64,
+    /// The motion.
+    pub motion: Motion,
+    /// `Γ^i`: the static ring itself, or the conservative swept hull of a leg (ccw).
+    pub sweep: Vec<Merc>,
+    /// AABB `[L, B, R, T]` of `sweep` (eqs 3–6).
+    pub aabb: [f64; 4],
+    /// Paper B eq 7 as printed, for legs: the hull of the rectangle at `t0` and `tf`
+    /// (reporting the paper's stage 3 windows only; empty for areas).
+    pub paper_sweep: Vec<Merc>,
+    /// For legs, stage 3's per-object constants (eqs 11–13), computed once.
+    pub projection: Option<stage3::Projection>,
+}
+
+impl Object {
+    /// A static area alive over `[t0, t1]`; `ring` in the Mercator plane, any orientation.
+    pub fn area(owner: u32, ring: Vec<Merc>, t0: f64, t1: f64) -> Object {
+        let ring = geom::ccw(ring);
+        let convex = geom::is_convex(&ring);
+        let aabb = geom::bbox(&ring);
+        Object {
+            owner,
+            t0,
+            t1,
+            sweep: ring.clone(),
+            motion: Motion::Static { ring, convex },
+            aabb,
+            paper_sweep: Vec::new(),
+            projection: None,
+        }
+    }
+
+    /// A leg of a track. Its `Γ` is eq 7 made conservative: the hull of the two
+    /// reference-point ends each shifted by every corner of the per-vertex offset boxes of
+    /// [`Leg::offset_boxes`] (the paper's hull of the rectangles at `t0` and `tf` assumes
+    /// linear vertex motion, which rhumb rectangles do not have).
+    pub fn leg(owner: u32, leg: Leg) -> Object {
+        let c0 = crate::sphere::mercator(leg.start);
+        let c1 = crate::sphere::mercator(leg.end);
+        let boxes = leg.offset_boxes();
+        let mut pts = Vec::with_capacity(32);
+        for c in [c0, c1] {
+            for b in boxes.iter() {
+                for (x, y) in [(b[0], b[2]), (b[1], b[2]), (b[1], b[3]), (b[0], b[3])] {
+                    pts.push([c[0] + x, c[1] + y]);
+                }
+            }
+        }
+        let sweep = geom::convex_hull(&pts);
+        let aabb = geom::bbox(&sweep);
+        let mut ends = leg.merc_vertices_at(leg.t0).to_vec();
+        ends.extend_from_slice(&leg.merc_vertices_at(leg.t1));
+        let paper_sweep = geom::convex_hull(&ends);
+        let projection = Some(stage3::Projection::with_boxes(&leg, &boxes));
+        Object {
+            owner,
+            t0: leg.t0,
+            t1: leg.t1,
+            motion: Motion::Moving(leg),
+            sweep,
+            aabb,
+            paper_sweep,
+            projection,
+        }
+    }
+
+    /// Is the object moving?
+    pub fn is_moving(&self) -> bool {
+        matches!(self.motion, Motion::Moving(_))
+    }
+
+    /// Is the object's polygon convex at all times (legs' rectangles are)?
+    pub fn is_convex(&self) -> bool {
+        match &self.motion {
+            Motion::Static { convex, .. } => *convex,
+            Motion::Moving(_) => true,
+        }
+    }
+
+    /// Paper B eq 1: the polygon's vertices at time `t`, written into `out`.
+    pub fn vertices_at(&self, t: f64, out: &mut Vec<Merc>) {
+        out.clear();
+        match &self.motion {
+            Motion::Static { ring, .. } => out.extend_from_slice(ring),
+            Motion::Moving(leg) => out.extend_from_slice(&leg.merc_vertices_at(t)),
+        }
+    }
+
+    /// Upper bound on the Mercator speed of every vertex (0 for a static area).
+    pub fn speed_bound(&self) -> f64 {
+        match &self.motion {
+            Motion::Static { .. } => 0.0,
+            Motion::Moving(leg) => leg.merc_speed_bound(),
+        }
+    }
+
+    /// Velocity envelope for stage 4: every vertex velocity is `σ e + w` with
+    /// `σ ∈ [σ_lo, σ_hi]` and `|w| ≤ deform` (see
+    /// [`Leg::reference_velocity_envelope`], [`Leg::deformation_speed_bound`]).
+    /// Returns `(e, σ_lo, σ_hi, deform)`; all zero for a static area.
+    pub fn velocity_envelope(&self) -> (Merc, f64, f64, f64) {
+        match &self.motion {
+            Motion::Static { .. } => ([0.0, 0.0], 0.0, 0.0, 0.0),
+            Motion::Moving(leg) => {
+                let (e, lo, hi) = leg.reference_velocity_envelope();
+                (e, lo, hi, leg.deformation_speed_bound())
+            }
+        }
+    }
+
+    /// Paper B eq 20: `Some(v)` when every vertex moves with the constant velocity `v`.
+    pub fn linear_velocity(&self) -> Option<Merc> {
+        match &self.motion {
+            Motion::Static { .. } => Some([0.0, 0.0]),
+            Motion::Moving(leg) => leg.linear_velocity(),
+        }
+    }
+}

@@ -1,0 +1,24 @@
+//! polyguard-earth: paper B (A. Bienkowski, D. Sidoti and K. R. Pattipati, *Interference
+//! Identification for Time-Varying Polyhedra*, IEEE Access 9, 2021) on the Earth.
+//!
+//! - [`sphere`]: Section V, the Mercator projection and rhumb-line motion on the sphere.
+//! - [`conflict`]: Section IV, the four stages of interference identification
+//!   ([`conflict::pipeline`] runs them, Algorithm 1).
+//! - [`scenario`]: the scenario GeoJSON (`docs/scenario.md`), read strictly with
+//!   positions ([`json`]) and written back.
+//! - [`analysis`]: Algorithm 1 on scenario text, the conflicts answer and its drawing.
+//! - [`generate`]: random scenarios as in Section VI.D.
+//! - [`reference`]: the exact references the tests hold the f64 code to: Section IV in
+//!   rationals, and (feature `rug`) Section V in 256-bit MPFR.
+//!
+//! Nothing here prints: progress is reported through [`analysis::Progress`], which the
+//! command-line tool draws.
+#![deny(missing_docs)]
+
+pub mod analysis;
+pub mod conflict;
+pub mod generate;
+pub mod json;
+pub mod reference;
+pub mod scenario;
+pub mod sphere;

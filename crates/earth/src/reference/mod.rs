@@ -1,0 +1,11 @@
+//! The exact references of paper B, next to the f64 code they check: the f64 stages and
+//! projection must agree with them within stated bounds (tests/paper_b_*.rs).
+//!
+//! - [`rational`]: Section IV (convex hull, convex intersection, projection, linear time
+//!   window) in exact rational arithmetic.
+//! - `mpfr` (feature `rug`): Section V (Mercator, rhumb motion, `track_time`) in 256-bit
+//!   MPFR, to measure the f64 code in ulps.
+
+#[cfg(feature = "rug")]
+pub mod mpfr;
+pub mod rational;

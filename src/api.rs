@@ -19,7 +19,9 @@
 use std::vec::Vec;
 
 use crate::ball::Tri;
-use crate::detect::{detect_3d_tri, detect_diff_2d_tri, detect_same_2d_tri, statically_shaped};
+use crate::detect::{
+    detect_3d_tri, detect_diff_2d_tri, detect_same_2d_tri, dispatch, statically_shaped, Method,
+};
 use crate::error::CaseError;
 use crate::ring::{self, RingFault, Winding};
 use crate::vect2::Vect2;
@@ -160,8 +162,11 @@ pub fn signed_area2(p: &[Vect2]) -> f64 {
 /// The vertical extent of a 3D polygon (§III): pmin + t·vsp ≤ z ≤ pmax + t·vsp.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Slab {
+    /// pmin, the bottom at t = 0.
     pub bottom: f64,
+    /// pmax, the top at t = 0.
     pub top: f64,
+    /// vsp, the vertical speed of the slab.
     pub vz: f64,
 }
 
@@ -264,7 +269,9 @@ impl MovingPolygon {
 /// The moving point s + t·v (§II), with height s_z + t·v_z in 3D (§III).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MovingPoint {
+    /// s, the horizontal position at t = 0.
     pub pos: Vect2,
+    /// v, the horizontal velocity.
     pub vel: Vect2,
     /// (s_z, v_z) for a 3D point.
     pub z: Option<(f64, f64)>,
@@ -360,35 +367,10 @@ impl Case {
     }
     /// Which paper function decides this case.
     pub fn method(&self) -> Method {
-        if self.point.z.is_some() {
-            Method::Detect3d
-        } else if self.polygon.statically_shaped() {
-            Method::DetectSame2d
-        } else {
-            Method::DetectDiff2d
-        }
-    }
-}
-
-/// The paper function that decided.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Method {
-    /// §II.H, statically shaped polygon.
-    DetectSame2d,
-    /// §II.I, warping polygon.
-    DetectDiff2d,
-    /// §III, with a slab.
-    Detect3d,
-}
-
-impl Method {
-    /// The paper's name in snake case.
-    pub fn name(self) -> &'static str {
-        match self {
-            Method::DetectSame2d => "detect_same_2d",
-            Method::DetectDiff2d => "detect_diff_2d",
-            Method::Detect3d => "detect_3d",
-        }
+        dispatch(
+            self.point.z.is_some() && self.polygon.slab.is_some(),
+            &self.polygon.velocities[..],
+        )
     }
 }
 
@@ -439,8 +421,8 @@ pub fn decide(case: &Case) -> Tri {
     let vels = &case.polygon.velocities[..];
     let (s, v, t) = (case.point.pos, case.point.vel, case.lookahead);
     let (buff, fac) = (case.params.buff, case.params.fac);
-    match (case.point.z, case.polygon.slab) {
-        (Some((sz, vz)), Some(slab)) => detect_3d_tri(
+    match (case.method(), case.point.z, case.polygon.slab) {
+        (Method::Detect3d, Some((sz, vz)), Some(slab)) => detect_3d_tri(
             t,
             s,
             v,
@@ -454,13 +436,9 @@ pub fn decide(case: &Case) -> Tri {
             buff,
             fac,
         ),
-        _ => {
-            if statically_shaped(vels) {
-                detect_same_2d_tri(t, s, v, p, vels, buff)
-            } else {
-                detect_diff_2d_tri(t, s, v, p, vels, fac, buff)
-            }
-        }
+        (Method::DetectSame2d, ..) => detect_same_2d_tri(t, s, v, p, vels, buff),
+        // DetectDiff2d (Detect3d always has both heights: Case::new checks it)
+        _ => detect_diff_2d_tri(t, s, v, p, vels, fac, buff),
     }
 }
 
@@ -501,8 +479,8 @@ pub fn detected_plain(case: &Case) -> bool {
     let vels = &case.polygon.velocities[..];
     let (s, v, t) = (case.point.pos, case.point.vel, case.lookahead);
     let (buff, fac) = (case.params.buff, case.params.fac);
-    match (case.point.z, case.polygon.slab) {
-        (Some((sz, vz)), Some(slab)) => pd::detect_3d(
+    match (case.method(), case.point.z, case.polygon.slab) {
+        (Method::Detect3d, Some((sz, vz)), Some(slab)) => pd::detect_3d(
             t,
             s,
             v,
@@ -516,13 +494,8 @@ pub fn detected_plain(case: &Case) -> bool {
             buff,
             fac,
         ),
-        _ => {
-            if pd::statically_shaped(vels) {
-                pd::detect_same_2d(t, s, v, p, vels, buff)
-            } else {
-                pd::detect_diff_2d(t, s, v, p, vels, fac, buff)
-            }
-        }
+        (Method::DetectSame2d, ..) => pd::detect_same_2d(t, s, v, p, vels, buff),
+        _ => pd::detect_diff_2d(t, s, v, p, vels, fac, buff),
     }
 }
 

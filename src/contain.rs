@@ -29,8 +29,11 @@ pub fn perturb(p: Vect2, s: Vect2, buff: f64) -> Vect2 {
 /// Paper A §II.B: the perturbed polygon P*_BUFF, computed vertex by vertex on access.
 #[derive(Clone, Copy, Debug)]
 pub struct Perturbed<P> {
+    /// The polygon P.
     pub poly: P,
+    /// The point s it is seen from.
     pub s: Vect2,
+    /// BUFF.
     pub buff: f64,
 }
 
@@ -80,9 +83,13 @@ pub trait RelPoly {
 /// P + t·V seen from s + t·v, for an exact float time t (t = 0: P seen from s).
 #[derive(Clone, Copy, Debug)]
 pub struct AtTime<'a, P: ?Sized, V: ?Sized> {
+    /// The vertices P at t = 0.
     pub p: &'a P,
+    /// Their velocities V.
     pub vels: &'a V,
+    /// The point s at t = 0.
     pub s: Vect2,
+    /// Its velocity v.
     pub v: Vect2,
     /// The time, as a ball (an exact float when its radius is 0).
     pub t: crate::ball::Ball,
@@ -139,10 +146,15 @@ impl<P: VertexSeq + ?Sized, V: VertexSeq + ?Sized> RelPoly for AtTime<'_, P, V> 
 /// shifted by one vector t·(v_0 − v), formed once (its exact terms only on demand).
 #[derive(Clone, Copy, Debug)]
 pub struct Shifted<'a, P: ?Sized> {
+    /// The vertices P at t = 0.
     pub p: &'a P,
+    /// The point s at t = 0.
     pub s: Vect2,
+    /// Its velocity v.
     pub v: Vect2,
+    /// The common vertex velocity v_0.
     pub v0: Vect2,
+    /// The time, as a ball.
     pub t: crate::ball::Ball,
     /// t·(v_0 − v) as a ball.
     pub shift: BallV,

@@ -65,7 +65,6 @@ where
 /// translates segments_close by s + ta·v_i: the relative path runs from ta·(v − v_i) to
 /// tb·(v − v_i), the edge from p_i − s to p_j − s + ta·(v_j − v_i). `stat` is
 /// [`statically_shaped`]`(vels)`, which the caller has at hand.
-#[allow(clippy::too_many_arguments)]
 fn same_window<P, V>(
     ta: Ball,
     tb: Ball,
@@ -208,7 +207,9 @@ fn side_on_balls(pa: BallV, m: BallV, q: BallV, buff: f64) -> i8 {
 /// The sign σ (or ε) = ±1 of paper A §II.I.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Sign {
+    /// σ = −1.
     Neg,
+    /// σ = +1.
     Pos,
 }
 
@@ -242,7 +243,9 @@ impl Sign {
 /// (+∞, −∞) instead: it loses every max/min comparison, as (T, 0) does for T > 0.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Interval {
+    /// The lower bound.
     pub lb: f64,
+    /// The upper bound.
     pub ub: f64,
 }
 
@@ -543,7 +546,6 @@ pub fn dot_nn_lin(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2, sigma: Sig
 /// so σ2 = +1 selects X ≥ −F·g² and σ2 = −1 selects X ≤ F·g²: together |X| ≤ F·g².
 /// Certified as an outer enclosure, with F·aa + σ2·ww formed on balls.
 #[inline]
-#[allow(clippy::too_many_arguments)]
 pub fn dot_nn(
     t: f64,
     ww: Vect2,
@@ -737,7 +739,6 @@ fn pair_err(nx: f64, rx: f64, ny: f64, ry: f64) -> f64 {
 /// (short intervals) the along conditions are usually settled by one evaluation, without
 /// their roots. `bb0` says that bb is exactly 0 (a translating edge, v_i = v_j): the t²
 /// coefficients are then exact zeros, and the quadratics lines.
-#[allow(clippy::too_many_arguments)]
 pub fn edge_detect_simp_tri(
     ta: Ball,
     tb: Ball,
@@ -985,7 +986,6 @@ fn never_collapses(t0: f64, t1: f64, pi: Vect2, pj: Vect2, vi: Vect2, vj: Vect2)
 /// edge_detect_simp(T, s − (½p_j + ½p_i), v − (½v_j + ½v_i), ½p_j − ½p_i, ½v_j − ½v_i, F):
 /// positions relative to the edge's midpoint, against the half-edge vector. Certified.
 #[inline]
-#[allow(clippy::too_many_arguments)]
 pub fn edge_detect(
     t: f64,
     s: Vect2,
@@ -1019,7 +1019,6 @@ pub fn edge_detect(
 /// ww = −((p_i − s) + (p_j − s))/2, vv = −((v_i − v) + (v_j − v))/2, aa = (p_j − p_i)/2,
 /// bb = (v_j − v_i)/2, each on balls.
 #[inline(always)]
-#[allow(clippy::too_many_arguments)]
 fn edge_detect_window(
     sweep: &Sweep,
     ta: Ball,
@@ -1049,7 +1048,6 @@ fn edge_detect_window(
 /// Paper A §II.I detect_diff_2D: s not definitely outside P, or some moving edge met by
 /// s + t·v within [0, T] (edge_detect). Certified: `false` only when the exact answer is.
 #[inline]
-#[allow(clippy::too_many_arguments)]
 pub fn detect_diff_2d<P, V>(t: f64, s: Vect2, v: Vect2, p: &P, vels: &V, f: f64, buff: f64) -> bool
 where
     P: VertexSeq + ?Sized,
@@ -1060,7 +1058,6 @@ where
 
 /// Paper A §II.I detect_diff_2D, three-valued (see [`detect_diff_2d`]).
 #[inline]
-#[allow(clippy::too_many_arguments)]
 pub fn detect_diff_2d_tri<P, V>(
     t: f64,
     s: Vect2,
@@ -1081,7 +1078,6 @@ where
 }
 
 /// detect_diff_2D over the window [ta, tb] of the original motion (see [`same_window`]).
-#[allow(clippy::too_many_arguments)]
 fn diff_window<P, V>(
     ta: Ball,
     tb: Ball,
@@ -1273,11 +1269,46 @@ pub fn statically_shaped<V: VertexSeq + ?Sized>(vels: &V) -> bool {
     (1..n).all(|i| pr::same_velocity(vels.vertex(i), v0))
 }
 
+/// Paper A §II.F and §III: the detector that decides a case.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Method {
+    /// §II.H, statically shaped polygon.
+    DetectSame2d,
+    /// §II.I, warping polygon.
+    DetectDiff2d,
+    /// §III, with a slab.
+    Detect3d,
+}
+
+impl Method {
+    /// The paper's name in snake case.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::DetectSame2d => "detect_same_2d",
+            Method::DetectDiff2d => "detect_diff_2d",
+            Method::Detect3d => "detect_3d",
+        }
+    }
+}
+
+/// Paper A §II.F and §III: the detector for a case. detect_3D when the point has a
+/// height and the polygon a slab (`vertical`), else detect_same_2D when every vertex
+/// velocity is the same ([`statically_shaped`]), else detect_diff_2D. The one place the
+/// choice is made: `api` and [`detect_3d`] (for its 2D part) both ask here.
+pub fn dispatch<V: VertexSeq + ?Sized>(vertical: bool, vels: &V) -> Method {
+    if vertical {
+        Method::Detect3d
+    } else if statically_shaped(vels) {
+        Method::DetectSame2d
+    } else {
+        Method::DetectDiff2d
+    }
+}
+
 /// Paper A §III detect_3D: 2D detection (detect_same_2D when all vertex velocities are
 /// equal, detect_diff_2D otherwise) from s + a·v and P + a·V over the lookahead b − a,
 /// where [a, b] is the slab window of [`slab_window_balls`]. Certified.
 #[inline]
-#[allow(clippy::too_many_arguments)]
 pub fn detect_3d<P, V>(
     t: f64,
     s: Vect2,
@@ -1303,7 +1334,6 @@ where
 /// the window [a, b] of the original motion, never on P + a·V formed in absolute
 /// coordinates.
 #[inline]
-#[allow(clippy::too_many_arguments)]
 pub fn detect_3d_tri<P, V>(
     t: f64,
     s: Vect2,
@@ -1328,10 +1358,9 @@ where
     let Some((a, b)) = slab_window_balls(t, sz, vz, pmin, pmax, vsp) else {
         return Tri::No;
     };
-    if statically_shaped(vels) {
-        same_window(a, b, s, v, p, vels, buff, true)
-    } else {
-        diff_window(a, b, s, v, p, vels, f, buff)
+    match dispatch(false, vels) {
+        Method::DetectSame2d => same_window(a, b, s, v, p, vels, buff, true),
+        _ => diff_window(a, b, s, v, p, vels, f, buff),
     }
 }
 

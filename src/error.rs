@@ -12,60 +12,108 @@ use std::string::String;
 #[derive(Clone, Debug, PartialEq)]
 pub enum CaseError {
     /// The line is not JSON, or not a JSON object.
-    Syntax { message: String },
+    Syntax {
+        /// What the parser said, with the column.
+        message: String,
+    },
     /// A required field is absent.
-    Missing { field: String },
+    Missing {
+        /// The field, as `polygon.vertices`.
+        field: String,
+    },
     /// A field has the wrong JSON type (a string where a number belongs, …).
     WrongType {
+        /// The field.
         field: String,
+        /// The type it must have.
         expected: &'static str,
     },
     /// NaN or ±∞ (or a number too large for an f64).
-    NotFinite { field: String },
+    NotFinite {
+        /// The field, down to the coordinate (`polygon.vertices[2][1]`).
+        field: String,
+    },
     /// Fewer than 3 vertices.
-    TooFewVertices { found: usize },
+    TooFewVertices {
+        /// How many there are.
+        found: usize,
+    },
     /// A list of the wrong length (a point of 4 numbers, 3 velocities for 4 vertices…).
     WrongLength {
+        /// The list.
         field: String,
+        /// The length it must have.
         expected: usize,
+        /// The length it has.
         found: usize,
+        /// What the items are, for the message.
         what: &'static str,
     },
     /// A number that must be > 0 (lookahead T, buff BUFF) is not.
-    NotPositive { field: &'static str, value: f64 },
+    NotPositive {
+        /// The field.
+        field: &'static str,
+        /// Its value.
+        value: f64,
+    },
     /// A number outside its open range (fac F in (0, 1), κ in (0, π)).
     OutOfRange {
+        /// The field.
         field: &'static str,
+        /// Its value.
         value: f64,
+        /// The range it must lie in, for the message.
         range: &'static str,
     },
     /// 2D and 3D mixed: z in the point without a slab in the polygon, or the reverse.
     DimensionMismatch {
+        /// The field that has (or lacks) the third dimension.
         field: &'static str,
+        /// What is missing where, for the message.
         detail: &'static str,
     },
     /// The slab's bottom lies above its top.
-    SlabInverted { bottom: f64, top: f64 },
+    SlabInverted {
+        /// The slab's bottom.
+        bottom: f64,
+        /// The slab's top.
+        top: f64,
+    },
     /// The vertices run clockwise (negative signed area); the format wants counterclockwise.
-    Clockwise { signed_area: f64 },
+    Clockwise {
+        /// The ring's signed area (shoelace), negative.
+        signed_area: f64,
+    },
     /// Two edges of the ring meet although they are not neighbours (or neighbours fold
     /// back over each other): a polygon that crosses itself has no inside for paper A's
     /// containment test. Edges are named by their vertices' indices, from 0.
     SelfIntersecting {
+        /// One edge, as (first vertex, second vertex).
         a: (usize, usize),
+        /// The edge it meets.
         b: (usize, usize),
     },
     /// All vertices on one line: the polygon encloses nothing.
     ZeroArea,
     /// NaN, Infinity or -Infinity written where a number belongs (Python's `json`
     /// writes them; JSON has no such literal).
-    NotJsonNumber { field: String, literal: String },
+    NotJsonNumber {
+        /// The field.
+        field: String,
+        /// The literal as written (`NaN`, `Infinity`, `-Infinity`).
+        literal: String,
+    },
     /// `point.pos` holds neither 2 nor 3 numbers.
-    PointLength { found: usize },
+    PointLength {
+        /// How many numbers it holds.
+        found: usize,
+    },
     /// A key the format does not define (a typo must not be read as an absent field),
     /// with the nearest defined name when one is close.
     UnknownField {
+        /// The key as written.
         field: String,
+        /// The nearest defined name, when one is close.
         suggestion: Option<&'static str>,
     },
 }

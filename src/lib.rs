@@ -5,6 +5,49 @@
 //! sign decision in [`predicates`], certified by the arithmetic of [`ball`]. The
 //! high-level entry point is `api::detect`.
 //!
+//! ```
+//! # #[cfg(feature = "std")] {
+//! use polyguard::api::{detect, Case, MovingPoint, MovingPolygon, Params};
+//! use polyguard::Vect2;
+//!
+//! // A 2 × 2 weather cell drifting east at 1 unit per time unit, counterclockwise.
+//! let square = vec![Vect2::new(0.0, 0.0), Vect2::new(2.0, 0.0), Vect2::new(2.0, 2.0), Vect2::new(0.0, 2.0)];
+//! let cell = MovingPolygon::new(square, Some(vec![Vect2::new(1.0, 0.0); 4]))?;
+//! // An aircraft south of it, flying north.
+//! let aircraft = MovingPoint::new_2d(Vect2::new(5.0, -3.0), Vect2::new(0.0, 1.0))?;
+//! // Lookahead T = 10, BUFF = 0.01 (F and κ at their defaults).
+//! let case = Case::new(10.0, aircraft, cell, Params::new(0.01)?)?;
+//! let answer = detect(&case);
+//! assert!(answer.detected && answer.well_formed);
+//! assert_eq!(answer.method.name(), "detect_same_2d");
+//! # }
+//! # Ok::<(), polyguard::error::CaseError>(())
+//! ```
+//!
+//! # Features
+//! - `std` (default): the `api` module (validated cases, owned `Vec`s), the error
+//!   trait impls and the exact ring checks of `ring`. Without it the crate is `no_std`:
+//!   the paper functions take slices (or any [`polygon::VertexSeq`]) and allocate nothing.
+//! - `plain`: the uncertified f64 transcription of the paper (module `plain`), for
+//!   comparison.
+//! - `nalgebra`: conversions between [`Vect2`] and nalgebra's `Point2`/`Vector2`.
+//!
+//! A plain dependency pulls `libm` and nothing else. Paper B, the command-line tool and
+//! the exact oracle are other crates (`polyguard-earth`, `polyguard-cli`,
+//! `polyguard-oracle`).
+//!
+//! # Conventions
+//! - **Counterclockwise.** Vertices run counterclockwise (positive signed area); the API
+//!   refuses clockwise, self-intersecting and collinear rings with a `CaseError`.
+//! - **Units.** Any consistent units: positions in one length unit, velocities in that
+//!   unit per time unit, the lookahead T in time units, BUFF in the length unit. F is a
+//!   fraction of BUFF (0 < F < 1), κ an angle in radians (the case format takes degrees).
+//! - **BUFF and F.** The paper detects entry into the polygon grown by BUFF (plus F·BUFF
+//!   for a warping one): a "yes" for a point that passes within that band without
+//!   entering is by design, not a false alarm.
+//! - **Names.** Functions and parameters carry the paper's names (`t`, `s`, `v`, `p`,
+//!   `vels`, `buff`, `f`), and the oracle uses the same ones.
+//!
 //! # The contract
 //! For every case with finite f64 inputs, and at every public entry point (`api::detect`,
 //! [`detect_same_2d`], [`detect_diff_2d`], [`detect_3d`] and the paper functions below
@@ -23,6 +66,7 @@
 //! one answer it undecided (`Tri::Unsure`: "yes", "near", "not definitely outside"),
 //! so the contract holds there too, without a certain answer.
 #![cfg_attr(not(feature = "std"), no_std)]
+#![deny(missing_docs)]
 
 /// The README's examples, compiled and run as doctests.
 #[cfg(all(doctest, feature = "std"))]
@@ -50,7 +94,8 @@ pub use ball::Tri;
 pub use contain::{definitely_outside, near_edge, num_cross, perturb};
 pub use detect::{
     detect_3d, detect_3d_tri, detect_diff_2d, detect_diff_2d_tri, detect_same_2d,
-    detect_same_2d_tri, dot_nn, dot_nn_lin, edge_detect, edge_detect_simp, Interval, Sign,
+    detect_same_2d_tri, dispatch, dot_nn, dot_nn_lin, edge_detect, edge_detect_simp, Interval,
+    Method, Sign,
 };
 pub use proximity::segments_close;
 pub use quad::{quad_min_box_le_d, quad_min_le_d};

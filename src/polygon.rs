@@ -60,8 +60,11 @@ impl<T: VertexSeq + ?Sized> VertexSeq for &T {
 /// The polygon P + t·V of §II (vertex i is p_i + t·v_i), computed on access.
 #[derive(Clone, Copy, Debug)]
 pub struct Moved<P, V> {
+    /// The vertices P at t = 0.
     pub p: P,
+    /// Their velocities V.
     pub v: V,
+    /// The time t.
     pub t: f64,
 }
 

@@ -309,7 +309,6 @@ pub fn at_or_right_of(q: BallV, perturbed: bool, terms: impl FnOnce() -> Option<
 /// `pa`, `pb` say whether the ends were perturbed (their x is then q_x − 2·BUFF, which
 /// the exact terms get as one more term).
 #[inline]
-#[allow(clippy::too_many_arguments)]
 pub fn crosses_ray(
     a: BallV,
     b: BallV,
@@ -656,7 +655,6 @@ pub fn quad_min_below_sums(
 
 /// §I quad_min_box_le_D steps 5–6 for exact floats, decided exactly as expansions
 /// (degree 5 in the coefficients). `None` only on overflow or underflow.
-#[allow(clippy::too_many_arguments)]
 pub fn box_interior_min_below_exact(
     a: f64,
     b: f64,
@@ -703,7 +701,6 @@ pub fn box_interior_min_below_exact(
 /// §I quad_min_box_le_D steps 5–6 on balls: the critical point (mx/disc, my/disc) lies
 /// in the closed unit box and the value there, scaled by disc², is below D·disc².
 #[inline]
-#[allow(clippy::too_many_arguments)]
 pub fn box_interior_min_below(
     a: Ball,
     b: Ball,

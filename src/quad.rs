@@ -50,7 +50,6 @@ pub fn quad_min_box_le_d(a: f64, b: f64, c: f64, d: f64, e: f64, f: f64, dd: f64
 }
 
 /// Paper A §I quad_min_box_le_D, three-valued (see [`quad_min_box_le_d`]).
-#[allow(clippy::too_many_arguments)]
 pub fn quad_min_box_le_d_tri(a: f64, b: f64, c: f64, d: f64, e: f64, f: f64, dd: f64) -> Tri {
     let x = Ball::exact;
     let (a, b, c, d, e, f, dd) = (x(a), x(b), x(c), x(d), x(e), x(f), x(dd));
@@ -71,7 +70,6 @@ pub fn quad_min_box_le_d_tri(a: f64, b: f64, c: f64, d: f64, e: f64, f: f64, dd:
 /// quad_min_box_le_D decided exactly on expansions (steps 1–4 on the coefficient sums).
 #[cold]
 #[inline(never)]
-#[allow(clippy::too_many_arguments)]
 fn box_exact(a: f64, b: f64, c: f64, d: f64, e: f64, f: f64, dd: f64) -> Tri {
     use crate::ball::exact::Sum;
     let (sa, sb, sdd) = (Sum::of(&[a]), Sum::of(&[b]), Sum::of(&[dd]));

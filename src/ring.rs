@@ -52,7 +52,9 @@ pub enum RingFault {
     /// Edges a0→a1 and b0→b1 share a point although they are not neighbours (or, when
     /// neighbours, overlap beyond their common vertex: a spike).
     Crossing {
+        /// One edge, as (first vertex, second vertex).
         a: (usize, usize),
+        /// The edge it meets.
         b: (usize, usize),
     },
     /// All vertices on one line, or on one point: the ring encloses nothing.

@@ -9,7 +9,9 @@ use core::ops::{Add, Mul, Neg, Sub};
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 #[repr(C)]
 pub struct Vect2 {
+    /// The first coordinate.
     pub x: f64,
+    /// The second coordinate.
     pub y: f64,
 }
 

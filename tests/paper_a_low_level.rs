@@ -14,6 +14,7 @@
 use std::fs;
 use std::path::Path;
 
+use polyguard::detect::Method;
 use polyguard::{api, detect, Tri, Vect2};
 use polyguard_cli::case::parse_line;
 use polyguard_cli::harness::classify::Exact;
@@ -31,8 +32,8 @@ fn slice_answer(raw: &RawCase) -> Tri {
     let s = Vect2::new(raw.pos[0], raw.pos[1]);
     let v = Vect2::new(raw.vel[0], raw.vel[1]);
     let (t, buff, f) = (raw.lookahead, raw.buff, raw.fac);
-    match raw.slab {
-        Some([bottom, top, vsp]) => detect::detect_3d_tri(
+    match (detect::dispatch(raw.slab.is_some(), &vels[..]), raw.slab) {
+        (Method::Detect3d, Some([bottom, top, vsp])) => detect::detect_3d_tri(
             t,
             s,
             v,
@@ -46,10 +47,8 @@ fn slice_answer(raw: &RawCase) -> Tri {
             buff,
             f,
         ),
-        None if detect::statically_shaped(&vels[..]) => {
-            detect::detect_same_2d_tri(t, s, v, &p[..], &vels[..], buff)
-        }
-        None => detect::detect_diff_2d_tri(t, s, v, &p[..], &vels[..], f, buff),
+        (Method::DetectSame2d, _) => detect::detect_same_2d_tri(t, s, v, &p[..], &vels[..], buff),
+        _ => detect::detect_diff_2d_tri(t, s, v, &p[..], &vels[..], f, buff),
     }
 }
 

@@ -9,7 +9,8 @@
 //! a "miss" point keeps a distance ≥ 3·r_out from it at all times. Coordinates are
 //! multiples of 2⁻¹⁰ below 2²⁰, so translating by integers and rotating by 90° are exact.
 
-use polyguard::api::{detect, Case, Method, MovingPoint, MovingPolygon, Params};
+use polyguard::api::{detect, Case, MovingPoint, MovingPolygon, Params};
+use polyguard::detect::Method;
 use polyguard::Vect2;
 use proptest::prelude::*;
 

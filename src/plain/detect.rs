@@ -148,7 +148,6 @@ pub fn dot_nn_lin(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2, sigma: Sig
 /// (F·aa + σ2·ww + t(F·bb + σ2·vv))·(aa + t·bb) = F·‖aa + t·bb‖² + σ2·(ww + t·vv)·(aa + t·bb),
 /// so σ2 = +1 selects X ≥ −F·g² and σ2 = −1 selects X ≤ F·g²: together |X| ≤ F·g².
 #[inline]
-#[allow(clippy::too_many_arguments)]
 pub fn dot_nn(
     t: f64,
     ww: Vect2,
@@ -243,7 +242,6 @@ pub fn edge_detect_simp(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2, f: f
 /// crosses a proper edge or the collapsed point, which the neighbouring edges contain.
 /// tests/functions_vs_oracle.rs checks that this is the only difference.
 #[inline(always)]
-#[allow(clippy::too_many_arguments)]
 fn swept_boxes_apart(
     t: f64,
     s: Vect2,
@@ -300,7 +298,6 @@ fn swept_boxes_apart(
 /// edge_detect_simp(T, s − (½p_j + ½p_i), v − (½v_j + ½v_i), ½p_j − ½p_i, ½v_j − ½v_i, F):
 /// positions relative to the edge's midpoint, against the half-edge vector.
 #[inline]
-#[allow(clippy::too_many_arguments)]
 pub fn edge_detect(
     t: f64,
     s: Vect2,
@@ -324,7 +321,6 @@ pub fn edge_detect(
 /// Paper A §II.I detect_diff_2D: s not definitely outside P, or some moving edge met by
 /// s + t·v within [0, T] (edge_detect).
 #[inline]
-#[allow(clippy::too_many_arguments)]
 pub fn detect_diff_2d<P, V>(t: f64, s: Vect2, v: Vect2, p: &P, vels: &V, f: f64, buff: f64) -> bool
 where
     P: VertexSeq + ?Sized,
@@ -394,7 +390,6 @@ pub use crate::detect::statically_shaped;
 ///
 /// When a = 0 the inputs are used unshifted, so no rounding is added.
 #[inline]
-#[allow(clippy::too_many_arguments)]
 pub fn detect_3d<P, V>(
     t: f64,
     s: Vect2,

@@ -8,7 +8,7 @@
 //!   positions ([`json`]) and written back.
 //! - [`analysis`]: Algorithm 1 on scenario text, the conflicts answer and its drawing.
 //! - [`generate`]: random scenarios as in Section VI.D.
-//! - [`reference`]: the exact references the tests hold the f64 code to: Section IV in
+//! - [`reference`](mod@reference): the exact references the tests hold the f64 code to: Section IV in
 //!   rationals, and (feature `rug`) Section V in 256-bit MPFR.
 //!
 //! Nothing here prints: progress is reported through [`analysis::Progress`], which the

@@ -6,7 +6,8 @@ use std::time::{Duration, Instant};
 use serde::{Deserialize, Serialize};
 
 use super::spec::RawCase;
-use polyguard::api::{self, Method};
+use polyguard::api;
+use polyguard::detect::Method;
 
 /// The oracle's number type: GMP rationals with the `rug` feature, else num-rational.
 #[cfg(feature = "rug")]

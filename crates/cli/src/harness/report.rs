@@ -294,7 +294,7 @@ impl Report {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use polyguard::api::Method;
+    use polyguard::detect::Method;
 
     fn verdict(class: Class, method: Method) -> Verdict {
         Verdict {

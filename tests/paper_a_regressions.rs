@@ -12,8 +12,8 @@ use std::fs;
 use std::path::{Path, PathBuf};
 
 use polyguard_cli::case::parse_line;
+use polyguard_cli::case::RawCase;
 use polyguard_cli::harness::classify::{compare, Class};
-use polyguard_cli::harness::spec::RawCase;
 use serde_json::Value;
 
 fn corpus_files() -> Vec<PathBuf> {

@@ -5,7 +5,7 @@
 use libfuzzer_sys::fuzz_target;
 use polyguard_cli::case::parse_line;
 use polyguard_cli::commands::detect::{process, DetectArgs, Engine};
-use polyguard_cli::harness::spec::RawCase;
+use polyguard_cli::case::RawCase;
 
 /// Lines handed to `process` at most (each runs the engine once).
 const MAX_LINES: usize = 8;

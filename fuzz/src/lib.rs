@@ -12,7 +12,7 @@ use arbitrary::{Arbitrary, Unstructured};
 use polyguard_cli::case::parse_line;
 use polyguard_cli::harness::classify::{self, Class};
 use polyguard_cli::harness::gen::{self, Bytes, Mode, Shape, Source};
-use polyguard_cli::harness::spec::RawCase;
+use polyguard_cli::case::RawCase;
 
 /// The snake_case name of a shape, as the target names use it.
 pub fn shape_name(shape: Shape) -> &'static str {

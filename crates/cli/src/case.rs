@@ -1,5 +1,6 @@
 //! Reading one detection case from a JSON line (docs/cases.md).
 
+use serde::{Deserialize, Serialize};
 use serde_json::{Map, Value};
 
 use polyguard::api::{Case, MovingPoint, MovingPolygon, Params};
@@ -237,7 +238,7 @@ fn numbers(v: &Value, field: &str) -> Result<Vec<f64>, CaseError> {
         .collect()
 }
 
-fn points(v: &Value, field: &str) -> Result<Vec<Vect2>, CaseError> {
+fn points(v: &Value, field: &str) -> Result<Vec<[f64; 2]>, CaseError> {
     let arr = array(v, field)?;
     let mut out = Vec::with_capacity(arr.len());
     for (i, p) in arr.iter().enumerate() {
@@ -251,7 +252,7 @@ fn points(v: &Value, field: &str) -> Result<Vec<Vect2>, CaseError> {
                 what: "numbers (a point is [x, y])",
             });
         }
-        out.push(Vect2::new(xy[0], xy[1]));
+        out.push([xy[0], xy[1]]);
     }
     Ok(out)
 }
@@ -311,15 +312,14 @@ pub fn case_from_object_with(
     }
     let lookahead = number(get(obj, "lookahead", "lookahead")?, "lookahead")?;
     let buff = number(get(obj, "buff", "buff")?, "buff")?;
-    let mut params = Params::new(buff)?;
-    match obj.get("fac") {
-        None | Some(Value::Null) => {}
-        Some(f) => params = params.with_fac(number(f, "fac")?)?,
-    }
-    match obj.get("kappa") {
-        None | Some(Value::Null) => params = params.with_kappa_degrees(default_kappa_deg)?,
-        Some(k) => params = params.with_kappa_degrees(number(k, "kappa")?)?,
-    }
+    let fac = match obj.get("fac") {
+        None | Some(Value::Null) => Params::DEFAULT_FAC,
+        Some(f) => number(f, "fac")?,
+    };
+    let kappa_deg = match obj.get("kappa") {
+        None | Some(Value::Null) => default_kappa_deg,
+        Some(k) => number(k, "kappa")?,
+    };
 
     let point = object(get(obj, "point", "point")?, "point")?;
     only_known(point, &POINT_KEYS, "point.")?;
@@ -328,19 +328,6 @@ pub fn case_from_object_with(
     if pos.len() != 2 && pos.len() != 3 {
         return Err(CaseError::PointLength { found: pos.len() });
     }
-    if vel.len() != pos.len() {
-        return Err(CaseError::WrongLength {
-            field: "point.vel".into(),
-            expected: pos.len(),
-            found: vel.len(),
-            what: "numbers (as many as point.pos)",
-        });
-    }
-    let point = if pos.len() == 3 {
-        MovingPoint::new_3d([pos[0], pos[1], pos[2]], [vel[0], vel[1], vel[2]])?
-    } else {
-        MovingPoint::new_2d(Vect2::new(pos[0], pos[1]), Vect2::new(vel[0], vel[1]))?
-    };
 
     let poly = object(get(obj, "polygon", "polygon")?, "polygon")?;
     only_known(poly, &POLYGON_KEYS, "polygon.")?;
@@ -349,20 +336,30 @@ pub fn case_from_object_with(
         "polygon.vertices",
     )?;
     let velocities = match poly.get("velocities") {
-        None | Some(Value::Null) => None,
-        Some(v) => Some(points(v, "polygon.velocities")?),
-    };
-    let mut polygon = MovingPolygon::new(vertices, velocities)?;
-    let slab_fields = ["bottom", "top", "vz"].map(|k| poly.get(k).filter(|v| !v.is_null()));
-    match slab_fields {
-        [None, None, None] => {}
-        [Some(b), Some(t), Some(z)] => {
-            polygon = polygon.with_slab(
-                number(b, "polygon.bottom")?,
-                number(t, "polygon.top")?,
-                number(z, "polygon.vz")?,
-            )?;
+        None | Some(Value::Null) => vec![],
+        Some(v) => {
+            // given, it must have one per vertex: `[]` is not read as "at rest" (too few
+            // vertices is the first thing wrong when it applies, as RawCase::to_api says)
+            let vels = points(v, "polygon.velocities")?;
+            if vels.len() != vertices.len() && vertices.len() >= 3 {
+                return Err(CaseError::WrongLength {
+                    field: "polygon.velocities".into(),
+                    expected: vertices.len(),
+                    found: vels.len(),
+                    what: "velocities (one per vertex)",
+                });
+            }
+            vels
         }
+    };
+    let slab_fields = ["bottom", "top", "vz"].map(|k| poly.get(k).filter(|v| !v.is_null()));
+    let slab = match slab_fields {
+        [None, None, None] => None,
+        [Some(b), Some(t), Some(z)] => Some([
+            number(b, "polygon.bottom")?,
+            number(t, "polygon.top")?,
+            number(z, "polygon.vz")?,
+        ]),
         _ => {
             let missing = ["bottom", "top", "vz"]
                 .iter()
@@ -374,8 +371,165 @@ pub fn case_from_object_with(
                 field: format!("polygon.{missing}"),
             });
         }
+    };
+    RawCase {
+        lookahead,
+        buff,
+        fac,
+        pos,
+        vel,
+        vertices,
+        velocities,
+        slab,
     }
-    Case::new(lookahead, point, polygon, params)
+    .to_api_with(kappa_deg)
+}
+
+/// A case of docs/cases.md as its fields, unvalidated: the one case type of the I/O
+/// layer. The reader fills it from a line ([`parse_line`]), the generators of the harness
+/// draw it, [`RawCase::to_json_line`] writes it, and [`RawCase::to_api`] and
+/// [`RawCase::exact`] make the engine's and the oracle's case of it.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct RawCase {
+    /// T, the lookahead time.
+    pub lookahead: f64,
+    /// BUFF, the distance threshold.
+    pub buff: f64,
+    /// F, the fraction of BUFF for warping polygons.
+    pub fac: f64,
+    /// 2 numbers, or 3 with the height.
+    pub pos: Vec<f64>,
+    /// As many as `pos`.
+    pub vel: Vec<f64>,
+    /// The polygon, counterclockwise.
+    pub vertices: Vec<[f64; 2]>,
+    /// One velocity per vertex (empty: all still).
+    pub velocities: Vec<[f64; 2]>,
+    /// bottom, top, vz for a 3D case.
+    pub slab: Option<[f64; 3]>,
+}
+
+impl RawCase {
+    /// The engine's validated case, κ at the format's default ([`DEFAULT_KAPPA_DEG`]).
+    pub fn to_api(&self) -> Result<Case, CaseError> {
+        self.to_api_with(DEFAULT_KAPPA_DEG)
+    }
+
+    /// The engine's validated case with κ in degrees: the one path from the format's
+    /// fields to a [`Case`], for case lines and generated cases alike.
+    pub fn to_api_with(&self, kappa_deg: f64) -> Result<Case, CaseError> {
+        let params = Params::new(self.buff)?
+            .with_fac(self.fac)?
+            .with_kappa_degrees(kappa_deg)?;
+        let pt = match (self.pos.as_slice(), self.vel.as_slice()) {
+            ([x, y], [vx, vy]) => MovingPoint::new_2d(Vect2::new(*x, *y), Vect2::new(*vx, *vy))?,
+            ([x, y, z], [vx, vy, vz]) => MovingPoint::new_3d([*x, *y, *z], [*vx, *vy, *vz])?,
+            _ => {
+                return Err(CaseError::WrongLength {
+                    field: "point.vel".into(),
+                    expected: self.pos.len(),
+                    found: self.vel.len(),
+                    what: "numbers (as many as point.pos)",
+                })
+            }
+        };
+        // no velocities: a polygon at rest
+        let velocities = (!self.velocities.is_empty())
+            .then(|| self.velocities.iter().map(|&p| p.into()).collect());
+        let mut poly = MovingPolygon::new(
+            self.vertices.iter().map(|&p| p.into()).collect(),
+            velocities,
+        )?;
+        if let Some([b, t, z]) = self.slab {
+            poly = poly.with_slab(b, t, z)?;
+        }
+        Case::new(self.lookahead, pt, poly, params)
+    }
+
+    /// The raw fields of a validated case.
+    pub fn from_api(case: &Case) -> RawCase {
+        let pt = case.point();
+        let (pos, vel) = match pt.z {
+            Some((sz, vz)) => (vec![pt.pos.x, pt.pos.y, sz], vec![pt.vel.x, pt.vel.y, vz]),
+            None => (vec![pt.pos.x, pt.pos.y], vec![pt.vel.x, pt.vel.y]),
+        };
+        RawCase {
+            lookahead: case.lookahead(),
+            buff: case.params().buff(),
+            fac: case.params().fac(),
+            pos,
+            vel,
+            vertices: case
+                .polygon()
+                .vertices()
+                .iter()
+                .map(|&p| p.into())
+                .collect(),
+            velocities: case
+                .polygon()
+                .velocities()
+                .iter()
+                .map(|&p| p.into())
+                .collect(),
+            slab: case.polygon().slab().map(|s| [s.bottom, s.top, s.vz]),
+        }
+    }
+
+    /// The oracle's exact case: the rationals these f64 denote.
+    pub fn exact<F: polyguard_oracle::ExactField>(
+        &self,
+    ) -> Result<polyguard_oracle::ExactCase<F>, polyguard_oracle::OracleError> {
+        polyguard_oracle::ExactCase::from_f64(&polyguard_oracle::CaseF64 {
+            lookahead: self.lookahead,
+            buff: self.buff,
+            fac: self.fac,
+            pos: &self.pos,
+            vel: &self.vel,
+            vertices: &self.vertices,
+            velocities: &self.velocities,
+            slab: self.slab,
+        })
+    }
+
+    /// The same case with BUFF and F multiplied by k (the "wide band" of classify).
+    pub fn widened(&self, k: f64) -> RawCase {
+        RawCase {
+            buff: self.buff * k,
+            fac: (self.fac * k).min(0.5),
+            ..self.clone()
+        }
+    }
+
+    /// One line of the case format (shortest round-trip numbers), with an `id` and any
+    /// annotations (a kept counterexample's class, …) in its `meta` object.
+    pub fn to_json_line(&self, id: &str, extra: &[(&str, serde_json::Value)]) -> String {
+        let mut point = serde_json::Map::new();
+        point.insert("pos".into(), serde_json::json!(self.pos));
+        point.insert("vel".into(), serde_json::json!(self.vel));
+        let mut poly = serde_json::Map::new();
+        poly.insert("vertices".into(), serde_json::json!(self.vertices));
+        poly.insert("velocities".into(), serde_json::json!(self.velocities));
+        if let Some([b, t, z]) = self.slab {
+            poly.insert("bottom".into(), b.into());
+            poly.insert("top".into(), t.into());
+            poly.insert("vz".into(), z.into());
+        }
+        let mut obj = serde_json::Map::new();
+        obj.insert("id".into(), id.into());
+        obj.insert("lookahead".into(), self.lookahead.into());
+        obj.insert("buff".into(), self.buff.into());
+        obj.insert("fac".into(), self.fac.into());
+        obj.insert("point".into(), serde_json::Value::Object(point));
+        obj.insert("polygon".into(), serde_json::Value::Object(poly));
+        if !extra.is_empty() {
+            let meta: serde_json::Map<String, serde_json::Value> = extra
+                .iter()
+                .map(|(k, v)| ((*k).to_string(), v.clone()))
+                .collect();
+            obj.insert("meta".into(), serde_json::Value::Object(meta));
+        }
+        serde_json::Value::Object(obj).to_string()
+    }
 }
 
 #[cfg(test)]
@@ -603,5 +757,27 @@ mod tests {
     fn missing_id_uses_line_number() {
         let line = GOOD.replace(r#""id":"a","#, "");
         assert_eq!(parse_line(&line, 7).id, Value::from(7));
+    }
+}
+
+#[cfg(test)]
+mod raw_case_tests {
+    use super::*;
+
+    #[test]
+    fn json_round_trip_is_bit_exact() {
+        let raw = RawCase {
+            lookahead: 300.0,
+            buff: 0.1 + 0.2,
+            fac: 1e-4,
+            pos: vec![1.0 / 3.0, -2.5e-300, 7.0],
+            vel: vec![0.1, f64::MIN_POSITIVE, -1.0],
+            vertices: vec![[0.0, 0.0], [1e7 + 0.1, 0.0], [0.5, 1.0]],
+            velocities: vec![[0.0, 0.0]; 3],
+            slab: Some([0.0, 10.0, -0.25]),
+        };
+        let line = raw.to_json_line("x", &[]);
+        let back = parse_line(&line, 1).case.expect("valid");
+        assert_eq!(RawCase::from_api(&back), raw);
     }
 }

@@ -10,11 +10,11 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Mutex;
 use std::time::Instant;
 
+use crate::case::RawCase;
 use crate::harness::classify::{check_contract, compare, Class, Verdict};
 use crate::harness::gen::{any_case, SplitMix};
 use crate::harness::minimise::minimise;
 use crate::harness::report::{Kept, Report};
-use crate::harness::spec::RawCase;
 use crate::harness::svg::picture;
 
 /// Counterexamples kept (minimised, written with a picture) per class.

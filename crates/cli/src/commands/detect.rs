@@ -11,8 +11,8 @@ use std::time::Instant;
 use serde_json::{json, Map, Value};
 
 use crate::case::parse_line_with;
+use crate::case::RawCase;
 use crate::harness::classify::Exact;
-use crate::harness::spec::RawCase;
 use polyguard::api::{self, Case};
 
 /// Which implementation answers.

@@ -5,7 +5,7 @@ use std::time::{Duration, Instant};
 
 use serde::{Deserialize, Serialize};
 
-use super::spec::RawCase;
+use crate::case::RawCase;
 use polyguard::api;
 use polyguard::detect::Method;
 

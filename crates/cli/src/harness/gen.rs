@@ -21,7 +21,7 @@
 //! The choices are drawn from a [`Source`]: [`SplitMix`] for seeded runs, [`Bytes`] for
 //! fuzzers (the fuzzer's input bytes steer every choice).
 
-use super::spec::RawCase;
+use crate::case::RawCase;
 use polyguard::vect2::Vect2;
 
 /// Where the generator's choices come from.

@@ -1,7 +1,7 @@
 //! Minimising a counterexample: fewer vertices and shorter numbers, same class.
 
 use super::classify::{compare, Class};
-use super::spec::RawCase;
+use crate::case::RawCase;
 
 /// How many comparisons one minimisation may spend (each runs the exact oracle).
 pub const BUDGET: usize = 300;

@@ -2,8 +2,8 @@
 //! exact arithmetic, the exact ground truth). Tests, fuzz targets and `polyguard assure`
 //! all call it.
 //!
-//! - [`spec`]: a case as raw f64 fields (the JSON Lines format), convertible to the
-//!   engine's validated [`polyguard::api::Case`] and to the oracle's exact case.
+//! Cases are [`crate::case::RawCase`]s, the case format's fields.
+//!
 //! - [`gen`]: boundary-biased case generators over a seeded or byte-fed [`gen::Source`].
 //! - [`classify`]: the verdict of one case (agree, float divergence, missed detection, …).
 //! - [`report`]: counts per function, mode and class; shards merge exactly.
@@ -14,6 +14,5 @@ pub mod classify;
 pub mod gen;
 pub mod minimise;
 pub mod report;
-pub mod spec;
 pub mod svg;
 pub mod workload;

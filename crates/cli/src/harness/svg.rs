@@ -1,7 +1,7 @@
 //! One picture per counterexample: the polygon at t = 0 with its BUFF band, the polygon
 //! at the event time, the trajectory over [0, T], and the times.
 
-use super::spec::RawCase;
+use crate::case::RawCase;
 use polyguard::vect2::Vect2;
 
 fn poly_at(raw: &RawCase, t: f64) -> Vec<Vect2> {

@@ -383,14 +383,10 @@ fn root_bounds_simple(a: f64, b: f64, c: f64, disc: Ball) -> Option<[(f64, f64);
 /// outside (`outer`: a superset) or from inside (a subset), as dot_nn_lin's two
 /// intervals: [σ = −1, σ = +1].
 ///
-/// The cases of dot_nn_lin (omitted in the paper, derived here): a > 0 and disc ≤ 0:
-/// everything (σ = +1); a > 0, disc > 0: outside the roots r1 < r2 (σ = −1: t ≤ r1,
-/// σ = +1: t ≥ r2); a < 0: between the roots when disc ≥ 0 (σ = +1), else nothing;
-/// a = 0: the line b·t + c (b > 0: t ≥ −c/b, σ = +1; b < 0: t ≤ −c/b, σ = −1; b = 0:
-/// everything when c ≥ 0, σ = +1). a is compared with zero exactly: treating a small a
-/// as zero (as PolyCARP does below 1e-8) replaces a parabola by a line and loses real
-/// roots on long lookaheads. An undecided discriminant makes the outer set everything
-/// and the inner one the widest possible gap, so both enclosures hold whatever it is.
+/// The cases of dot_nn_lin (omitted in the paper) are derived in docs/derivations.md.
+/// a is compared with zero exactly. An undecided discriminant makes the outer set
+/// everything and the inner one the widest possible gap, so both enclosures hold
+/// whatever it is.
 fn float_set(a: f64, b: f64, c: f64, lo: f64, hi: f64, outer: bool) -> [Interval; 2] {
     let full = Interval::new(lo, hi);
     let none = Interval::EMPTY;
@@ -524,7 +520,7 @@ fn dot_coeffs(ww: BallV, vv: BallV, aa: BallV, bb: BallV, zero: [bool; 4]) -> [B
     [a, b, c]
 }
 
-/// Paper A §II.I dot_nn_lin (omitted in the paper, derived in `float_set`): one of the
+/// Paper A §II.I dot_nn_lin (omitted in the paper; derived in docs/derivations.md): one of the
 /// two intervals whose union is {t ∈ [0, T] : (ww + t·vv)·(aa + t·bb) ≥ 0}.
 ///
 /// Certified as an outer enclosure: the returned interval contains the exact one.

@@ -78,24 +78,10 @@ fn roots(a: f64, b: f64, c: f64, disc: f64) -> (f64, f64) {
     }
 }
 
-/// Paper A §II.I dot_nn_lin (omitted in the paper, derived here): one of the two
+/// Paper A §II.I dot_nn_lin (omitted in the paper; derived in docs/derivations.md): one of the two
 /// intervals whose union is {t ∈ [0, T] : (ww + t·vv)·(aa + t·bb) ≥ 0}.
 ///
-/// Derivation. f(t) = (ww + t·vv)·(aa + t·bb) = A·t² + B·t + C with A = vv·bb,
-/// B = ww·bb + vv·aa, C = ww·aa. Its non-negative set in ℝ is, by the sign of A:
-/// - A = 0, B = 0: all of ℝ when C ≥ 0, else nothing → σ = +1 gets [0, T] or ∅.
-/// - A = 0, B > 0: t ≥ −C/B → σ = +1 gets [max(0, −C/B), T].
-/// - A = 0, B < 0: t ≤ −C/B → σ = −1 gets [0, min(T, −C/B)].
-/// - A > 0, disc = B² − 4AC ≤ 0: all of ℝ → σ = +1 gets [0, T].
-/// - A > 0, disc > 0: outside the roots r1 < r2 → σ = −1 gets [0, min(T, r1)],
-///   σ = +1 gets [max(0, r2), T].
-/// - A < 0, disc < 0: nothing.
-/// - A < 0, disc = 0: the double root r = −B/(2A) → σ = +1 gets [max(0,r), min(T,r)].
-/// - A < 0, disc > 0: between the roots → σ = +1 gets [max(0, r1), min(T, r2)].
-///
-/// The sign not named in a case gets ∅. A is compared with zero exactly: treating a
-/// small A as zero (as PolyCARP does below 1e-8) replaces a parabola by a line and loses
-/// real roots on long lookaheads.
+/// The case analysis, with A = vv·bb, B = ww·bb + vv·aa, C = ww·aa: docs/derivations.md.
 #[inline]
 pub fn dot_nn_lin(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2, sigma: Sign) -> Interval {
     let a = vv.dot(bb);

@@ -66,7 +66,8 @@ use polyguard_oracle::convert::{f64_to_exact, to_float};
 use polyguard_oracle::detect::Interval as ExactInterval;
 use polyguard_oracle::qfield::Alg;
 use polyguard_oracle::{
-    contain as oc, detect as od, proximity as op, quad as oq, well_formed as ow, ExactField, Q, V2,
+    contain as oc, detect as od, proximity as op, quad as oq, well_formed as ow, Arith, Decided,
+    Exact, ExactField, Q, V2,
 };
 use proptest::prelude::*;
 
@@ -232,9 +233,9 @@ fn dist2_point_segment(s: &V2<Q>, a: &V2<Q>, b: &V2<Q>) -> Q {
         return w.sq();
     };
     let r = if r.is_neg() {
-        <Q as ExactField>::zero()
-    } else if r > <Q as ExactField>::one() {
-        <Q as ExactField>::one()
+        <Q as Arith>::zero()
+    } else if r > <Q as Arith>::one() {
+        <Q as Arith>::one()
     } else {
         r
     };
@@ -244,8 +245,8 @@ fn dist2_point_segment(s: &V2<Q>, a: &V2<Q>, b: &V2<Q>) -> Q {
 /// Exact squared distance between the segments a b and c d (attained at an end of one of
 /// them unless they meet).
 fn dist2_segments(a: &V2<Q>, b: &V2<Q>, c: &V2<Q>, d: &V2<Q>) -> Q {
-    if polyguard_oracle::truth::segments_intersect(a, b, c, d) {
-        return <Q as ExactField>::zero();
+    if polyguard_oracle::truth::segments_intersect(&Exact, a, b, c, d).decided() {
+        return <Q as Arith>::zero();
     }
     [
         dist2_point_segment(a, c, d),
@@ -321,7 +322,7 @@ fn approx(a: &Alg<Q>) -> f64 {
     (to_float(&a.p) + to_float(&a.q) * to_float(&a.d).sqrt()) / to_float(&a.r)
 }
 
-fn show(e: &ExactInterval<Q>) -> String {
+fn show(e: &ExactInterval<Alg<Q>>) -> String {
     match e {
         ExactInterval::Empty => "empty".to_string(),
         ExactInterval::Closed { lb, ub } => format!("[{:e}, {:e}]", approx(lb), approx(ub)),
@@ -332,7 +333,7 @@ fn show(e: &ExactInterval<Q>) -> String {
 /// engine interval that is empty (lb > ub) or not agrees with the exact emptiness unless
 /// it is within tolerance of degenerate. The engine's empty sentinel (+∞, −∞) comes only
 /// from exact sign decisions and must match an exactly empty interval.
-fn interval_matches(g: &Interval, e: &ExactInterval<Q>, t: f64) -> bool {
+fn interval_matches(g: &Interval, e: &ExactInterval<Alg<Q>>, t: f64) -> bool {
     let sentinel = *g == Interval::EMPTY;
     match e {
         ExactInterval::Empty => sentinel || g.lb > g.ub || g.ub - g.lb <= tol(g.ub, t),
@@ -343,14 +344,14 @@ fn interval_matches(g: &Interval, e: &ExactInterval<Q>, t: f64) -> bool {
 }
 
 /// The engine's pair (σ = −1, σ = +1) against the oracle's, up to the σ labels.
-fn pair_matches(g: &[Interval; 2], e: &[ExactInterval<Q>; 2], t: f64) -> bool {
+fn pair_matches(g: &[Interval; 2], e: &[ExactInterval<Alg<Q>>; 2], t: f64) -> bool {
     let m = |i: usize, j: usize| interval_matches(&g[i], &e[j], t);
     (m(0, 0) && m(1, 1)) || (m(0, 1) && m(1, 0))
 }
 
 /// Every exact interval lies inside one of the engine's (decided exactly): the engine's
 /// pair is an outer enclosure, so it never loses a time paper A accepts.
-fn pair_contains(g: &[Interval; 2], e: &[ExactInterval<Q>; 2]) -> bool {
+fn pair_contains(g: &[Interval; 2], e: &[ExactInterval<Alg<Q>>; 2]) -> bool {
     e.iter().all(|x| match x {
         ExactInterval::Empty => true,
         ExactInterval::Closed { lb, ub } => g.iter().any(|i| {
@@ -364,7 +365,7 @@ fn pair_contains(g: &[Interval; 2], e: &[ExactInterval<Q>; 2]) -> bool {
 
 /// The engine's pair is an outer enclosure of the exact one, tight to 10⁻¹² (or to 10⁻⁶
 /// in total width beyond the exact pair, near a double root).
-fn pair_encloses(g: &[Interval; 2], e: &[ExactInterval<Q>; 2], t: f64) -> bool {
+fn pair_encloses(g: &[Interval; 2], e: &[ExactInterval<Alg<Q>>; 2], t: f64) -> bool {
     if !pair_contains(g, e) {
         return false;
     }
@@ -409,14 +410,6 @@ fn any_edge_collapses(t: &Q, p: &[V2<Q>], vels: &[V2<Q>]) -> bool {
         let j = (i + 1) % n;
         edge_collapses(t, &p[i], &p[j], &vels[i], &vels[j])
     })
-}
-
-fn sign_of(s: i8) -> Sign {
-    if s < 0 {
-        Sign::Neg
-    } else {
-        Sign::Pos
-    }
 }
 
 // ------------------------------------------------------------------ scenes
@@ -605,7 +598,7 @@ proptest! {
     /// (ends exactly at D, vertex value exactly D, vertex exactly at 0 or 1).
     #[test]
     fn quad_min_le_d_matches_oracle((a, b, c, d) in quad1()) {
-        let want = oq::quad_min_le_d(&q(a), &q(b), &q(c), &q(d));
+        let want = oq::quad_min_le_d(&Exact, &q(a), &q(b), &q(c), &q(d)).decided();
         prop_assert_eq!(quad_min_le_d(a, b, c, d), want);
     }
 
@@ -615,7 +608,7 @@ proptest! {
     fn quad_min_box_le_d_matches_oracle(k in quad2()) {
         prop_assert!(k.iter().all(|&x| on_grid(x, 1.0 / 16.0, 512.0)), "outside the exact grid");
         let [a, b, c, d, e, f, dd] = k;
-        let want = oq::quad_min_box_le_d(&q(a), &q(b), &q(c), &q(d), &q(e), &q(f), &q(dd));
+        let want = oq::quad_min_box_le_d(&Exact, &q(a), &q(b), &q(c), &q(d), &q(e), &q(f), &q(dd)).decided();
         prop_assert_eq!(quad_min_box_le_d(a, b, c, d, e, f, dd), want);
     }
 
@@ -630,7 +623,7 @@ proptest! {
     ) {
         let (ep, es) = (qv(p), qv(s));
         let buff = pick_buff(tie, &perturb_ties(&ep, &es), 0.125, 64.0, buff);
-        let want = oc::perturb_vertex(&ep, &es, &q(buff));
+        let want = oc::perturb(&Exact, &ep, &es, &q(buff)).decided();
         prop_assert_eq!(qv(perturb(p, s, buff)), want);
     }
 
@@ -648,7 +641,7 @@ proptest! {
             let (epi, epj, es) = (qv(pi), qv(pj), qv(s));
             let d2 = dist2_point_segment(&es, &epi, &epj);
             let buff = pick_buff(tie, &[d2], 1.0 / 32.0, 4096.0, buff);
-            let want = oc::near_edge(&epi, &epj, &es, &q(buff));
+            let want = oc::near_edge(&Exact, &epi, &epj, &es, &q(buff)).decided();
             prop_assert_eq!(near_edge(pi, pj, s, buff), want, "{} grid, BUFF = {}", name, buff);
         }
     }
@@ -664,12 +657,15 @@ proptest! {
         tie in tie(),
     ) {
         let (ep, es) = (qpoly(&p), qv(s));
-        prop_assert_eq!(num_cross(&p[..], s), oc::num_cross(&ep, &es), "P");
+        prop_assert_eq!(num_cross(&p[..], s), oc::num_cross(&Exact, &ep, &es).decided(), "P");
         let ties: Vec<Q> = ep.iter().flat_map(|v| perturb_ties(v, &es)).collect();
         let buff = pick_buff(tie, &ties, H / 4.0, 256.0, buff);
         let star = Perturbed { poly: &p[..], s, buff };
-        let estar = oc::perturb(&ep, &es, &q(buff));
-        prop_assert_eq!(num_cross(&star, s), oc::num_cross(&estar, &es), "P*_BUFF, BUFF = {}", buff);
+        let estar: Vec<V2<Q>> = ep
+            .iter()
+            .map(|v| oc::perturb(&Exact, v, &es, &q(buff)).decided())
+            .collect();
+        prop_assert_eq!(num_cross(&star, s), oc::num_cross(&Exact, &estar, &es).decided(), "P*_BUFF, BUFF = {}", buff);
     }
 
     /// Paper A §II.E definitely_outside: engine and oracle agree exactly, on a small and an
@@ -690,7 +686,7 @@ proptest! {
         let mut ties: Vec<Q> = (0..n).map(|i| dist2_point_segment(&es, &ep[i], &ep[(i + 1) % n])).collect();
         ties.extend(ep.iter().flat_map(|v| perturb_ties(v, &es)));
         let buff = pick_buff(tie, &ties, H / 4.0, 1024.0, buff);
-        let want = oc::definitely_outside(&ep, &es, &q(buff));
+        let want = oc::definitely_outside(&Exact, &ep, &es, &q(buff)).decided();
         prop_assert_eq!(definitely_outside(&p[..], s, buff), want, "BUFF = {}", buff);
     }
 
@@ -707,7 +703,7 @@ proptest! {
         prop_assert!(box_exact(&[c, d, e, f], H));
         let (ec, ed, ee, ef) = (qv(c), qv(d), qv(e), qv(f));
         let buff = pick_buff(tie, &[dist2_segments(&ec, &ed, &ee, &ef)], H / 4.0, 80.0, buff);
-        let want = op::segments_close(&ec, &ed, &ee, &ef, &q(buff));
+        let want = op::segments_close(&Exact, &ec, &ed, &ee, &ef, &q(buff)).decided();
         prop_assert_eq!(segments_close(c, d, e, f, buff), want, "BUFF = {}", buff);
     }
 
@@ -737,7 +733,7 @@ proptest! {
             ties.push(dist2_segments(&s, &qv(rel_ends[i]), &p[i], &p[j]));
         }
         let buff = pick_buff(tie, &ties, H / 4.0, 80.0, sc.buff);
-        let want = od::detect_same_2d(&t, &s, &v, &p, &vels, &q(buff));
+        let want = od::detect_same_2d(&Exact, &t, &s, &v, &p, &vels, &q(buff)).decided();
         let got = detect_same_2d(sc.t, sc.s, sc.v, &sc.poly[..], &sc.vels[..], buff);
         prop_assert_eq!(got, want, "BUFF = {}", buff);
     }
@@ -777,8 +773,8 @@ proptest! {
     fn dot_nn_lin_matches_oracle(vs in lin_vectors(), t in lookahead()) {
         let [ww, vv, aa, bb] = vs;
         let (et, eww, evv, eaa, ebb) = (q(t), qv(ww), qv(vv), qv(aa), qv(bb));
-        let g = [-1i8, 1].map(|s| dot_nn_lin(t, ww, vv, aa, bb, sign_of(s)));
-        let e = [-1i8, 1].map(|s| od::dot_nn_lin(&et, &eww, &evv, &eaa, &ebb, s));
+        let g = Sign::BOTH.map(|s| dot_nn_lin(t, ww, vv, aa, bb, s));
+        let e = od::Sign::BOTH.map(|s| od::dot_nn_lin(&Exact, &et, &eww, &evv, &eaa, &ebb, s).decided());
         prop_assert!(
             pair_encloses(&g, &e, t),
             "engine {:?} exact [{}, {}]", g, show(&e[0]), show(&e[1])
@@ -791,12 +787,12 @@ proptest! {
     fn dot_nn_matches_oracle(vs in lin_vectors(), t in lookahead(), f in fac()) {
         let [ww, vv, aa, bb] = vs;
         let (et, eww, evv, eaa, ebb, ef) = (q(t), qv(ww), qv(vv), qv(aa), qv(bb), q(f));
-        for s2 in [-1i8, 1] {
-            let g = [-1i8, 1].map(|s1| dot_nn(t, ww, vv, aa, bb, sign_of(s1), sign_of(s2), f));
-            let e = [-1i8, 1].map(|s1| od::dot_nn(&et, &eww, &evv, &eaa, &ebb, s1, s2, &ef));
+        for (s2, es2) in Sign::BOTH.into_iter().zip(od::Sign::BOTH) {
+            let g = Sign::BOTH.map(|s1| dot_nn(t, ww, vv, aa, bb, s1, s2, f));
+            let e = od::Sign::BOTH.map(|s1| od::dot_nn(&Exact, &et, &eww, &evv, &eaa, &ebb, s1, es2, &ef).decided());
             prop_assert!(
                 pair_encloses(&g, &e, t),
-                "σ2 = {}: engine {:?} exact [{}, {}]", s2, g, show(&e[0]), show(&e[1])
+                "σ2 = {:?}: engine {:?} exact [{}, {}]", s2, g, show(&e[0]), show(&e[1])
             );
         }
     }
@@ -814,7 +810,7 @@ proptest! {
         let (ww, vv, aa, bb) = vs;
         let (et, eww, evv, eaa, ebb) = (q(t), qv(ww), qv(vv), qv(aa), qv(bb));
         prop_assume!(!collapses(&et, &eaa, &ebb));
-        let exact = |k: &Q| od::edge_detect_simp(&et, &eww, &evv, &eaa, &ebb, k);
+        let exact = |k: &Q| od::edge_detect_simp(&Exact, &et, &eww, &evv, &eaa, &ebb, k).decided();
         let want = exact(&q(f));
         if exact(&nudged(f, false)) == want && exact(&nudged(f, true)) == want {
             prop_assert_eq!(edge_detect_simp(t, ww, vv, aa, bb, f), want);
@@ -838,7 +834,7 @@ proptest! {
         let (vi, vj, v) = (di.scale(1.0 / t), dj.scale(1.0 / t), d.scale(1.0 / t));
         let (et, es, ev, epi, epj, evi, evj) = (q(t), qv(s), qv(v), qv(pi), qv(pj), qv(vi), qv(vj));
         prop_assume!(!edge_collapses(&et, &epi, &epj, &evi, &evj));
-        let exact = |k: &Q| od::edge_detect(&et, &es, &ev, &epi, &epj, &evi, &evj, k);
+        let exact = |k: &Q| od::edge_detect(&Exact, &et, &es, &ev, &epi, &epj, &evi, &evj, k).decided();
         let want = exact(&q(f));
         if exact(&nudged(f, false)) == want && exact(&nudged(f, true)) == want {
             prop_assert_eq!(edge_detect(t, s, v, pi, pj, vi, vj, f), want);
@@ -860,7 +856,7 @@ proptest! {
         let ties: Vec<Q> = (0..n).map(|i| dist2_point_segment(&s, &p[i], &p[(i + 1) % n])).collect();
         let buff = pick_buff(tie, &ties, H / 4.0, 80.0, sc.buff);
         let eb = q(buff);
-        let exact = |k: &Q| od::detect_diff_2d(&t, &s, &v, &p, &vels, k, &eb);
+        let exact = |k: &Q| od::detect_diff_2d(&Exact, &t, &s, &v, &p, &vels, k, &eb).decided();
         let want = exact(&q(sc.f));
         if exact(&nudged(sc.f, false)) == want && exact(&nudged(sc.f, true)) == want {
             let got = detect_diff_2d(sc.t, sc.s, sc.v, &sc.poly[..], &sc.vels[..], sc.f, buff);
@@ -879,9 +875,9 @@ proptest! {
     ) {
         let (t, s, v, p, vels) = sc.exact();
         // Statically shaped polygons go to detect_same_2D, which has no edge_detect.
-        prop_assume!(od::all_equal(&vels) || !any_edge_collapses(&t, &p, &vels));
+        prop_assume!(od::statically_shaped(&Exact, &vels).decided() || !any_edge_collapses(&t, &p, &vels));
         let (sz, vz, pmin, pmax, vsp) = (q(z.sz), q(z.vz), q(z.pmin), q(z.pmax), q(z.vsp));
-        let exact = |b: &Q, k: &Q| od::detect_3d(&t, &s, &v, &sz, &vz, &p, &vels, &pmin, &pmax, &vsp, b, k);
+        let exact = |b: &Q, k: &Q| od::detect_3d(&Exact, &t, &s, &v, &sz, &vz, &p, &vels, &pmin, &pmax, &vsp, b, k).decided();
         let want = exact(&q(sc.buff), &q(sc.f));
         if exact(&nudged(sc.buff, false), &nudged(sc.f, false)) == want
             && exact(&nudged(sc.buff, true), &nudged(sc.f, true)) == want
@@ -922,7 +918,7 @@ proptest! {
         let v = d.scale(1.0 / t);
         let (et, es, ev, epi, epj, evi, evj) = (q(t), qv(s), qv(v), qv(pi), qv(pj), qv(vi), qv(vj));
         prop_assert!(edge_collapses(&et, &epi, &epj, &evi, &evj));
-        let exact = |k: &Q| od::edge_detect(&et, &es, &ev, &epi, &epj, &evi, &evj, k);
+        let exact = |k: &Q| od::edge_detect(&Exact, &et, &es, &ev, &epi, &epj, &evi, &evj, k).decided();
         let want = exact(&q(f));
         let engine = edge_detect(t, s, v, pi, pj, vi, vj, f);
         prop_assert!(engine || !want, "paper-exact true, engine false");

@@ -48,8 +48,8 @@ use polyguard_oracle::convert::f64_to_exact;
 use polyguard_oracle::detect::Interval as ExactInterval;
 use polyguard_oracle::qfield::Alg;
 use polyguard_oracle::{
-    contain as oc, detect as od, paper_detect, proximity as op, quad as oq, CaseF64, ExactCase,
-    ExactField, Q, V2,
+    contain as oc, detect as od, paper_detect, proximity as op, quad as oq, Arith, CaseF64,
+    Decided, Exact, ExactCase, ExactField, Q, V2,
 };
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestCaseError, TestRunner};
@@ -239,9 +239,9 @@ fn dist2_point_segment(s: &V2<Q>, a: &V2<Q>, b: &V2<Q>) -> Q {
         return w.sq();
     };
     let r = if r.is_neg() {
-        <Q as ExactField>::zero()
-    } else if r > <Q as ExactField>::one() {
-        <Q as ExactField>::one()
+        <Q as Arith>::zero()
+    } else if r > <Q as Arith>::one() {
+        <Q as Arith>::one()
     } else {
         r
     };
@@ -250,8 +250,8 @@ fn dist2_point_segment(s: &V2<Q>, a: &V2<Q>, b: &V2<Q>) -> Q {
 
 /// Exact squared distance between the segments a b and c d.
 fn dist2_segments(a: &V2<Q>, b: &V2<Q>, c: &V2<Q>, d: &V2<Q>) -> Q {
-    if polyguard_oracle::truth::segments_intersect(a, b, c, d) {
-        return <Q as ExactField>::zero();
+    if polyguard_oracle::truth::segments_intersect(&Exact, a, b, c, d).decided() {
+        return <Q as Arith>::zero();
     }
     [
         dist2_point_segment(a, c, d),
@@ -1048,7 +1048,7 @@ fn alg_le(a: &Alg<Q>, x: f64) -> bool {
 }
 
 /// Every exact interval lies in the union of the engine's.
-fn union_contains(g: [Interval; 2], e: &[ExactInterval<Q>; 2]) -> bool {
+fn union_contains(g: [Interval; 2], e: &[ExactInterval<Alg<Q>>; 2]) -> bool {
     let u = union_of(g);
     e.iter().all(|x| match x {
         ExactInterval::Empty => true,
@@ -1396,11 +1396,14 @@ impl Scene {
         let (t, s, v, p, w) = self.exact();
         let (b, f) = (q(self.buff), q(self.f));
         match (kind, self.slab) {
-            (Kind::Same, _) => od::detect_same_2d(&t, &s, &v, &p, &w, &b),
-            (Kind::Diff, _) => od::detect_diff_2d(&t, &s, &v, &p, &w, &f, &b),
+            (Kind::Same, _) => od::detect_same_2d(&Exact, &t, &s, &v, &p, &w, &b).decided(),
+            (Kind::Diff, _) => od::detect_diff_2d(&Exact, &t, &s, &v, &p, &w, &f, &b).decided(),
             (Kind::ThreeD, Some(z)) => {
                 let [sz, vz, pmin, pmax, vsp] = z.map(q);
-                od::detect_3d(&t, &s, &v, &sz, &vz, &p, &w, &pmin, &pmax, &vsp, &b, &f)
+                od::detect_3d(
+                    &Exact, &t, &s, &v, &sz, &vz, &p, &w, &pmin, &pmax, &vsp, &b, &f,
+                )
+                .decided()
             }
             (Kind::ThreeD, None) => unreachable!("a 3D scene has a slab"),
         }
@@ -1667,7 +1670,7 @@ fn scene(kind: Kind, max_n: usize) -> impl Strategy<Value = Scene> {
 #[test]
 fn quad_min_le_d_at_the_threshold() {
     run("quad_min_le_d", cases(512), quad1(), |c, tally| {
-        let want = oq::quad_min_le_d(&q(c.a), &q(c.b), &q(c.c), &q(c.d));
+        let want = oq::quad_min_le_d(&Exact, &q(c.a), &q(c.b), &q(c.c), &q(c.d)).decided();
         let got = quad_min_le_d(c.a, c.b, c.c, c.d);
         tally.note_bool(got, want);
         check_bool(got, want, "quad_min_le_d")?;
@@ -1686,7 +1689,7 @@ fn quad_min_box_le_d_at_the_threshold() {
     run("quad_min_box_le_d", cases(256), quad2(), |c, tally| {
         let [a, b, cc, d, e, f] = c.k;
         let [ea, eb, ec, ed, ee, ef] = c.k.map(q);
-        let want = oq::quad_min_box_le_d(&ea, &eb, &ec, &ed, &ee, &ef, &q(c.dd));
+        let want = oq::quad_min_box_le_d(&Exact, &ea, &eb, &ec, &ed, &ee, &ef, &q(c.dd)).decided();
         let tri = quad_min_box_le_d_tri(a, b, cc, d, e, f, c.dd);
         tally.note(tri, want);
         check_tri(tri, want, "quad_min_box_le_d_tri")?;
@@ -1712,7 +1715,7 @@ fn quad_min_box_le_d_at_the_threshold() {
 #[test]
 fn near_edge_at_the_threshold() {
     run("near_edge", cases(256), near_edge_case(), |c, tally| {
-        let want = oc::near_edge(&qv(c.pi), &qv(c.pj), &qv(c.s), &q(c.buff));
+        let want = oc::near_edge(&Exact, &qv(c.pi), &qv(c.pj), &qv(c.s), &q(c.buff)).decided();
         let tri = near_edge_tri(c.pi, c.pj, c.s, c.buff);
         tally.note(tri, want);
         check_tri(tri, want, "near_edge_tri")?;
@@ -1726,7 +1729,8 @@ fn near_edge_at_the_threshold() {
 #[test]
 fn segments_close_at_the_threshold() {
     run("segments_close", cases(256), seg_pair(), |c, tally| {
-        let want = op::segments_close(&qv(c.c), &qv(c.d), &qv(c.e), &qv(c.f), &q(c.buff));
+        let want = op::segments_close(&Exact, &qv(c.c), &qv(c.d), &qv(c.e), &qv(c.f), &q(c.buff))
+            .decided();
         let tri = segments_close_tri(c.c, c.d, c.e, c.f, c.buff);
         tally.note(tri, want);
         check_tri(tri, want, "segments_close_tri")?;
@@ -1758,7 +1762,7 @@ fn definitely_outside_at_the_threshold() {
                 .map(|(&p, &w)| qv(p).at(&qv(w), &et))
                 .collect();
             let st = qv(c.s).at(&qv(c.v), &et);
-            let want = oc::definitely_outside(&moved, &st, &q(c.buff));
+            let want = oc::definitely_outside(&Exact, &moved, &st, &q(c.buff)).decided();
             let rel = AtTime {
                 p: &c.poly[..],
                 vels: &c.vels[..],
@@ -1788,7 +1792,8 @@ fn definitely_outside_at_the_threshold() {
 fn dot_nn_lin_encloses_the_exact_union() {
     run("dot_nn_lin", cases(512), lin_case(), |c, tally| {
         let (et, ew, ev, ea, eb) = (q(c.t), qv(c.ww), qv(c.vv), qv(c.aa), qv(c.bb));
-        let e = [-1i8, 1].map(|s| od::dot_nn_lin(&et, &ew, &ev, &ea, &eb, s));
+        let e =
+            od::Sign::BOTH.map(|s| od::dot_nn_lin(&Exact, &et, &ew, &ev, &ea, &eb, s).decided());
         let g = [Sign::Neg, Sign::Pos].map(|s| dot_nn_lin(c.t, c.ww, c.vv, c.aa, c.bb, s));
         tally.note_bool(true, !e[0].is_empty() || !e[1].is_empty());
         prop_assert!(
@@ -1808,8 +1813,16 @@ fn dot_nn_lin_encloses_the_exact_union() {
 #[test]
 fn edge_detect_simp_on_long_paths() {
     run("edge_detect_simp", cases(256), edge_meet(), |c, tally| {
-        let want =
-            od::edge_detect_simp(&q(c.t), &qv(c.ww), &qv(c.vv), &qv(c.aa), &qv(c.bb), &q(c.f));
+        let want = od::edge_detect_simp(
+            &Exact,
+            &q(c.t),
+            &qv(c.ww),
+            &qv(c.vv),
+            &qv(c.aa),
+            &qv(c.bb),
+            &q(c.f),
+        )
+        .decided();
         let e = BallV::exact;
         let tri = edge_detect_simp_tri(
             Ball::exact(0.0),
@@ -1843,8 +1856,16 @@ fn edge_detect_simp_holds_inside_wide_balls() {
         cases(256),
         strategy,
         |(c, k, xi), tally| {
-            let want =
-                od::edge_detect_simp(&q(c.t), &qv(c.ww), &qv(c.vv), &qv(c.aa), &qv(c.bb), &q(c.f));
+            let want = od::edge_detect_simp(
+                &Exact,
+                &q(c.t),
+                &qv(c.ww),
+                &qv(c.vv),
+                &qv(c.aa),
+                &qv(c.bb),
+                &q(c.f),
+            )
+            .decided();
             // A ball around x whose centre is off by ξ/2 of the radius per coordinate.
             let ball = |x: Vect2, i: usize| {
                 let r = max_abs(&[x]) * pow2(-k);
@@ -1923,7 +1944,8 @@ fn slab_window_encloses_the_exact_window() {
         {
             return Ok(());
         }
-        let want = od::slab_interval(&q(t), &q(sz), &q(vz), &q(pmin), &q(pmax), &q(vsp));
+        let want =
+            od::slab_window(&Exact, &q(t), &q(sz), &q(vz), &q(pmin), &q(pmax), &q(vsp)).decided();
         let got = polyguard::detect::slab_window_balls(t, sz, vz, pmin, pmax, vsp);
         tally.note(
             if got.is_some() { Tri::Unsure } else { Tri::No },
@@ -1953,6 +1975,7 @@ fn edge_detect_on_long_paths() {
     run("edge_detect", cases(256), edge_meet(), |c, tally| {
         let (s, v, pi, pj, vi, vj) = c.absolute();
         let want = od::edge_detect(
+            &Exact,
             &q(c.t),
             &qv(s),
             &qv(v),
@@ -1961,7 +1984,8 @@ fn edge_detect_on_long_paths() {
             &qv(vi),
             &qv(vj),
             &q(c.f),
-        );
+        )
+        .decided();
         let got = edge_detect(c.t, s, v, pi, pj, vi, vj, c.f);
         tally.note_bool(got, want);
         check_bool(got, want, "edge_detect")
@@ -2054,19 +2078,19 @@ fn negative_buff_is_never_a_certain_no() {
             let (ei, ej, es, eb) = (qv(pi), qv(pj), qv(s), q(sc.buff));
             check_tri(
                 near_edge_tri(pi, pj, s, sc.buff),
-                oc::near_edge(&ei, &ej, &es, &eb),
+                oc::near_edge(&Exact, &ei, &ej, &es, &eb).decided(),
                 "near_edge_tri, negative BUFF",
             )?;
             let end = s + sc.v.scale(sc.t);
             check_tri(
                 segments_close_tri(s, end, pi, pj, sc.buff),
-                op::segments_close(&es, &qv(end), &ei, &ej, &eb),
+                op::segments_close(&Exact, &es, &qv(end), &ei, &ej, &eb).decided(),
                 "segments_close_tri, negative BUFF",
             )?;
             let poly: Vec<V2<Q>> = sc.poly.iter().map(|p| qv(*p)).collect();
             prop_assert!(
                 !definitely_outside(&sc.poly[..], s, sc.buff)
-                    || oc::definitely_outside(&poly, &es, &eb),
+                    || oc::definitely_outside(&Exact, &poly, &es, &eb).decided(),
                 "definitely_outside, negative BUFF: engine outside, paper-exact not"
             );
             Ok(())

@@ -24,7 +24,7 @@ use std::f64::consts::PI;
 use polyguard::ring::{self, RingFault, Winding};
 use polyguard::Vect2;
 use polyguard_oracle::convert::f64_to_exact;
-use polyguard_oracle::filter::{next_down, next_up};
+use polyguard_oracle::kernel::interval::{next_down, next_up};
 use polyguard_oracle::ring as oring;
 use polyguard_oracle::{Q, V2};
 use proptest::prelude::*;

@@ -2,9 +2,10 @@
 //! the workload's polygons warp) on a seeded workload of random star-shaped
 //! counterclockwise warping polygons of size ~1000, lookahead 300, BUFF 0.01,
 //! F 1e-4, n = 4, 8, 16 (cases/s is the "elements" throughput criterion prints).
-//! Each is measured with the floating filter (the default `paper_detect`, `truth`)
-//! and without it (`paper_detect_unfiltered`, `truth_unfiltered`), and "both" is
-//! paper_detect + truth together, what one differential comparison costs the oracle.
+//! Each is measured "filtered", the interval kernel in front of the exact one (the
+//! default `paper_detect`, `truth`), and "unfiltered", the exact kernel alone
+//! (`paper_detect_unfiltered`, `truth_unfiltered`), and "both" is paper_detect + truth
+//! together, what one differential comparison costs the oracle.
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use polyguard_oracle::{

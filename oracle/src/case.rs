@@ -4,8 +4,10 @@
 use core::fmt;
 
 use crate::convert::{parse_rational, raw_from_f64, CaseF64};
-use crate::detect::{all_equal, detect_3d, detect_diff_2d, detect_same_2d};
+use crate::detect::{detect_2d, dispatch, slab_scene, Method};
 use crate::field::{ExactField, V2};
+use crate::kernel::run::{Filtered, Scene, Single};
+use crate::kernel::{Decided, Exact, Intervals, Iv, Kernel};
 
 /// A case that breaks a rule of spec/cases.md; `field` is the spec's field name.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -229,9 +231,22 @@ impl<F: ExactField> ExactCase<F> {
         })
     }
 
-    /// Whether all vertex velocities are equal (a statically shaped polygon).
-    pub fn is_static(&self) -> bool {
-        all_equal(&self.velocities)
+    /// Paper A §II.F and §III: the detector that decides the case ([`dispatch`]).
+    pub fn method(&self) -> Method {
+        dispatch(&Exact, self.vertical.is_some(), &self.velocities).decided()
+    }
+
+    /// The inputs of the 2D detectors: T, s, v, P, V, BUFF, F.
+    fn scene(&self) -> Scene<'_, F> {
+        Scene::new(
+            &self.lookahead,
+            &self.s,
+            &self.v,
+            &self.vertices,
+            &self.velocities,
+            &self.buff,
+            &self.fac,
+        )
     }
 }
 
@@ -240,66 +255,52 @@ impl<F: ExactField> ExactCase<F> {
 pub struct PaperAnswer {
     /// The paper's answer.
     pub detected: bool,
-    /// "detect_same_2d", "detect_diff_2d" or "detect_3d".
-    pub decided_by: &'static str,
+    /// The detector that gave it ([`Method::name`] prints it).
+    pub method: Method,
+}
+
+/// Paper A §II.F and §III: the case's detector, its 2D part run by `run` on the
+/// scene it applies to (the case's, or in 3D the one restarted at the slab window)
+/// with the 2D method.
+fn answer<F: ExactField>(
+    c: &ExactCase<F>,
+    run: impl FnOnce(Scene<'_, F>, Method) -> bool,
+) -> PaperAnswer {
+    let method = c.method();
+    let detected = match &c.vertical {
+        None => run(c.scene(), method),
+        Some(z) => {
+            let window = slab_scene(&Exact, &c.scene(), &z.sz, &z.vz, &z.bottom, &z.top, &z.vsp);
+            match window.decided() {
+                None => false,
+                Some(sc) => run(sc, dispatch(&Exact, false, &c.velocities).decided()),
+            }
+        }
+    };
+    PaperAnswer { detected, method }
 }
 
 /// Paper A §II.F and §III: detect_same_2D for equal vertex velocities,
 /// detect_diff_2D otherwise, detect_3D for a 3D case — all evaluated exactly.
 ///
-/// Every sign decision is first tried in interval arithmetic ([`crate::filter`])
-/// and made exactly only when the interval cannot certify it; the answer is
-/// identical to [`paper_detect_unfiltered`]'s (tests/filtered.rs checks it).
+/// Each paper-function call (one step of a detector, one edge_detect) runs in the
+/// interval kernel first ([`Intervals`]) and, when it abstains, in the exact kernel;
+/// the answer is identical to [`paper_detect_unfiltered`]'s.
 pub fn paper_detect<F: ExactField>(c: &ExactCase<F>) -> PaperAnswer {
-    crate::filter::paper_detect(c)
+    paper_detect_with(&Intervals, c)
 }
 
-/// [`paper_detect`] with exact arithmetic only (no floating filter).
+/// Paper A §II.F and §III: [`paper_detect`] with `first` in front of the exact kernel instead of
+/// [`Intervals`]: the answer is the exact one as long as `first`'s decisions are right.
+pub fn paper_detect_with<F: ExactField, K: Kernel<Iv>>(first: &K, c: &ExactCase<F>) -> PaperAnswer {
+    answer(c, |sc, method| {
+        detect_2d(&Filtered::new(first, sc), method).decided()
+    })
+}
+
+/// Paper A §II.F and §III: [`paper_detect`] computed by the exact kernel alone.
 pub fn paper_detect_unfiltered<F: ExactField>(c: &ExactCase<F>) -> PaperAnswer {
-    if let Some(z) = &c.vertical {
-        let detected = detect_3d(
-            &c.lookahead,
-            &c.s,
-            &c.v,
-            &z.sz,
-            &z.vz,
-            &c.vertices,
-            &c.velocities,
-            &z.bottom,
-            &z.top,
-            &z.vsp,
-            &c.buff,
-            &c.fac,
-        );
-        return PaperAnswer {
-            detected,
-            decided_by: "detect_3d",
-        };
-    }
-    if c.is_static() {
-        PaperAnswer {
-            detected: detect_same_2d(
-                &c.lookahead,
-                &c.s,
-                &c.v,
-                &c.vertices,
-                &c.velocities,
-                &c.buff,
-            ),
-            decided_by: "detect_same_2d",
-        }
-    } else {
-        PaperAnswer {
-            detected: detect_diff_2d(
-                &c.lookahead,
-                &c.s,
-                &c.v,
-                &c.vertices,
-                &c.velocities,
-                &c.fac,
-                &c.buff,
-            ),
-            decided_by: "detect_diff_2d",
-        }
-    }
+    answer(c, |sc, method| {
+        detect_2d(&Single::new(&Exact, sc), method).decided()
+    })
 }

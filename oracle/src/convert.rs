@@ -169,7 +169,7 @@ pub fn exact_points(ring: &[[f64; 2]]) -> Option<Vec<[num_rational::BigRational;
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::field::Q;
+    use crate::field::{Arith, Q};
     use num_bigint::BigInt;
 
     #[test]

@@ -5,12 +5,16 @@
 //! Module for module it mirrors the binary-float engine, but it is written from the
 //! paper alone. No binary floating point is used in any decision: inputs are
 //! converted exactly ([`convert`]), square roots are never taken (numbers
-//! (p + q√d)/r are ordered by sign analysis in [`qfield`]). The one other module
-//! that touches floats, [`filter`], only certifies signs with rigorous interval
-//! arithmetic in front of the exact decisions (as CGAL's filtered kernels do):
-//! when an interval cannot certify a sign, the exact computation decides, so every
+//! (p + q√d)/r are ordered by sign analysis in [`qfield`]).
+//!
+//! Each paper function is written once, generic over a [`kernel::Kernel`]: the
+//! exact kernel ([`Exact`]) decides every sign exactly; the interval kernel
+//! ([`kernel::Intervals`], the one other module that touches floats) certifies
+//! signs with rigorous interval arithmetic and abstains when it cannot. The
+//! default entry points run each paper-function call in intervals first and fall
+//! back to the exact kernel for that call (as CGAL's filtered kernels do), so every
 //! answer is the exact one ([`paper_detect_unfiltered`] and [`truth_unfiltered`]
-//! keep the exact-only path).
+//! run the exact kernel alone).
 //!
 //! ```
 //! use polyguard_oracle::{paper_detect, truth, CaseF64, ExactCase, Q, Truth};
@@ -33,7 +37,7 @@ pub mod contain;
 pub mod convert;
 pub mod detect;
 pub mod field;
-pub mod filter;
+pub mod kernel;
 pub mod proximity;
 pub mod qfield;
 pub mod quad;
@@ -42,10 +46,13 @@ pub mod truth;
 pub mod well_formed;
 
 pub use case::{
-    paper_detect, paper_detect_unfiltered, CaseStr, ExactCase, OracleError, PaperAnswer, Vertical,
+    paper_detect, paper_detect_unfiltered, paper_detect_with, CaseStr, ExactCase, OracleError,
+    PaperAnswer, Vertical,
 };
 pub use convert::CaseF64;
+pub use detect::{Method, Sign};
 #[cfg(feature = "rug")]
 pub use field::R;
-pub use field::{ExactField, Q, V2};
-pub use truth::{truth, truth_unfiltered, ExactTime, Truth};
+pub use field::{Arith, ExactField, Q, V2};
+pub use kernel::{Decided, Exact, Kernel};
+pub use truth::{truth, truth_unfiltered, truth_with, ExactTime, Truth};

@@ -139,6 +139,9 @@ impl<F: ExactField> Alg<F> {
 
     /// Compare with a rational number.
     pub fn cmp_rat(&self, x: &F) -> Ordering {
+        if x.is_zero_() {
+            return self.sign();
+        }
         let alpha = self.p.minus(&x.times(&self.r));
         sign1(&alpha, &self.q, &self.d)
     }
@@ -173,31 +176,35 @@ impl<F: ExactField> Alg<F> {
 pub fn quad_roots<F: ExactField>(a: &F, b: &F, c: &F) -> Vec<Alg<F>> {
     let four = F::from_i64(4);
     let disc = b.sq().minus(&four.times(a).times(c));
-    let two_a = a.plus(a);
-    let mb = b.negated();
     match disc.sign() {
         Ordering::Less => Vec::new(),
-        Ordering::Equal => Alg::new(mb, F::zero(), F::zero(), two_a)
+        Ordering::Equal => Alg::new(b.negated(), F::zero(), F::zero(), a.twice())
             .into_iter()
             .collect(),
-        Ordering::Greater => {
-            let lo_sign: i8 = if a.is_pos() { -1 } else { 1 };
-            let lo = Alg::new(
-                mb.clone(),
-                F::from_i64(lo_sign.into()),
-                disc.clone(),
-                two_a.clone(),
-            );
-            let hi = Alg::new(mb, F::from_i64((-lo_sign).into()), disc, two_a);
-            lo.into_iter().chain(hi).collect()
-        }
+        Ordering::Greater => simple_roots(a, b, disc).into_iter().flatten().collect(),
     }
+}
+
+/// The two roots (−b ∓ √disc)/(2a) of a·x² + b·x + c, in increasing order, from
+/// disc = b² − 4ac > 0; `None` when a = 0.
+pub fn simple_roots<F: ExactField>(a: &F, b: &F, disc: F) -> Option<[Alg<F>; 2]> {
+    let lo_sign = if a.is_pos() { -1 } else { 1 };
+    let two_a = a.twice();
+    let mb = b.negated();
+    let lo = Alg::new(
+        mb.clone(),
+        F::from_i64(lo_sign),
+        disc.clone(),
+        two_a.clone(),
+    )?;
+    let hi = Alg::new(mb, F::from_i64(-lo_sign), disc, two_a)?;
+    Some([lo, hi])
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::field::Q;
+    use crate::field::{Arith, Q};
 
     fn q(n: i64) -> Q {
         Q::from_i64(n)

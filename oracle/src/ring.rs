@@ -154,7 +154,7 @@ pub fn simple_ccw<F: ExactField>(p: &[V2<F>]) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::field::Q;
+    use crate::field::{Arith, Q};
 
     fn ring(xy: &[(i64, i64)]) -> Vec<V2<Q>> {
         xy.iter()

@@ -30,9 +30,15 @@ use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
 use crate::case::ExactCase;
-use crate::detect::{dot_nn_lin, slab_interval, Interval};
-use crate::field::{ExactField, V2};
-use crate::qfield::{quad_roots, Alg};
+use crate::detect::{dot_nn_lin, slab_window, Interval, Sign as Side};
+use crate::field::{Arith, ExactField, V2};
+use crate::kernel::interval::{enclose, Iv};
+use crate::kernel::run::{Filtered, Resolve, Scene, Single, Unit};
+use crate::kernel::{
+    all, all_of, and, any_of, certainly, not, or, Decided, Exact, Intervals, Kernel,
+};
+use crate::qfield::Alg;
+use crate::quad::quad;
 
 /// An exact time a + b·√d (a, b, d rational, d ≥ 0); b = 0 when it is rational.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -249,44 +255,32 @@ pub enum Truth {
 /// its two end positions and the moving segment in the box spanned by the four
 /// end positions of its ends (each coordinate is linear in t); disjoint boxes
 /// mean no contact.
-#[allow(clippy::too_many_arguments)]
-fn boxes_apart<F: ExactField>(
-    t: &F,
-    x0: &V2<F>,
-    xv: &V2<F>,
-    a0: &V2<F>,
-    av: &V2<F>,
-    b0: &V2<F>,
-    bv: &V2<F>,
-) -> bool {
+fn boxes_apart<N: Arith, K: Kernel<N>>(
+    k: &K,
+    t: &N,
+    x0: &V2<N>,
+    xv: &V2<N>,
+    a0: &V2<N>,
+    av: &V2<N>,
+    b0: &V2<N>,
+    bv: &V2<N>,
+) -> Result<bool, K::Abstain> {
     let x1 = x0.at(xv, t);
     let a1 = a0.at(av, t);
     let b1 = b0.at(bv, t);
-    let apart = |px: [&F; 2], ex: [&F; 4]| {
-        let (plo, phi) = if px[0] <= px[1] {
-            (px[0], px[1])
-        } else {
-            (px[1], px[0])
-        };
-        let elo = ex.iter().copied().min();
-        let ehi = ex.iter().copied().max();
-        match (elo, ehi) {
-            (Some(lo), Some(hi)) => phi < lo || plo > hi,
-            _ => false,
-        }
+    let apart = |px: [&N; 2], ex: [&N; 4]| {
+        let (plo, phi) = k.hull(&px);
+        let (elo, ehi) = k.hull(&ex);
+        or(k.lt(&phi, &elo), || k.lt(&ehi, &plo))
     };
-    apart([&x0.x, &x1.x], [&a0.x, &a1.x, &b0.x, &b1.x])
-        || apart([&x0.y, &x1.y], [&a0.y, &a1.y, &b0.y, &b1.y])
+    or(apart([&x0.x, &x1.x], [&a0.x, &a1.x, &b0.x, &b1.x]), || {
+        apart([&x0.y, &x1.y], [&a0.y, &a1.y, &b0.y, &b1.y])
+    })
 }
 
 /// g(t) = (q0 + t·q1) × (e0 + t·e1) = g2·t² + g1·t + g0, as [g2, g1, g0]
 /// (q = x − a, the point relative to the edge's start; e = b − a, the edge).
-pub(crate) fn contact_coeffs<F: ExactField>(
-    q0: &V2<F>,
-    q1: &V2<F>,
-    e0: &V2<F>,
-    e1: &V2<F>,
-) -> [F; 3] {
+fn contact_coeffs<N: Arith>(q0: &V2<N>, q1: &V2<N>, e0: &V2<N>, e1: &V2<N>) -> [N; 3] {
     let g2 = q1.cross(e1);
     let g1 = q0.cross(e1).plus(&q1.cross(e0));
     let g0 = q0.cross(e0);
@@ -294,137 +288,340 @@ pub(crate) fn contact_coeffs<F: ExactField>(
 }
 
 /// The real roots of g2·t² + g1·t + g0, not identically zero, in increasing
-/// order (the candidates of [`earliest_contact`]; the filter picks one by index).
-pub(crate) fn contact_roots<F: ExactField>(g2: &F, g1: &F, g0: &F) -> Vec<Alg<F>> {
-    if g2.is_zero_() {
-        if g1.is_zero_() {
-            Vec::new()
-        } else {
-            Alg::new(g0.negated(), F::zero(), F::zero(), g1.clone())
-                .into_iter()
-                .collect()
+/// order (the candidates of [`earliest_contact`], which names them by index).
+fn contact_roots<N: Arith, K: Kernel<N>>(
+    k: &K,
+    g2: &N,
+    g1: &N,
+    g0: &N,
+) -> Result<Vec<K::Root>, K::Abstain> {
+    if k.is_zero(g2)? {
+        if k.is_zero(g1)? {
+            return Ok(Vec::new());
         }
-    } else {
-        quad_roots(g2, g1, g0)
+        return Ok(k
+            .linear_root(g0.negated(), g1.clone())
+            .into_iter()
+            .collect());
     }
+    let disc = g1.sq().minus(&g2.twice().twice().times(g0));
+    Ok(match k.sign(&disc)? {
+        Ordering::Less => Vec::new(),
+        Ordering::Equal => k
+            .linear_root(g1.negated(), g2.twice())
+            .into_iter()
+            .collect(),
+        Ordering::Greater => k.two_roots(g2, g1, disc).into_iter().flatten().collect(),
+    })
+}
+
+/// Which root a contact time is: how the exact kernel rebuilds a contact that
+/// another kernel found.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RootId {
+    /// The k-th real root (from 0, in increasing order) of the contact quadratic
+    /// g(t) = (x − a) × (b − a).
+    Index(usize),
+    /// The start of a stretch where the point slides along the edge (g ≡ 0).
+    Sliding,
+}
+
+/// The earliest time a moving point lies on a moving segment, and which root it is.
+#[derive(Clone, Debug)]
+pub struct Contact<R> {
+    /// The time, in the kernel's root type.
+    pub time: R,
+    /// Which root it is.
+    pub root: RootId,
 }
 
 /// The earliest t ∈ [0, T] at which the point x0 + t·xv lies on the closed
-/// segment from a0 + t·av to b0 + t·bv, if any (exact; see the module doc).
-#[allow(clippy::too_many_arguments)]
-pub fn earliest_contact<F: ExactField>(
-    t: &F,
-    x0: &V2<F>,
-    xv: &V2<F>,
-    a0: &V2<F>,
-    av: &V2<F>,
-    b0: &V2<F>,
-    bv: &V2<F>,
-) -> Option<Alg<F>> {
-    if boxes_apart(t, x0, xv, a0, av, b0, bv) {
-        return None;
+/// segment from a0 + t·av to b0 + t·bv, if any (see the module doc).
+pub fn earliest_contact<N: Arith, K: Kernel<N>>(
+    k: &K,
+    t: &N,
+    x0: &V2<N>,
+    xv: &V2<N>,
+    a0: &V2<N>,
+    av: &V2<N>,
+    b0: &V2<N>,
+    bv: &V2<N>,
+) -> Result<Option<Contact<K::Root>>, K::Abstain> {
+    if certainly(boxes_apart(k, t, x0, xv, a0, av, b0, bv)) {
+        return Ok(None);
     }
     let q0 = x0.minus(a0);
     let q1 = xv.minus(av);
     let e0 = b0.minus(a0);
     let e1 = bv.minus(av);
     let [g2, g1, g0] = contact_coeffs(&q0, &q1, &e0, &e1);
+    // g keeps one strict sign on [0, T] when its Bernstein coefficients there,
+    // g(0), g(0) + g'(0)·T/2 and g(T), share it: no root, no contact.
+    let bern = [
+        g0.clone(),
+        g0.plus(&g1.times(t).half()),
+        quad(&g2, &g1, &g0, t),
+    ];
+    let one_sign = or(all(bern.iter().map(|x| k.is_pos(x))), || {
+        all(bern.iter().map(|x| k.is_neg(x)))
+    });
+    if certainly(one_sign) {
+        return Ok(None);
+    }
     let r0 = e0.minus(&q0);
     let r1 = e1.minus(&q1);
-    if g2.is_zero_() && g1.is_zero_() && g0.is_zero_() {
-        // Always on the edge's line: {h1 ≥ 0} ∩ {h2 ≥ 0}, each an exact union
-        // of two intervals of [0, T]; the answer is the least common point.
-        let s1 = [-1i8, 1].map(|sg| dot_nn_lin(t, &q0, &q1, &e0, &e1, sg));
-        let s2 = [-1i8, 1].map(|sg| dot_nn_lin(t, &r0, &r1, &e0, &e1, sg));
-        let mut best: Option<Alg<F>> = None;
-        for i in &s1 {
-            for j in &s2 {
-                if let (Interval::Closed { lb: l1, ub: u1 }, Interval::Closed { lb: l2, ub: u2 }) =
-                    (i, j)
-                {
-                    let lb = if l1.cmp_alg(l2) == Ordering::Less {
-                        l2
-                    } else {
-                        l1
+    if all_of!(k.is_zero(&g2), k.is_zero(&g1), k.is_zero(&g0))? {
+        return sliding(k, t, [&q0, &q1], [&r0, &r1], &e0, &e1);
+    }
+    let roots = contact_roots(k, &g2, &g1, &g0)?;
+    // h1 = (q0 + t q1)·(e0 + t e1) and h2 = (r0 + t r1)·(e0 + t e1) as quadratics.
+    let h = |w: &V2<N>, v: &V2<N>| [v.dot(&e1), w.dot(&e1).plus(&v.dot(&e0)), w.dot(&e0)];
+    let [a1, b1, c1] = h(&q0, &q1);
+    let [a2, b2, c2] = h(&r0, &r1);
+    let (zero, end) = (k.root(&N::zero()), k.root(t));
+    for (i, r) in roots.into_iter().enumerate() {
+        let on = all_of!(
+            not(k.root_lt(&r, &zero)),
+            not(k.root_lt(&end, &r)),
+            not(k.quad_neg_at(&r, &a1, &b1, &c1)),
+            not(k.quad_neg_at(&r, &a2, &b2, &c2)),
+        )?;
+        if on {
+            return Ok(Some(Contact {
+                time: r,
+                root: RootId::Index(i),
+            }));
+        }
+    }
+    Ok(None)
+}
+
+/// The earliest contact when the point always is on the edge's line (g ≡ 0):
+/// {h1 ≥ 0} ∩ {h2 ≥ 0}, each an exact union of two intervals of [0, T]
+/// (paper A §II.I's dot_nn_lin); the answer is their least common point.
+fn sliding<N: Arith, K: Kernel<N>>(
+    k: &K,
+    t: &N,
+    [q0, q1]: [&V2<N>; 2],
+    [r0, r1]: [&V2<N>; 2],
+    e0: &V2<N>,
+    e1: &V2<N>,
+) -> Result<Option<Contact<K::Root>>, K::Abstain> {
+    let mut s1 = Vec::with_capacity(2);
+    let mut s2 = Vec::with_capacity(2);
+    for side in Side::BOTH {
+        s1.push(dot_nn_lin(k, t, q0, q1, e0, e1, side)?);
+        s2.push(dot_nn_lin(k, t, r0, r1, e0, e1, side)?);
+    }
+    let mut best: Option<K::Root> = None;
+    for i in &s1 {
+        for j in &s2 {
+            if let (Interval::Closed { lb: l1, ub: u1 }, Interval::Closed { lb: l2, ub: u2 }) =
+                (i, j)
+            {
+                let lb = if k.root_lt(l1, l2)? { l2 } else { l1 };
+                let ub = if k.root_lt(u1, u2)? { u1 } else { u2 };
+                if !k.root_lt(ub, lb)? {
+                    let better = match &best {
+                        None => true,
+                        Some(b) => k.root_lt(lb, b)?,
                     };
-                    let ub = if u1.cmp_alg(u2) == Ordering::Less {
-                        u1
-                    } else {
-                        u2
-                    };
-                    if lb.cmp_alg(ub) != Ordering::Greater {
-                        let better = match &best {
-                            None => true,
-                            Some(b) => lb.cmp_alg(b) == Ordering::Less,
-                        };
-                        if better {
-                            best = Some(lb.clone());
-                        }
+                    if better {
+                        best = Some(lb.clone());
                     }
                 }
             }
         }
-        return best;
     }
-    let roots = contact_roots(&g2, &g1, &g0);
-    // h1 = (q0 + t q1)·(e0 + t e1) and h2 = (r0 + t r1)·(e0 + t e1) as quadratics.
-    let h = |w: &V2<F>, v: &V2<F>| {
-        let a = v.dot(&e1);
-        let b = w.dot(&e1).plus(&v.dot(&e0));
-        let c = w.dot(&e0);
-        (a, b, c)
-    };
-    let (a1, b1, c1) = h(&q0, &q1);
-    let (a2, b2, c2) = h(&r0, &r1);
-    roots.into_iter().find(|r| {
-        r.sign() != Ordering::Less
-            && r.cmp_rat(t) != Ordering::Greater
-            && r.quad_sign(&a1, &b1, &c1) != Ordering::Less
-            && r.quad_sign(&a2, &b2, &c2) != Ordering::Less
-    })
+    Ok(best.map(|time| Contact {
+        time,
+        root: RootId::Sliding,
+    }))
 }
 
-/// Whether the closed segments a b and c d meet (exact orientation tests).
-pub fn segments_intersect<F: ExactField>(a: &V2<F>, b: &V2<F>, c: &V2<F>, d: &V2<F>) -> bool {
-    let on = |p: &V2<F>, q: &V2<F>, x: &V2<F>| {
+/// Whether the closed segments a b and c d meet (orientation tests).
+pub fn segments_intersect<N: Arith, K: Kernel<N>>(
+    k: &K,
+    a: &V2<N>,
+    b: &V2<N>,
+    c: &V2<N>,
+    d: &V2<N>,
+) -> Result<bool, K::Abstain> {
+    // Disjoint bounding boxes: certainly apart (a consequence of the tests below).
+    let apart = |p: &N, q: &N, r: &N, s: &N| {
+        let (plo, phi) = k.hull(&[p, q]);
+        let (rlo, rhi) = k.hull(&[r, s]);
+        or(k.lt(&phi, &rlo), || k.lt(&rhi, &plo))
+    };
+    if certainly(or(apart(&a.x, &b.x, &c.x, &d.x), || {
+        apart(&a.y, &b.y, &c.y, &d.y)
+    })) {
+        return Ok(false);
+    }
+    let on = |p: &V2<N>, q: &V2<N>, x: &V2<N>| {
         let e = q.minus(p);
-        e.cross(&x.minus(p)).is_zero_()
-            && !x.minus(p).dot(&e).is_neg()
-            && !q.minus(x).dot(&e).is_neg()
+        all_of!(
+            k.is_zero(&e.cross(&x.minus(p))),
+            not(k.is_neg(&x.minus(p).dot(&e))),
+            not(k.is_neg(&q.minus(x).dot(&e))),
+        )
     };
-    let o1 = b.minus(a).cross(&c.minus(a)).sign();
-    let o2 = b.minus(a).cross(&d.minus(a)).sign();
-    let o3 = d.minus(c).cross(&a.minus(c)).sign();
-    let o4 = d.minus(c).cross(&b.minus(c)).sign();
-    let proper = |x: Ordering, y: Ordering| {
-        (x == Ordering::Greater && y == Ordering::Less)
-            || (x == Ordering::Less && y == Ordering::Greater)
+    let side = |p: &V2<N>, q: &V2<N>, x: &V2<N>| k.sign(&q.minus(p).cross(&x.minus(p)));
+    // x and y strictly on opposite sides.
+    let proper = |x: Result<Ordering, K::Abstain>, y: Result<Ordering, K::Abstain>| match (x, y) {
+        (Ok(Ordering::Equal), _) | (_, Ok(Ordering::Equal)) => Ok(false),
+        (Ok(x), Ok(y)) => Ok(x != y),
+        (Err(e), _) | (_, Err(e)) => Err(e),
     };
-    (proper(o1, o2) && proper(o3, o4)) || on(a, b, c) || on(a, b, d) || on(c, d, a) || on(c, d, b)
+    any_of!(
+        and(proper(side(a, b, c), side(a, b, d)), || {
+            proper(side(c, d, a), side(c, d, b))
+        }),
+        on(a, b, c),
+        on(a, b, d),
+        on(c, d, a),
+        on(c, d, b),
+    )
 }
 
 /// Whether s lies in the closed polygon P (on an edge, or winding number ≠ 0).
-pub fn in_closed_polygon<F: ExactField>(poly: &[V2<F>], s: &V2<F>) -> bool {
-    let n = poly.len();
+pub fn in_closed_polygon<N: Arith, K: Kernel<N>>(
+    k: &K,
+    p: &[V2<N>],
+    s: &V2<N>,
+) -> Result<bool, K::Abstain> {
+    let n = p.len();
     let mut winding: i64 = 0;
     for i in 0..n {
-        let a = &poly[i];
-        let b = &poly[(i + 1) % n];
+        let a = &p[i];
+        let b = &p[(i + 1) % n];
         let e = b.minus(a);
         let q = s.minus(a);
         let o = e.cross(&q);
-        if o.is_zero_() && !q.dot(&e).is_neg() && !b.minus(s).dot(&e).is_neg() {
-            return true;
+        let on_edge = all_of!(
+            k.is_zero(&o),
+            not(k.is_neg(&q.dot(&e))),
+            not(k.is_neg(&b.minus(s).dot(&e))),
+        )?;
+        if on_edge {
+            return Ok(true);
         }
-        if a.y <= s.y {
-            if b.y > s.y && o.is_pos() {
+        if k.le(&a.y, &s.y)? {
+            if and(k.lt(&s.y, &b.y), || k.is_pos(&o))? {
                 winding += 1;
             }
-        } else if b.y <= s.y && o.is_neg() {
+        } else if and(k.le(&b.y, &s.y), || k.is_neg(&o))? {
             winding -= 1;
         }
     }
-    winding != 0
+    Ok(winding != 0)
+}
+
+/// One sign test of the truth on its scene (the grain of the fallback).
+#[derive(Clone, Copy, Debug)]
+enum Check {
+    /// The edges from vertices i and m meet.
+    Cross(usize, usize),
+    /// s is in the closed polygon.
+    Inside,
+}
+
+impl Unit for Check {
+    type Out<R> = bool;
+
+    fn run<N: Arith, K: Kernel<N>>(&self, k: &K, sc: &Scene<'_, N>) -> Result<bool, K::Abstain> {
+        let p = &sc.p;
+        let next = |i: usize| (i + 1) % p.len();
+        match *self {
+            Check::Cross(i, m) => segments_intersect(k, &p[i], &p[next(i)], &p[m], &p[next(m)]),
+            Check::Inside => in_closed_polygon(k, p, &sc.s),
+        }
+    }
+
+    fn map_root<A, B>(out: bool, _: impl FnMut(A) -> B) -> bool {
+        out
+    }
+}
+
+/// What meets the edge in a contact test.
+#[derive(Clone, Copy, Debug)]
+enum Mover {
+    /// The point s.
+    Point,
+    /// The vertex of this index.
+    Vertex(usize),
+}
+
+/// One contact test: the earliest time the mover lies on the edge from vertex
+/// `edge` to the next (the grain of the fallback).
+#[derive(Clone, Copy, Debug)]
+struct Touch {
+    mover: Mover,
+    edge: usize,
+}
+
+impl Touch {
+    /// x0, xv, a0, av, b0, bv of [`earliest_contact`] in the scene.
+    fn parts<'s, N: Clone>(&self, sc: &'s Scene<'_, N>) -> [&'s V2<N>; 6] {
+        let (i, j) = (self.edge, (self.edge + 1) % sc.p.len());
+        let (x0, xv) = match self.mover {
+            Mover::Point => (&*sc.s, &*sc.v),
+            Mover::Vertex(m) => (&sc.p[m], &sc.vels[m]),
+        };
+        [x0, xv, &sc.p[i], &sc.vels[i], &sc.p[j], &sc.vels[j]]
+    }
+
+    /// The exact root `root` of this test's contact quadratic in the exact scene
+    /// (the root another kernel found); the exact test's own answer if that root
+    /// does not exist.
+    fn exact_root<F: ExactField>(&self, sc: &Scene<'_, F>, root: RootId) -> Option<Alg<F>> {
+        let [x0, xv, a0, av, b0, bv] = self.parts(sc);
+        if let RootId::Index(i) = root {
+            let [g2, g1, g0] =
+                contact_coeffs(&x0.minus(a0), &xv.minus(av), &b0.minus(a0), &bv.minus(av));
+            if let Some(r) = contact_roots(&Exact, &g2, &g1, &g0)
+                .decided()
+                .into_iter()
+                .nth(i)
+            {
+                return Some(r);
+            }
+        }
+        let found = earliest_contact(&Exact, &*sc.t, x0, xv, a0, av, b0, bv).decided();
+        found.map(|c| c.time)
+    }
+}
+
+impl Unit for Touch {
+    type Out<R> = Option<Contact<R>>;
+
+    fn run<N: Arith, K: Kernel<N>>(
+        &self,
+        k: &K,
+        sc: &Scene<'_, N>,
+    ) -> Result<Option<Contact<K::Root>>, K::Abstain> {
+        let [x0, xv, a0, av, b0, bv] = self.parts(sc);
+        earliest_contact(k, &sc.t, x0, xv, a0, av, b0, bv)
+    }
+
+    fn map_root<A, B>(out: Option<Contact<A>>, mut f: impl FnMut(A) -> B) -> Option<Contact<B>> {
+        out.map(|c| Contact {
+            time: f(c.time),
+            root: c.root,
+        })
+    }
+}
+
+/// The exact time of a contact found by the runner.
+fn exact_time<F: ExactField, R: Resolve<F>>(
+    r: &R,
+    u: &Touch,
+    c: &Contact<R::Root>,
+) -> Option<Alg<F>> {
+    match r.as_exact(&c.time) {
+        Some(a) => Some(a.clone()),
+        None => u.exact_root(r.exact_scene(), c.root),
+    }
 }
 
 pub(crate) fn min_alg<F: ExactField>(best: Option<Alg<F>>, x: Alg<F>) -> Option<Alg<F>> {
@@ -434,120 +631,167 @@ pub(crate) fn min_alg<F: ExactField>(best: Option<Alg<F>>, x: Alg<F>) -> Option<
     }
 }
 
-/// The ground truth of a case: `Enters` with the exact first entry time,
-/// `Misses`, or `Undefined` when the polygon is not simple during the window.
-///
-/// Every sign decision is first tried in interval arithmetic ([`crate::filter`])
-/// and made exactly only when the interval cannot certify it; the answer is
-/// identical to [`truth_unfiltered`]'s (tests/filtered.rs checks it).
-pub fn truth<F: ExactField>(c: &ExactCase<F>) -> Truth {
-    crate::filter::truth(c)
-}
-
 /// The window [t0, t1] of a case (the slab window of paper A §III in 3D,
 /// [0, T] in 2D), `None` when the point never is in the slab.
-pub(crate) fn window<F: ExactField>(c: &ExactCase<F>) -> Option<(F, F)> {
+fn window<F: ExactField>(c: &ExactCase<F>) -> Option<(F, F)> {
     match &c.vertical {
         None => Some((F::zero(), c.lookahead.clone())),
-        Some(z) => slab_interval(&c.lookahead, &z.sz, &z.vz, &z.bottom, &z.top, &z.vsp),
+        Some(z) => slab_window(
+            &Exact,
+            &c.lookahead,
+            &z.sz,
+            &z.vz,
+            &z.bottom,
+            &z.top,
+            &z.vsp,
+        )
+        .decided(),
     }
 }
 
-/// The answer for a case whose sizes are wrong.
-pub(crate) fn bad_lengths() -> Truth {
-    Truth::Undefined {
-        reason: "fewer than 3 vertices or velocities of the wrong length".to_string(),
-    }
-}
-
-/// The answer when edges i-(i+1) and k-(k+1) meet at the window's start.
-pub(crate) fn crossing_at_start(n: usize, i: usize, k: usize) -> Truth {
+/// The answer when edges i-(i+1) and m-(m+1) meet at the window's start.
+fn crossing_at_start(n: usize, i: usize, m: usize) -> Truth {
     Truth::Undefined {
         reason: format!(
-            "the polygon is not simple: edges {i}-{} and {k}-{} cross at the window's start",
+            "the polygon is not simple: edges {i}-{} and {m}-{} cross at the window's start",
             (i + 1) % n,
-            (k + 1) % n
+            (m + 1) % n
         ),
     }
 }
 
-/// The answer when vertex k meets edge i-j at the shifted time tc + t0.
-pub(crate) fn vertex_meets_edge<F: ExactField>(
-    k: usize,
-    i: usize,
-    j: usize,
-    tc: &Alg<F>,
-    t0: &F,
-) -> Truth {
+/// The answer when vertex m meets edge i-j at the shifted time tc + t0.
+fn vertex_meets_edge<F: ExactField>(m: usize, i: usize, j: usize, tc: &Alg<F>, t0: &F) -> Truth {
     let when = ExactTime::from_alg(&tc.shifted(t0));
     Truth::Undefined {
         reason: format!(
-            "the polygon is not simple: vertex {k} meets edge {i}-{j} at t = {}",
+            "the polygon is not simple: vertex {m} meets edge {i}-{j} at t = {}",
             when.to_decimal_string(9)
         ),
     }
 }
 
-/// The ground truth computed with exact arithmetic only (no floating filter).
-pub fn truth_unfiltered<F: ExactField>(c: &ExactCase<F>) -> Truth {
-    let Some((t0, t1)) = window(c) else {
-        return Truth::Misses;
-    };
-    let tw = t1.minus(&t0);
-    let s = c.s.at(&c.v, &t0);
-    let poly: Vec<V2<F>> = c
-        .vertices
-        .iter()
-        .zip(&c.velocities)
-        .map(|(p, w)| p.at(w, &t0))
-        .collect();
-    let vels = &c.velocities;
-    let n = poly.len();
-    if n < 3 || vels.len() != n {
-        return bad_lengths();
+/// The truth on the scene restarted at the window's start t0 (see the module
+/// doc), each sign test and contact test run by `r`.
+fn ground_truth<F: ExactField, R: Resolve<F>>(r: &R, t0: &F) -> Truth {
+    let n = r.count();
+    if n < 3 {
+        return Truth::Undefined {
+            reason: "fewer than 3 vertices or velocities of the wrong length".to_string(),
+        };
     }
     // Simplicity at the window's start: non-adjacent edges do not meet
     // (vertices on non-incident edges are caught by the contact test below).
     for i in 0..n {
-        for k in (i + 2)..n {
-            if i == 0 && k == n - 1 {
+        for m in (i + 2)..n {
+            if i == 0 && m == n - 1 {
                 continue;
             }
-            if segments_intersect(&poly[i], &poly[(i + 1) % n], &poly[k], &poly[(k + 1) % n]) {
-                return crossing_at_start(n, i, k);
+            if r.run(&Check::Cross(i, m)).decided() {
+                return crossing_at_start(n, i, m);
             }
         }
     }
     // Simplicity on the window: no vertex ever meets a non-incident edge.
     for i in 0..n {
         let j = (i + 1) % n;
-        for k in 0..n {
-            if k == i || k == j {
+        for m in 0..n {
+            if m == i || m == j {
                 continue;
             }
-            if let Some(tc) = earliest_contact(
-                &tw, &poly[k], &vels[k], &poly[i], &vels[i], &poly[j], &vels[j],
-            ) {
-                return vertex_meets_edge(k, i, j, &tc, &t0);
+            let u = Touch {
+                mover: Mover::Vertex(m),
+                edge: i,
+            };
+            if let Some(c) = r.run(&u).decided() {
+                if let Some(tc) = exact_time(r, &u, &c) {
+                    return vertex_meets_edge(m, i, j, &tc, t0);
+                }
             }
         }
     }
-    if in_closed_polygon(&poly, &s) {
+    if r.run(&Check::Inside).decided() {
         return Truth::Enters {
             entry_time: ExactTime::rational(t0.to_big()),
         };
     }
+    let found: Vec<(Touch, Contact<R::Root>)> = (0..n)
+        .filter_map(|edge| {
+            let u = Touch {
+                mover: Mover::Point,
+                edge,
+            };
+            r.run(&u).decided().map(|c| (u, c))
+        })
+        .collect();
     let mut best: Option<Alg<F>> = None;
-    for i in 0..n {
-        let j = (i + 1) % n;
-        if let Some(tc) = earliest_contact(&tw, &s, &c.v, &poly[i], &vels[i], &poly[j], &vels[j]) {
+    for (i, (u, c)) in found.iter().enumerate() {
+        // A contact certainly later than another cannot be the earliest, nor tie with it.
+        let mut others = found.iter().enumerate().filter(|&(m, _)| m != i);
+        if others.any(|(_, (_, d))| r.certainly_before(&d.time, &c.time)) {
+            continue;
+        }
+        if let Some(tc) = exact_time(r, u, c) {
             best = min_alg(best, tc);
         }
     }
     match best {
         Some(tc) => Truth::Enters {
-            entry_time: ExactTime::from_alg(&tc.shifted(&t0)),
+            entry_time: ExactTime::from_alg(&tc.shifted(t0)),
         },
         None => Truth::Misses,
     }
+}
+
+/// The case's scene over its window, restarted at the window's start t0, handed to
+/// `run` with t0 and the window's length (`None` when the point never is in the slab).
+fn on_window<F: ExactField>(
+    c: &ExactCase<F>,
+    run: impl FnOnce(Scene<'_, F>, &F, &F) -> Truth,
+) -> Truth {
+    let Some((t0, t1)) = window(c) else {
+        return Truth::Misses;
+    };
+    let tw = t1.minus(&t0);
+    let sc = Scene::new(&tw, &c.s, &c.v, &c.vertices, &c.velocities, &c.buff, &c.fac);
+    run(sc, &t0, &tw)
+}
+
+/// The ground truth of a case: `Enters` with the exact first entry time,
+/// `Misses`, or `Undefined` when the polygon is not simple during the window.
+///
+/// Every sign test and contact test runs in the interval kernel first
+/// ([`Intervals`]) and, when it abstains, in the exact kernel; the answer is
+/// identical to [`truth_unfiltered`]'s, entry time representation included.
+pub fn truth<F: ExactField>(c: &ExactCase<F>) -> Truth {
+    truth_with(&Intervals, c)
+}
+
+/// [`truth`] with `first` in front of the exact kernel instead of [`Intervals`]:
+/// the answer is the exact one as long as `first`'s decisions are right.
+pub fn truth_with<F: ExactField, K: Kernel<Iv>>(first: &K, c: &ExactCase<F>) -> Truth {
+    on_window(c, |sc, t0, tw| {
+        if t0.is_zero_() {
+            return ground_truth(&Filtered::new(first, sc), t0);
+        }
+        // The restarted enclosures, computed from those of the case.
+        let e = sc.enclosed();
+        let iv = e.shifted(&enclose(t0), *e.t);
+        ground_truth(
+            &Filtered::with_enclosures(first, sc.shifted(t0, tw.clone()), iv),
+            t0,
+        )
+    })
+}
+
+/// The ground truth computed by the exact kernel alone.
+pub fn truth_unfiltered<F: ExactField>(c: &ExactCase<F>) -> Truth {
+    on_window(c, |sc, t0, tw| {
+        let sc = if t0.is_zero_() {
+            sc
+        } else {
+            sc.shifted(t0, tw.clone())
+        };
+        ground_truth(&Single::new(&Exact, sc), t0)
+    })
 }

@@ -3,6 +3,7 @@
 use core::cmp::Ordering;
 
 use crate::field::{ExactField, V2};
+use crate::kernel::{Decided, Exact};
 use crate::proximity::segments_close;
 use crate::qfield::sign1;
 
@@ -18,13 +19,8 @@ pub fn sharp_corner<F: ExactField>(g: &V2<F>, h: &V2<F>, cos_kappa: &F) -> bool 
 /// Paper A §II.J: the extremal vertex, the lexicographic minimum (least x, then
 /// least y). The paper's "p_jx ≥ p_ix and p_jy > p_iy for every other j" need
 /// not exist; the lexicographic minimum always does and is a convex-hull vertex.
-pub fn extremal_vertex<F: ExactField>(poly: &[V2<F>]) -> Option<usize> {
-    (0..poly.len()).min_by(|&i, &j| {
-        poly[i]
-            .x
-            .cmp(&poly[j].x)
-            .then_with(|| poly[i].y.cmp(&poly[j].y))
-    })
+pub fn extremal_vertex<F: ExactField>(p: &[V2<F>]) -> Option<usize> {
+    (0..p.len()).min_by(|&i, &j| p[i].x.cmp(&p[j].x).then_with(|| p[i].y.cmp(&p[j].y)))
 }
 
 /// Which rule of paper A §II.J a polygon breaks (vertex indices from 0); the engine's
@@ -69,14 +65,14 @@ impl core::fmt::Display for Fault {
 }
 
 /// Paper A §II.J: well_formed(P, BUFF) with the angle threshold given as cos κ.
-pub fn well_formed<F: ExactField>(poly: &[V2<F>], buff: &F, cos_kappa: &F) -> bool {
-    poly.len() >= 3 && well_formed_fault(poly, buff, cos_kappa).is_none()
+pub fn well_formed<F: ExactField>(p: &[V2<F>], buff: &F, cos_kappa: &F) -> bool {
+    p.len() >= 3 && well_formed_fault(p, buff, cos_kappa).is_none()
 }
 
 /// Paper A §II.J: the first rule broken, in the paper's order (`None`: well formed, or
 /// fewer than 3 vertices).
-pub fn well_formed_fault<F: ExactField>(poly: &[V2<F>], buff: &F, cos_kappa: &F) -> Option<Fault> {
-    let n = poly.len();
+pub fn well_formed_fault<F: ExactField>(p: &[V2<F>], buff: &F, cos_kappa: &F) -> Option<Fault> {
+    let n = p.len();
     if n < 3 {
         return None;
     }
@@ -84,7 +80,7 @@ pub fn well_formed_fault<F: ExactField>(poly: &[V2<F>], buff: &F, cos_kappa: &F)
     let four_b2 = F::from_i64(4).times(&buff.sq());
     for i in 0..n {
         for j in (i + 1)..n {
-            if poly[i].minus(&poly[j]).sq() < four_b2 {
+            if p[i].minus(&p[j]).sq() < four_b2 {
                 return Some(Fault::CloseVertices(i, j));
             }
         }
@@ -96,9 +92,9 @@ pub fn well_formed_fault<F: ExactField>(poly: &[V2<F>], buff: &F, cos_kappa: &F)
             if adjacent {
                 continue;
             }
-            let (pi, pj) = (&poly[i], &poly[(i + 1) % n]);
-            let (pq, pk) = (&poly[k], &poly[(k + 1) % n]);
-            if segments_close(pi, pj, pq, pk, buff) {
+            let (pi, pj) = (&p[i], &p[(i + 1) % n]);
+            let (pq, pk) = (&p[k], &p[(k + 1) % n]);
+            if segments_close(&Exact, pi, pj, pq, pk, buff).decided() {
                 return Some(Fault::CloseEdges(i, k));
             }
         }
@@ -107,17 +103,17 @@ pub fn well_formed_fault<F: ExactField>(poly: &[V2<F>], buff: &F, cos_kappa: &F)
     for j in 0..n {
         let i = (j + n - 1) % n;
         let k = (j + 1) % n;
-        let g = poly[j].minus(&poly[i]);
-        let h = poly[k].minus(&poly[j]);
+        let g = p[j].minus(&p[i]);
+        let h = p[k].minus(&p[j]);
         if sharp_corner(&g, &h, cos_kappa) {
             return Some(Fault::SharpCorner(j));
         }
     }
     // Step 4: a left turn at the extremal vertex (counterclockwise order):
     // fail when (p_i − p_prev)·(p_next − p_i)^⊥ ≤ 0.
-    let i = extremal_vertex(poly)?;
-    let prev = &poly[(i + n - 1) % n];
-    let next = &poly[(i + 1) % n];
-    let turn = poly[i].minus(prev).cross(&next.minus(&poly[i]));
+    let i = extremal_vertex(p)?;
+    let prev = &p[(i + n - 1) % n];
+    let next = &p[(i + 1) % n];
+    let turn = p[i].minus(prev).cross(&next.minus(&p[i]));
     (!turn.is_pos()).then_some(Fault::TurnsRight(i))
 }

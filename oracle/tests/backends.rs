@@ -6,12 +6,13 @@ mod common;
 use proptest::prelude::*;
 
 use common::{cases, gen_case};
-use polyguard_oracle::detect::{dot_nn_lin, Interval};
+use polyguard_oracle::detect::{dot_nn_lin, Interval, Sign};
+use polyguard_oracle::qfield::Alg;
 use polyguard_oracle::truth::ExactTime;
 use polyguard_oracle::well_formed::well_formed;
-use polyguard_oracle::{paper_detect, truth, ExactField, Q, R, V2};
+use polyguard_oracle::{paper_detect, truth, Arith, Decided, Exact, ExactField, Q, R, V2};
 
-fn iv_key<F: ExactField>(i: &Interval<F>) -> Option<(ExactTime, ExactTime)> {
+fn iv_key<F: ExactField>(i: &Interval<Alg<F>>) -> Option<(ExactTime, ExactTime)> {
     match i {
         Interval::Empty => None,
         Interval::Closed { lb, ub } => Some((ExactTime::from_alg(lb), ExactTime::from_alg(ub))),
@@ -30,20 +31,20 @@ proptest! {
         if let (Ok(a), Ok(b)) = (a, b) {
             prop_assert_eq!(paper_detect(&a), paper_detect(&b));
             prop_assert_eq!(truth(&a), truth(&b));
-            let k = Q::from_i64(99).quotient(&Q::from_i64(100)).unwrap_or_else(<Q as ExactField>::one);
-            let kr = R::from_i64(99).quotient(&R::from_i64(100)).unwrap_or_else(<R as ExactField>::one);
+            let k = Q::from_i64(99).quotient(&Q::from_i64(100)).unwrap_or_else(<Q as Arith>::one);
+            let kr = R::from_i64(99).quotient(&R::from_i64(100)).unwrap_or_else(<R as Arith>::one);
             prop_assert_eq!(well_formed(&a.vertices, &a.buff, &k), well_formed(&b.vertices, &b.buff, &kr));
         }
     }
 
     #[test]
-    fn same_dot_nn_lin(c in proptest::collection::vec(-50i64..50, 9), sigma in prop_oneof![Just(-1i8), Just(1i8)]) {
+    fn same_dot_nn_lin(c in proptest::collection::vec(-50i64..50, 9), sigma in prop_oneof![Just(Sign::Neg), Just(Sign::Pos)]) {
         let vq = |i: usize| V2::new(Q::from_i64(c[i]), Q::from_i64(c[i + 1]));
         let vr = |i: usize| V2::new(R::from_i64(c[i]), R::from_i64(c[i + 1]));
         let tq = Q::from_i64(c[8].abs());
         let tr = R::from_i64(c[8].abs());
-        let a = dot_nn_lin(&tq, &vq(0), &vq(2), &vq(4), &vq(6), sigma);
-        let b = dot_nn_lin(&tr, &vr(0), &vr(2), &vr(4), &vr(6), sigma);
+        let a = dot_nn_lin(&Exact, &tq, &vq(0), &vq(2), &vq(4), &vq(6), sigma).decided();
+        let b = dot_nn_lin(&Exact, &tr, &vr(0), &vr(2), &vr(4), &vr(6), sigma).decided();
         prop_assert_eq!(iv_key(&a), iv_key(&b));
     }
 }

@@ -1,20 +1,18 @@
 //! No binary floating point in any decision: every source file of the oracle
-//! except src/convert.rs must be free of the tokens for the two float types.
+//! (src/ and all its subdirectories) except the two listed below must be free of
+//! the tokens for the two float types.
 //!
-//! Two exceptions are listed, not silently skipped:
-//! - src/filter.rs, the floating filter in front of the exact path. Its floats
-//!   only *certify* signs with rigorous interval arithmetic (outward rounding on
-//!   every operation, enclosures of the inputs checked exactly); whenever an
-//!   interval cannot certify a sign, the exact code decides. Every decision thus
-//!   remains exact, and tests/filtered.rs checks that the filtered and unfiltered
-//!   oracles give identical answers.
-//! - src/earth_ref.rs, paper B's MPFR reference for Mercator and rhumb lines
-//!   (feature rug). It takes the engine's f64 inputs and measures the engine's f64
-//!   outputs in ulps against 256-bit MPFR values: f64 is its interface, and it
-//!   takes no decision of paper A. (Paper B's exact geometry, geom.rs, reads floats
-//!   only through convert.rs.)
+//! The exceptions are listed, not silently skipped:
+//! - src/convert.rs, the exact conversion of f64 inputs to rationals (and of exact
+//!   times back to the nearest f64 for printing): f64 is its interface.
+//! - src/kernel/interval.rs, the interval kernel in front of the exact one. Its
+//!   floats only *certify* signs with rigorous interval arithmetic (outward rounding
+//!   on every operation, enclosures of the inputs checked exactly); whenever an
+//!   interval cannot certify a sign, it abstains and the exact kernel decides. Every
+//!   decision thus remains exact, and tests/kernels.rs checks that interval-then-exact
+//!   and exact-only answers are identical.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 fn float_tokens(text: &str) -> Vec<usize> {
     let forbidden = [["f", "32"].concat(), ["f", "64"].concat()];
@@ -30,34 +28,54 @@ fn float_tokens(text: &str) -> Vec<usize> {
     hits
 }
 
-/// Files allowed to name the float types (see the module doc).
-const EXEMPT: [&str; 3] = ["convert.rs", "filter.rs", "earth_ref.rs"];
+/// Files allowed to name the float types (see the module doc), relative to src/.
+const EXEMPT: [&str; 2] = ["convert.rs", "kernel/interval.rs"];
 
-#[test]
-fn no_float_outside_convert() {
-    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
-    let mut checked = 0;
-    let mut bad = Vec::new();
-    let entries = std::fs::read_dir(&src).expect("oracle/src is readable");
+/// Every .rs file below `dir`, with its path relative to `root` ('/'-separated).
+fn sources(root: &Path, dir: &Path, out: &mut Vec<(String, PathBuf)>) {
+    let entries = std::fs::read_dir(dir).expect("source directory is readable");
     for e in entries.flatten() {
         let path = e.path();
-        if path.extension().and_then(|x| x.to_str()) != Some("rs") {
-            continue;
-        }
-        let name = path.file_name().and_then(|x| x.to_str()).unwrap_or("");
-        if EXEMPT.contains(&name) {
-            continue;
-        }
-        let text = std::fs::read_to_string(&path).expect("source is readable");
-        checked += 1;
-        for line in float_tokens(&text) {
-            bad.push(format!("{}:{line}", path.display()));
+        if path.is_dir() {
+            sources(root, &path, out);
+        } else if path.extension().and_then(|x| x.to_str()) == Some("rs") {
+            let rel = path.strip_prefix(root).unwrap_or(&path);
+            let rel: Vec<_> = rel.iter().filter_map(|c| c.to_str()).collect();
+            out.push((rel.join("/"), path));
         }
     }
-    assert!(checked >= 9, "only {checked} files checked");
+}
+
+#[test]
+fn no_float_outside_convert_and_the_interval_kernel() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut files = Vec::new();
+    sources(&src, &src, &mut files);
+    let mut checked = Vec::new();
+    let mut bad = Vec::new();
+    for (rel, path) in &files {
+        if EXEMPT.contains(&rel.as_str()) {
+            continue;
+        }
+        let text = std::fs::read_to_string(path).expect("source is readable");
+        checked.push(rel.clone());
+        for line in float_tokens(&text) {
+            bad.push(format!("{rel}:{line}"));
+        }
+    }
+    // The exemptions exist (a renamed file must not leave a stale, silent entry),
+    // and the subdirectories are scanned.
+    for e in EXEMPT {
+        assert!(files.iter().any(|(rel, _)| rel == e), "{e} is not in src/");
+    }
+    assert!(
+        checked.iter().any(|rel| rel.starts_with("kernel/")),
+        "src/kernel/ was not scanned: {checked:?}"
+    );
+    assert!(checked.len() >= 12, "only {} files checked", checked.len());
     assert!(
         bad.is_empty(),
-        "float types outside convert.rs, filter.rs and earth_ref.rs: {bad:?}"
+        "float types outside convert.rs and kernel/interval.rs: {bad:?}"
     );
 }
 

@@ -8,13 +8,13 @@ use proptest::prelude::*;
 
 use common::{cases, gen_case, GenCase};
 use polyguard_oracle::well_formed::well_formed;
-use polyguard_oracle::{paper_detect, truth, ExactField, Truth, Q};
+use polyguard_oracle::{paper_detect, truth, Arith, Decided, Exact, Truth, Q};
 
 /// κ ≈ 8.1°: cos κ = 99/100.
 fn cos_kappa() -> Q {
     Q::from_i64(99)
         .quotient(&Q::from_i64(100))
-        .unwrap_or_else(<Q as ExactField>::one)
+        .unwrap_or_else(<Q as Arith>::one)
 }
 
 /// None when the case is outside the theorem's hypotheses; Some(message) on a counterexample.
@@ -30,7 +30,7 @@ fn check(g: &GenCase) -> Option<String> {
             return Some(format!(
                 "truth enters at {} but {} says no: {g:?}",
                 entry_time.to_decimal_string(12),
-                ans.decided_by
+                ans.method.name()
             ));
         }
     }
@@ -80,14 +80,14 @@ proptest! {
     /// The exact shortcut in front of edge_detect_simp never changes its answer.
     #[test]
     fn far_from_edge_shortcut_is_sound(c in proptest::collection::vec(-40i64..40, 9), f in 1i64..64) {
-        use polyguard_oracle::detect::{edge_detect_simp, edge_detect_simp_unfiltered};
+        use polyguard_oracle::detect::{edge_detect_simp, edge_detect_simp_without_shortcut};
         use polyguard_oracle::V2;
         let v = |i: usize| V2::new(Q::from_i64(c[i]), Q::from_i64(c[i + 1]).quotient(&Q::from_i64(4)).unwrap_or_default());
         let t = Q::from_i64(c[8].abs() + 1);
         let fac = Q::from_i64(1).quotient(&Q::from_i64(f + 1)).unwrap_or_default();
         prop_assert_eq!(
-            edge_detect_simp(&t, &v(0), &v(2), &v(4), &v(6), &fac),
-            edge_detect_simp_unfiltered(&t, &v(0), &v(2), &v(4), &v(6), &fac)
+            edge_detect_simp(&Exact, &t, &v(0), &v(2), &v(4), &v(6), &fac).decided(),
+            edge_detect_simp_without_shortcut(&Exact, &t, &v(0), &v(2), &v(4), &v(6), &fac).decided()
         );
     }
 }

@@ -1,7 +1,7 @@
 //! Hand-computed ground truths (entry times derived in the comments).
 
-use polyguard_oracle::truth::earliest_contact;
-use polyguard_oracle::{truth, CaseF64, CaseStr, ExactCase, Truth, Q, V2};
+use polyguard_oracle::truth::{earliest_contact, RootId};
+use polyguard_oracle::{truth, CaseF64, CaseStr, Decided, Exact, ExactCase, Truth, Q, V2};
 
 fn q(s: &str) -> Q {
     polyguard_oracle::convert::parse_rational(s).expect("valid test rational")
@@ -130,6 +130,7 @@ fn figure_2_truth_rational_and_irrational() {
     // The second meeting via earliest_contact on [1/2, 1]: 1/6 after the restart.
     let (s, v) = (p("1/2", "2/9"), p("1", "0"));
     let tc = earliest_contact(
+        &Exact,
         &q("1/2"),
         &s,
         &v,
@@ -137,9 +138,11 @@ fn figure_2_truth_rational_and_irrational() {
         &p("0", "0"),
         &p("2", "1"),
         &p("0", "-2"),
-    );
+    )
+    .decided();
     let tc = tc.expect("met at 1/6");
-    assert_eq!(tc.cmp_rat(&q("1/6")), core::cmp::Ordering::Equal);
+    assert_eq!(tc.root, RootId::Index(1));
+    assert_eq!(tc.time.cmp_rat(&q("1/6")), core::cmp::Ordering::Equal);
 }
 
 #[test]

@@ -11,7 +11,7 @@ use proptest::prelude::*;
 
 use common::{cases, gen_case};
 use polyguard_oracle::truth::in_closed_polygon;
-use polyguard_oracle::{truth, ExactCase, ExactField, Truth, Q, V2};
+use polyguard_oracle::{truth, Arith, Decided, Exact, ExactCase, ExactField, Truth, Q, V2};
 
 fn inside_at(c: &ExactCase<Q>, t: &Q) -> bool {
     if let Some(z) = &c.vertical {
@@ -26,7 +26,7 @@ fn inside_at(c: &ExactCase<Q>, t: &Q) -> bool {
         .zip(&c.velocities)
         .map(|(p, w)| p.at(w, t))
         .collect();
-    in_closed_polygon(&poly, &c.s.at(&c.v, t))
+    in_closed_polygon(&Exact, &poly, &c.s.at(&c.v, t)).decided()
 }
 
 proptest! {

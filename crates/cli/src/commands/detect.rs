@@ -115,7 +115,7 @@ fn answer(case: &Case, engine: Engine, out: &mut Map<String, Value>) -> Result<(
             let exact = exact_case(case)?;
             let a = polyguard_oracle::paper_detect(&exact);
             out.insert("detected".into(), a.detected.into());
-            out.insert("decided_by".into(), a.decided_by.into());
+            out.insert("decided_by".into(), a.method.name().into());
             well_formed_fields(out, exact_well_formed(case, &exact)?);
         }
         Engine::Truth => {

@@ -1,30 +1,42 @@
-//! The floating filter never changes an answer: on the same cases, the filtered
-//! oracle ([`paper_detect`], [`truth`], and the filtered per-function entry points
-//! of `polyguard_oracle::filter`) and the exact-only one ([`paper_detect_unfiltered`],
-//! [`truth_unfiltered`], the functions of `detect` / `contain` / `proximity` /
-//! `truth`) agree exactly: detected and decided_by, the truth's variant, its exact
-//! entry time (same representation) and its reason text. Both backends when the
-//! `rug` feature is on.
+//! The interval kernel in front of the exact one never changes an answer: on the
+//! same cases, interval-then-exact ([`paper_detect`], [`truth`]) and exact-only
+//! ([`paper_detect_unfiltered`], [`truth_unfiltered`]) agree exactly — detected and
+//! method, the truth's variant, its exact entry time (same representation) and its
+//! reason text — and every decision the interval kernel takes on its own in a paper
+//! function is the exact kernel's. Both backends when the `rug` feature is on.
 //!
-//! The cases are built to defeat a filter: rational grid cases aimed exactly at
-//! vertices and edges (tests/common), f64 cases on the boundaries (points at
-//! exactly BUFF from an edge or a vertex and a few ulps off it, |p_x − s_x| = BUFF,
-//! trajectories through vertices and tangent to edges, far offsets with small
+//! The cases are built to defeat the interval kernel: rational grid cases aimed
+//! exactly at vertices and edges (tests/common), f64 cases on the boundaries (points
+//! at exactly BUFF from an edge or a vertex and a few ulps off it, |p_x − s_x| =
+//! BUFF, trajectories through vertices and tangent to edges, far offsets with small
 //! polygons, tiny BUFF), and per-function cases with tiny integers, where zero
 //! leading coefficients, double roots, parallel and collinear motions are common.
+//!
+//! Canaries: the comparison catches a first kernel that lies (one whose
+//! certified decisions are flipped), and the interval kernel is seen to decide
+//! easy cases on its own and to abstain on exact ties.
 
 mod common;
+
+use core::cell::Cell;
+use core::cmp::Ordering;
+use std::borrow::Cow;
 
 use proptest::prelude::*;
 
 use common::{cases, gen_case};
-use polyguard_oracle::qfield::Alg;
+use polyguard_oracle::contain::{definitely_outside, near_edge};
+use polyguard_oracle::detect::edge_detect;
+use polyguard_oracle::kernel::interval::{enclose, enclose2, next_down, next_up};
+use polyguard_oracle::kernel::{Abstain, Intervals, Iv};
+use polyguard_oracle::proximity::segments_close;
+use polyguard_oracle::truth::{earliest_contact, segments_intersect};
 use polyguard_oracle::{
-    filter, paper_detect, paper_detect_unfiltered, truth, truth_unfiltered, CaseF64, ExactCase,
-    ExactField, Q, V2,
+    paper_detect, paper_detect_unfiltered, paper_detect_with, truth, truth_unfiltered, truth_with,
+    CaseF64, Decided, Exact, ExactCase, ExactField, Kernel, Q, V2,
 };
 
-/// Filtered and unfiltered answers for one case, in one backend.
+/// Interval-then-exact and exact-only answers for one case, in one backend.
 fn check<F: ExactField>(c: &ExactCase<F>) -> Result<(), TestCaseError> {
     prop_assert_eq!(paper_detect(c), paper_detect_unfiltered(c));
     prop_assert_eq!(truth(c), truth_unfiltered(c));
@@ -56,11 +68,7 @@ impl Rng {
 fn ulps(x: f64, k: i64) -> f64 {
     let mut y = x;
     for _ in 0..k.unsigned_abs() {
-        y = if k > 0 {
-            filter::next_up(y)
-        } else {
-            filter::next_down(y)
-        };
+        y = if k > 0 { next_up(y) } else { next_down(y) };
     }
     y
 }
@@ -201,16 +209,19 @@ fn v<F: ExactField>(c: &[i64], i: usize) -> V2<F> {
     V2::new(F::from_i64(c[i]), F::from_i64(c[i + 1]))
 }
 
-/// Two exact algebraic numbers written the same way.
-fn same_alg<F: ExactField>(a: &Option<Alg<F>>, b: &Option<Alg<F>>) -> bool {
-    match (a, b) {
-        (None, None) => true,
-        (Some(x), Some(y)) => x.p == y.p && x.q == y.q && x.d == y.d && x.r == y.r,
-        _ => false,
+/// An interval decision, when taken, is the exact one.
+fn agrees<T: PartialEq + core::fmt::Debug>(
+    interval: Result<T, Abstain>,
+    exact: T,
+) -> Result<(), TestCaseError> {
+    if let Ok(x) = interval {
+        prop_assert_eq!(x, exact);
     }
+    Ok(())
 }
 
-/// The per-function checks on tiny integer data, in one backend.
+/// The per-function checks on tiny integer data, in one backend: whatever the
+/// interval kernel decides on the enclosures, the exact kernel decides the same.
 fn check_functions<F: ExactField>(c: &[i64], k: i64) -> Result<(), TestCaseError> {
     let t = F::from_i64(c[16].abs() + 1);
     let fac = F::one().quotient(&F::from_i64(k)).unwrap_or_else(F::one);
@@ -218,21 +229,45 @@ fn check_functions<F: ExactField>(c: &[i64], k: i64) -> Result<(), TestCaseError
         .quotient(&F::from_i64(k / 2 + 1))
         .unwrap_or_else(F::one);
     let p: Vec<V2<F>> = (0..8).map(|i| v(c, 2 * i)).collect();
-    prop_assert_eq!(
-        filter::edge_detect(&t, &p[0], &p[1], &p[2], &p[3], &p[4], &p[5], &fac),
-        polyguard_oracle::detect::edge_detect(&t, &p[0], &p[1], &p[2], &p[3], &p[4], &p[5], &fac)
-    );
-    prop_assert_eq!(
-        filter::segments_close(&p[0], &p[1], &p[2], &p[3], &buff),
-        polyguard_oracle::proximity::segments_close(&p[0], &p[1], &p[2], &p[3], &buff)
-    );
-    prop_assert_eq!(
-        filter::definitely_outside(&p[1..5], &p[0], &buff),
-        polyguard_oracle::contain::definitely_outside(&p[1..5], &p[0], &buff)
-    );
-    let a = filter::earliest_contact(&t, &p[0], &p[1], &p[2], &p[3], &p[4], &p[5]);
-    let b = polyguard_oracle::truth::earliest_contact(&t, &p[0], &p[1], &p[2], &p[3], &p[4], &p[5]);
-    prop_assert!(same_alg(&a, &b), "{:?} vs {:?}", a, b);
+    let (ti, fi, bi) = (enclose(&t), enclose(&fac), enclose(&buff));
+    let pi: Vec<V2<Iv>> = p.iter().map(enclose2).collect();
+    let (x, e) = (&Intervals, &Exact);
+    agrees(
+        edge_detect(x, &ti, &pi[0], &pi[1], &pi[2], &pi[3], &pi[4], &pi[5], &fi),
+        edge_detect(e, &t, &p[0], &p[1], &p[2], &p[3], &p[4], &p[5], &fac).decided(),
+    )?;
+    agrees(
+        segments_close(x, &pi[0], &pi[1], &pi[2], &pi[3], &bi),
+        segments_close(e, &p[0], &p[1], &p[2], &p[3], &buff).decided(),
+    )?;
+    agrees(
+        definitely_outside(x, &pi[1..5], &pi[0], &bi),
+        definitely_outside(e, &p[1..5], &p[0], &buff).decided(),
+    )?;
+    agrees(
+        segments_intersect(x, &pi[0], &pi[1], &pi[2], &pi[3]),
+        segments_intersect(e, &p[0], &p[1], &p[2], &p[3]).decided(),
+    )?;
+    // A contact the interval kernel certifies is the exact one: the same root of
+    // the same quadratic, inside the enclosure.
+    let exact = earliest_contact(e, &t, &p[0], &p[1], &p[2], &p[3], &p[4], &p[5]).decided();
+    if let Ok(found) = earliest_contact(x, &ti, &pi[0], &pi[1], &pi[2], &pi[3], &pi[4], &pi[5]) {
+        prop_assert_eq!(
+            found.is_some(),
+            exact.is_some(),
+            "{:?} vs {:?}",
+            found,
+            exact
+        );
+        if let (Some(a), Some(b)) = (found, exact) {
+            prop_assert_eq!(a.root, b.root);
+            let inside = |end: f64, o: Ordering| {
+                polyguard_oracle::convert::f64_to_exact::<F>(end)
+                    .is_some_and(|end| b.time.cmp_rat(&end) != o)
+            };
+            prop_assert!(inside(a.time.lo, Ordering::Less) && inside(a.time.hi, Ordering::Greater));
+        }
+    }
     Ok(())
 }
 
@@ -276,6 +311,155 @@ proptest! {
         #[cfg(feature = "rug")]
         check_functions::<polyguard_oracle::R>(&c, k)?;
     }
+}
+
+/// The interval kernel with its decisions counted and, when `lie` is set, the
+/// certified ones turned round (a deliberately wrong first kernel).
+#[derive(Default)]
+struct Probe {
+    lie: bool,
+    decided: Cell<usize>,
+    abstained: Cell<usize>,
+}
+
+impl Probe {
+    fn tally<T>(&self, r: Result<T, Abstain>, flip: impl FnOnce(T) -> T) -> Result<T, Abstain> {
+        let cell = if r.is_ok() {
+            &self.decided
+        } else {
+            &self.abstained
+        };
+        cell.set(cell.get() + 1);
+        match r {
+            Ok(x) if self.lie => Ok(flip(x)),
+            r => r,
+        }
+    }
+    fn bool(&self, r: Result<bool, Abstain>) -> Result<bool, Abstain> {
+        self.tally(r, |x| !x)
+    }
+}
+
+impl Kernel<Iv> for Probe {
+    type Root = Iv;
+    type Abstain = Abstain;
+    fn lt(&self, a: &Iv, b: &Iv) -> Result<bool, Abstain> {
+        self.bool(Intervals.lt(a, b))
+    }
+    fn le(&self, a: &Iv, b: &Iv) -> Result<bool, Abstain> {
+        self.bool(Intervals.le(a, b))
+    }
+    fn eq(&self, a: &Iv, b: &Iv) -> Result<bool, Abstain> {
+        self.bool(Intervals.eq(a, b))
+    }
+    fn sign(&self, x: &Iv) -> Result<Ordering, Abstain> {
+        self.tally(Intervals.sign(x), Ordering::reverse)
+    }
+    fn abs(&self, x: &Iv) -> Iv {
+        Intervals.abs(x)
+    }
+    fn hull<'a>(&self, xs: &[&'a Iv]) -> (Cow<'a, Iv>, Cow<'a, Iv>) {
+        Intervals.hull(xs)
+    }
+    fn root(&self, x: &Iv) -> Iv {
+        *x
+    }
+    fn linear_root(&self, n: Iv, d: Iv) -> Option<Iv> {
+        Intervals.linear_root(n, d)
+    }
+    fn two_roots(&self, a: &Iv, b: &Iv, disc: Iv) -> Option<[Iv; 2]> {
+        Intervals.two_roots(a, b, disc)
+    }
+    fn root_max(&self, r: Iv, x: &Iv) -> Iv {
+        Intervals.root_max(r, x)
+    }
+    fn root_min(&self, r: Iv, x: &Iv) -> Iv {
+        Intervals.root_min(r, x)
+    }
+    fn root_lt(&self, a: &Iv, b: &Iv) -> Result<bool, Abstain> {
+        self.bool(Intervals.root_lt(a, b))
+    }
+    fn root_le(&self, a: &Iv, b: &Iv) -> Result<bool, Abstain> {
+        self.bool(Intervals.root_le(a, b))
+    }
+    fn quad_neg_at(&self, r: &Iv, a: &Iv, b: &Iv, c: &Iv) -> Result<bool, Abstain> {
+        self.bool(Intervals.quad_neg_at(r, a, b, c))
+    }
+}
+
+/// Canary: the comparison can fail. With a first kernel whose certified
+/// decisions are flipped, interval-then-exact answers differ from exact-only ones
+/// on the grid cases (for the detector and for the truth).
+#[test]
+fn a_lying_first_kernel_is_caught() {
+    let liar = Probe {
+        lie: true,
+        ..Probe::default()
+    };
+    let (mut detect_wrong, mut truth_wrong) = (0, 0);
+    for seed in 1..200u64 {
+        let Ok(c) = gen_case(seed.wrapping_mul(0x9e37_79b9_7f4a_7c15)).exact::<Q>() else {
+            continue;
+        };
+        if paper_detect_with(&liar, &c) != paper_detect_unfiltered(&c) {
+            detect_wrong += 1;
+        }
+        if truth_with(&liar, &c) != truth_unfiltered(&c) {
+            truth_wrong += 1;
+        }
+    }
+    assert!(
+        detect_wrong > 10 && truth_wrong > 10,
+        "wrong answers: paper_detect {detect_wrong}, truth {truth_wrong}"
+    );
+}
+
+/// Canary: the interval kernel does the work on easy cases (no abstention at all)
+/// and abstains on exact ties, where the exact kernel must decide.
+#[test]
+fn intervals_decide_easy_cases_and_abstain_on_ties() {
+    let square = [[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]];
+    let case = |pos: &[f64], vel: &[f64], vels: &[[f64; 2]]| {
+        ExactCase::<Q>::from_f64(&CaseF64 {
+            lookahead: 10.0,
+            buff: 0.125,
+            fac: 1e-4,
+            pos,
+            vel,
+            vertices: &square,
+            velocities: vels,
+            slab: None,
+        })
+        .expect("valid case")
+    };
+    // A warping square, the point far away or straight through it: every decision
+    // of both paper_detect and the truth is taken by the interval kernel.
+    let warp = [[0.3, 0.1], [0.7, -0.2], [0.55, 0.45], [0.2, 0.05]];
+    for (pos, vel) in [([-50.0, 5.0], [0.1, 1.3]), ([-5.0, 5.0], [1.1, 0.3])] {
+        let c = case(&pos, &vel, &warp);
+        let probe = Probe::default();
+        assert_eq!(paper_detect_with(&probe, &c), paper_detect_unfiltered(&c));
+        assert_eq!(truth_with(&probe, &c), truth_unfiltered(&c));
+        assert_eq!(probe.abstained.get(), 0, "{pos:?} {vel:?}");
+        assert!(probe.decided.get() > 50, "{}", probe.decided.get());
+    }
+    // Exactly BUFF from an edge's end (a 3-4-5 triangle of dyadic sides): a tie
+    // only the exact kernel can break; nearer and farther are certain.
+    let (a, b) = (
+        V2::new(Iv::point(0.0), Iv::point(0.0)),
+        V2::new(Iv::point(10.0), Iv::point(0.0)),
+    );
+    let at = |x: f64, y: f64| V2::new(Iv::point(x), Iv::point(y));
+    let buff = Iv::point(0.625);
+    let near = |s: V2<Iv>| near_edge(&Intervals, &a, &b, &s, &buff);
+    assert_eq!(near(at(-0.375, 0.5)), Err(Abstain));
+    assert_eq!(near(at(-0.375, 0.25)), Ok(true));
+    assert_eq!(near(at(-0.375, 0.75)), Ok(false));
+    // Straight through a vertex of a square at rest: the contact there is a tie.
+    let c = case(&[-2.0, -2.0], &[1.0, 1.0], &[]);
+    let probe = Probe::default();
+    assert_eq!(truth_with(&probe, &c), truth_unfiltered(&c));
+    assert!(probe.abstained.get() > 0);
 }
 
 /// Hand-made degenerate cases: a double root (the point grazes a warping edge),

@@ -1,0 +1,611 @@
+//! The interval kernel: rigorous enclosures on binary floats, in front of the
+//! exact kernel as CGAL's filtered kernels do it. [`Intervals`] takes a decision
+//! only when the enclosures certify it, and abstains otherwise; the runner
+//! (`kernel/run.rs`) then runs that one paper-function call in the exact kernel.
+//! Floats never decide anything here: they only prove signs, so every answer is the
+//! exact one.
+//!
+//! This is the only module besides [`crate::convert`] that names a float type.
+//!
+//! # Why it is rigorous
+//!
+//! - **Enclosures.** An [`Iv`] `[lo, hi]` stands for one real number x that the
+//!   exact kernel computes from the same formula, with lo ≤ x ≤ hi. Inputs are
+//!   enclosed by [`enclose`]: a dyadic rational that is a binary float exactly
+//!   (every input that came from f64) becomes the point interval; any other rational
+//!   gets end points that are *checked* exactly against it (lo, hi are converted back
+//!   to rationals and compared; no float conversion routine is trusted).
+//! - **Outward rounding.** Each operation computes the round-to-nearest result r
+//!   of IEEE 754 (+, −, ×, ÷ and √ are correctly rounded), whose error is at most
+//!   half an ulp; the end points are then moved outward by one ulp with
+//!   [`next_down`] / [`next_up`] (bit steps), so the exact result lies in
+//!   [next_down(r), next_up(r)] — also at binade boundaries, in the subnormal range
+//!   and on overflow (next_down(+∞) = MAX is below any overflowed true value).
+//!   Additions use Knuth's TwoSum instead, which yields the exact rounding error
+//!   and therefore the tightest directed result (a difference of equal floats
+//!   stays exactly 0); it is used only while no operand reaches 2^1000, where no
+//!   intermediate can overflow. A product or quotient with an exactly-zero factor
+//!   is exactly 0. Any NaN turns the interval into (−∞, +∞), and an operation on an
+//!   infinite end point returns (−∞, +∞): such intervals certify nothing. The value
+//!   operations of the kernel (|x|, least and greatest, max and min with a root) are
+//!   the enclosures of the exact results, with no decision.
+//! - **Decisions.** A sign is certain when the interval excludes 0 (lo > 0 or
+//!   hi < 0), or is the point [0, 0]; a comparison x < y is certainly true when
+//!   hi(x) < lo(y) and certainly false when lo(x) ≥ hi(y) (x ≤ y likewise), and
+//!   x = y is certain for two equal points or two disjoint intervals. Anything else
+//!   is `Err(Abstain)`. The paper functions combine decisions with Kleene's logic
+//!   ([`crate::kernel::or`] …), so a combined answer is certain only when every
+//!   completion of the abstentions gives it, and they follow a case split (the sign
+//!   of a leading coefficient, of a discriminant) only when it is certain: the
+//!   functions evaluate the *same* formulas as the exact kernel, on enclosures of
+//!   the same real numbers.
+//! - **Roots.** A root is an enclosure computed from enclosures of its
+//!   quadratic's coefficients (√ rounded outward, quotients only by enclosures that
+//!   exclude 0). It is never turned into an answer: the truth's entry time is
+//!   identified by which root of which contact quadratic it is, and the exact
+//!   kernel builds that root (`kernel/run.rs`).
+
+use core::cmp::Ordering;
+use std::borrow::Cow;
+
+use num_traits::ToPrimitive;
+
+use super::Kernel;
+use crate::convert::f64_to_exact;
+use crate::field::{Arith, ExactField, V2};
+
+// Directed rounding by one-ulp steps.
+
+/// The least float greater than x (x for NaN and +∞; −MAX for −∞ is not needed).
+#[inline]
+pub fn next_up(x: f64) -> f64 {
+    if x.is_nan() || x == f64::INFINITY {
+        return x;
+    }
+    if x == 0.0 {
+        return f64::from_bits(1);
+    }
+    let b = x.to_bits();
+    if x > 0.0 {
+        f64::from_bits(b + 1)
+    } else {
+        f64::from_bits(b - 1)
+    }
+}
+
+/// The greatest float less than x.
+#[inline]
+pub fn next_down(x: f64) -> f64 {
+    -next_up(-x)
+}
+
+/// 2^1000: below it, TwoSum's intermediates cannot overflow.
+const TWO_SUM_LIMIT: f64 = 1.0715086071862673e301;
+
+/// A float ≤ a + b (the exact sum), as tight as possible.
+#[inline]
+fn add_dn(a: f64, b: f64) -> f64 {
+    let s = a + b;
+    if a.abs() < TWO_SUM_LIMIT && b.abs() < TWO_SUM_LIMIT {
+        let bb = s - a;
+        let err = (a - (s - bb)) + (b - bb);
+        if err < 0.0 {
+            next_down(s)
+        } else {
+            s
+        }
+    } else {
+        next_down(s)
+    }
+}
+
+/// A float ≥ a + b (the exact sum), as tight as possible.
+#[inline]
+fn add_up(a: f64, b: f64) -> f64 {
+    -add_dn(-a, -b)
+}
+
+/// A float ≤ a·b.
+#[inline]
+fn mul_dn(a: f64, b: f64) -> f64 {
+    if a == 0.0 || b == 0.0 {
+        0.0
+    } else {
+        next_down(a * b)
+    }
+}
+
+/// A float ≥ a·b.
+#[inline]
+fn mul_up(a: f64, b: f64) -> f64 {
+    if a == 0.0 || b == 0.0 {
+        0.0
+    } else {
+        next_up(a * b)
+    }
+}
+
+/// A closed interval [lo, hi] of floats enclosing one real number.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Iv {
+    /// Lower end.
+    pub lo: f64,
+    /// Upper end.
+    pub hi: f64,
+}
+
+// Named methods rather than operator traits: each one is an outward-rounded
+// enclosure, not the float operation its symbol would suggest.
+#[allow(clippy::should_implement_trait)]
+impl Iv {
+    /// The point 0.
+    pub const ZERO: Iv = Iv { lo: 0.0, hi: 0.0 };
+    /// The point 1.
+    pub const ONE: Iv = Iv { lo: 1.0, hi: 1.0 };
+    /// Every real number (certifies nothing).
+    pub const ENTIRE: Iv = Iv {
+        lo: f64::NEG_INFINITY,
+        hi: f64::INFINITY,
+    };
+
+    /// [lo, hi]; (−∞, +∞) when an end is NaN.
+    #[inline]
+    fn raw(lo: f64, hi: f64) -> Iv {
+        if lo.is_nan() || hi.is_nan() {
+            Iv::ENTIRE
+        } else {
+            Iv { lo, hi }
+        }
+    }
+
+    /// The point x (exact).
+    #[inline]
+    pub fn point(x: f64) -> Iv {
+        // −0 and +0 are the same number; keep +0 so that "is exactly 0" is simple.
+        let x = if x == 0.0 { 0.0 } else { x };
+        Iv::raw(x, x)
+    }
+
+    #[inline]
+    fn finite(self) -> bool {
+        self.lo.is_finite() && self.hi.is_finite()
+    }
+
+    #[inline]
+    fn is_zero(self) -> bool {
+        self.lo == 0.0 && self.hi == 0.0
+    }
+
+    /// self + o.
+    #[inline]
+    pub fn add(self, o: Iv) -> Iv {
+        Iv::raw(add_dn(self.lo, o.lo), add_up(self.hi, o.hi))
+    }
+
+    /// self − o.
+    #[inline]
+    pub fn sub(self, o: Iv) -> Iv {
+        self.add(o.neg())
+    }
+
+    /// −self.
+    #[inline]
+    pub fn neg(self) -> Iv {
+        Iv {
+            lo: -self.hi,
+            hi: -self.lo,
+        }
+    }
+
+    /// self · o.
+    #[inline]
+    pub fn mul(self, o: Iv) -> Iv {
+        if self.is_zero() || o.is_zero() {
+            return Iv::ZERO;
+        }
+        if !(self.finite() && o.finite()) {
+            return Iv::ENTIRE;
+        }
+        let (a, b, c, d) = (self.lo, self.hi, o.lo, o.hi);
+        if a == b && c == d {
+            return Iv::raw(mul_dn(a, c), mul_up(a, c));
+        }
+        // The classic sign cases: the extreme products are known in advance.
+        let (lo, hi) = if a >= 0.0 {
+            if c >= 0.0 {
+                (mul_dn(a, c), mul_up(b, d))
+            } else if d <= 0.0 {
+                (mul_dn(b, c), mul_up(a, d))
+            } else {
+                (mul_dn(b, c), mul_up(b, d))
+            }
+        } else if b <= 0.0 {
+            if c >= 0.0 {
+                (mul_dn(a, d), mul_up(b, c))
+            } else if d <= 0.0 {
+                (mul_dn(b, d), mul_up(a, c))
+            } else {
+                (mul_dn(a, d), mul_up(a, c))
+            }
+        } else if c >= 0.0 {
+            (mul_dn(a, d), mul_up(b, d))
+        } else if d <= 0.0 {
+            (mul_dn(b, c), mul_up(a, c))
+        } else {
+            (
+                mul_dn(a, d).min(mul_dn(b, c)),
+                mul_up(a, c).max(mul_up(b, d)),
+            )
+        };
+        Iv::raw(lo, hi)
+    }
+
+    /// self² (tighter than self · self when the interval holds 0).
+    #[inline]
+    pub fn sq(self) -> Iv {
+        if !self.finite() {
+            return Iv::raw(0.0, f64::INFINITY);
+        }
+        if self.lo >= 0.0 {
+            Iv::raw(mul_dn(self.lo, self.lo), mul_up(self.hi, self.hi))
+        } else if self.hi <= 0.0 {
+            Iv::raw(mul_dn(self.hi, self.hi), mul_up(self.lo, self.lo))
+        } else {
+            let m = self.lo.abs().max(self.hi);
+            Iv::raw(0.0, mul_up(m, m))
+        }
+    }
+
+    /// 2·self (exact unless it overflows).
+    #[inline]
+    pub fn twice(self) -> Iv {
+        self.add(self)
+    }
+
+    /// self / 2.
+    #[inline]
+    pub fn half(self) -> Iv {
+        self.mul(Iv::point(0.5))
+    }
+
+    /// self / o; (−∞, +∞) when o may be 0.
+    pub fn div(self, o: Iv) -> Iv {
+        if !(o.lo > 0.0 || o.hi < 0.0) || !(self.finite() && o.finite()) {
+            return Iv::ENTIRE;
+        }
+        if self.is_zero() {
+            return Iv::ZERO;
+        }
+        // A quotient is exactly 0 only when its dividend is; others move outward.
+        let q_dn = |x: f64, y: f64| if x == 0.0 { 0.0 } else { next_down(x / y) };
+        let q_up = |x: f64, y: f64| if x == 0.0 { 0.0 } else { next_up(x / y) };
+        let (a, b, c, d) = (self.lo, self.hi, o.lo, o.hi);
+        let lo = q_dn(a, c).min(q_dn(a, d)).min(q_dn(b, c)).min(q_dn(b, d));
+        let hi = q_up(a, c).max(q_up(a, d)).max(q_up(b, c)).max(q_up(b, d));
+        Iv::raw(lo, hi)
+    }
+
+    /// √self for self ≥ 0 (the part below 0 is ignored).
+    pub fn sqrt(self) -> Iv {
+        let lo = if self.lo > 0.0 {
+            next_down(self.lo.sqrt()).max(0.0)
+        } else {
+            0.0
+        };
+        let hi = if self.hi > 0.0 {
+            next_up(self.hi.sqrt())
+        } else {
+            0.0
+        };
+        Iv::raw(lo, hi)
+    }
+
+    /// |self|.
+    #[inline]
+    pub fn abs(self) -> Iv {
+        if self.lo >= 0.0 {
+            self
+        } else if self.hi <= 0.0 {
+            self.neg()
+        } else {
+            Iv::raw(0.0, self.hi.max(-self.lo))
+        }
+    }
+
+    /// max(self, o) (the enclosure of the larger number).
+    #[inline]
+    pub fn max(self, o: Iv) -> Iv {
+        Iv::raw(self.lo.max(o.lo), self.hi.max(o.hi))
+    }
+
+    /// min(self, o).
+    #[inline]
+    pub fn min(self, o: Iv) -> Iv {
+        Iv::raw(self.lo.min(o.lo), self.hi.min(o.hi))
+    }
+
+    /// The certified sign.
+    #[inline]
+    pub fn sign(self) -> Result<Ordering, Abstain> {
+        if self.lo > 0.0 {
+            Ok(Ordering::Greater)
+        } else if self.hi < 0.0 {
+            Ok(Ordering::Less)
+        } else if self.is_zero() {
+            Ok(Ordering::Equal)
+        } else {
+            Err(Abstain)
+        }
+    }
+
+    /// Certified self < o.
+    #[inline]
+    pub fn lt(self, o: Iv) -> Result<bool, Abstain> {
+        if self.hi < o.lo {
+            Ok(true)
+        } else if self.lo >= o.hi {
+            Ok(false)
+        } else {
+            Err(Abstain)
+        }
+    }
+
+    /// Certified self ≤ o.
+    #[inline]
+    pub fn le(self, o: Iv) -> Result<bool, Abstain> {
+        if self.hi <= o.lo {
+            Ok(true)
+        } else if self.lo > o.hi {
+            Ok(false)
+        } else {
+            Err(Abstain)
+        }
+    }
+
+    /// Certified self = o: two equal points, or two disjoint intervals.
+    #[inline]
+    pub fn equals(self, o: Iv) -> Result<bool, Abstain> {
+        if self.lo == self.hi && o.lo == o.hi {
+            Ok(self.lo == o.lo)
+        } else if self.hi < o.lo || o.hi < self.lo {
+            Ok(false)
+        } else {
+            Err(Abstain)
+        }
+    }
+}
+
+/// An interval decision that cannot be certified.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Abstain;
+
+impl Arith for Iv {
+    fn zero() -> Self {
+        Iv::ZERO
+    }
+    fn one() -> Self {
+        Iv::ONE
+    }
+    fn from_i64(v: i64) -> Self {
+        // Exact below 2^53 in magnitude; otherwise one ulp either way holds v.
+        let x = v as f64;
+        if x.abs() < 9007199254740992.0 {
+            Iv::point(x)
+        } else {
+            Iv::raw(next_down(x), next_up(x))
+        }
+    }
+    fn plus(&self, o: &Self) -> Self {
+        self.add(*o)
+    }
+    fn minus(&self, o: &Self) -> Self {
+        self.sub(*o)
+    }
+    fn times(&self, o: &Self) -> Self {
+        self.mul(*o)
+    }
+    fn negated(&self) -> Self {
+        self.neg()
+    }
+    fn quotient(&self, o: &Self) -> Option<Self> {
+        if o.lo > 0.0 || o.hi < 0.0 {
+            Some(self.div(*o))
+        } else {
+            None
+        }
+    }
+    fn half(&self) -> Self {
+        Iv::half(*self)
+    }
+    fn sq(&self) -> Self {
+        Iv::sq(*self)
+    }
+    fn twice(&self) -> Self {
+        Iv::twice(*self)
+    }
+}
+
+/// The interval kernel (see the [module doc](self)): numbers and roots are [`Iv`]
+/// enclosures; a decision the enclosures cannot certify is `Err(Abstain)`.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Intervals;
+
+impl Kernel<Iv> for Intervals {
+    type Root = Iv;
+    type Abstain = Abstain;
+
+    fn lt(&self, a: &Iv, b: &Iv) -> Result<bool, Abstain> {
+        a.lt(*b)
+    }
+    fn le(&self, a: &Iv, b: &Iv) -> Result<bool, Abstain> {
+        a.le(*b)
+    }
+    fn eq(&self, a: &Iv, b: &Iv) -> Result<bool, Abstain> {
+        a.equals(*b)
+    }
+    fn sign(&self, x: &Iv) -> Result<Ordering, Abstain> {
+        x.sign()
+    }
+
+    fn abs(&self, x: &Iv) -> Iv {
+        x.abs()
+    }
+    fn hull<'a>(&self, xs: &[&'a Iv]) -> (Cow<'a, Iv>, Cow<'a, Iv>) {
+        let (mut lo, mut hi) = (*xs[0], *xs[0]);
+        for &&x in &xs[1..] {
+            lo = lo.min(x);
+            hi = hi.max(x);
+        }
+        (Cow::Owned(lo), Cow::Owned(hi))
+    }
+
+    fn root(&self, x: &Iv) -> Iv {
+        *x
+    }
+    fn linear_root(&self, n: Iv, d: Iv) -> Option<Iv> {
+        Some(n.div(d))
+    }
+    fn two_roots(&self, a: &Iv, b: &Iv, disc: Iv) -> Option<[Iv; 2]> {
+        let two_a = a.twice();
+        let r = disc.sqrt();
+        let mb = b.neg();
+        // The smaller root takes −√disc when a > 0 (a ≠ 0 has been certified).
+        let (lo, hi) = if a.lo > 0.0 {
+            (mb.sub(r), mb.add(r))
+        } else {
+            (mb.add(r), mb.sub(r))
+        };
+        Some([lo.div(two_a), hi.div(two_a)])
+    }
+    fn root_max(&self, r: Iv, x: &Iv) -> Iv {
+        r.max(*x)
+    }
+    fn root_min(&self, r: Iv, x: &Iv) -> Iv {
+        r.min(*x)
+    }
+    fn root_lt(&self, a: &Iv, b: &Iv) -> Result<bool, Abstain> {
+        a.lt(*b)
+    }
+    fn root_le(&self, a: &Iv, b: &Iv) -> Result<bool, Abstain> {
+        a.le(*b)
+    }
+    fn quad_neg_at(&self, r: &Iv, a: &Iv, b: &Iv, c: &Iv) -> Result<bool, Abstain> {
+        a.mul(*r).add(*b).mul(*r).add(*c).lt(Iv::ZERO)
+    }
+}
+
+// Enclosing exact numbers.
+
+/// m · 2^−k for |m| < 2^53 and k ≤ 969: a normal float, computed exactly.
+fn dyadic(m: i64, k: u64) -> f64 {
+    // |m| < 2^53 converts exactly; 2^−k is a normal float; the product is ≥ 2^−969
+    // in magnitude (or 0) and has at most 53 significant bits: exact.
+    (m as f64) * f64::from_bits((1023 - k) << 52)
+}
+
+/// A float ≤ x (or ≥ x when `above`), checked exactly; ∓∞ when the check fails.
+fn checked_end<F: ExactField>(x: &F, start: f64, above: bool) -> f64 {
+    let mut e = start;
+    for _ in 0..4 {
+        let ok = match f64_to_exact::<F>(e) {
+            Some(r) if above => r >= *x,
+            Some(r) => r <= *x,
+            None => false,
+        };
+        if ok {
+            return e;
+        }
+        e = if above { next_up(e) } else { next_down(e) };
+    }
+    if above {
+        f64::INFINITY
+    } else {
+        f64::NEG_INFINITY
+    }
+}
+
+/// A rigorous enclosure of an exact number: the point interval when it is a float
+/// (recognised structurally by [`ExactField::as_dyadic`]), else end points near it
+/// verified by exact comparison.
+pub fn enclose<F: ExactField>(x: &F) -> Iv {
+    if let Some((m, k)) = x.as_dyadic() {
+        if m.unsigned_abs() < 1 << 53 && k <= 969 {
+            return Iv::point(dyadic(m, k));
+        }
+    }
+    let near = x.to_big().to_f64().unwrap_or(f64::NAN);
+    if !near.is_finite() {
+        return Iv::ENTIRE;
+    }
+    Iv::raw(checked_end(x, near, false), checked_end(x, near, true))
+}
+
+/// The enclosure of a vector.
+pub fn enclose2<F: ExactField>(p: &V2<F>) -> V2<Iv> {
+    V2::new(enclose(&p.x), enclose(&p.y))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::field::Q;
+
+    #[test]
+    fn decisions_abstain_on_overlap() {
+        let k = Intervals;
+        let (a, b) = (Iv { lo: 1.0, hi: 2.0 }, Iv { lo: 2.0, hi: 2.0 });
+        assert_eq!(k.le(&a, &b), Ok(true));
+        assert_eq!(k.lt(&a, &b), Err(Abstain));
+        assert_eq!(k.lt(&b, &a), Ok(false));
+        assert_eq!(k.eq(&Iv::point(2.0), &b), Ok(true));
+        assert_eq!(k.eq(&a, &Iv::point(3.0)), Ok(false));
+        assert_eq!(k.eq(&a, &b), Err(Abstain));
+        assert_eq!(k.is_pos(&Iv { lo: 0.0, hi: 1.0 }), Err(Abstain));
+        assert_eq!(k.is_neg(&Iv { lo: 0.0, hi: 1.0 }), Ok(false));
+    }
+
+    #[test]
+    fn steps_and_sums() {
+        assert_eq!(next_up(1.0), 1.0 + f64::EPSILON);
+        assert_eq!(next_down(1.0), 1.0 - f64::EPSILON / 2.0);
+        assert_eq!(next_up(0.0), f64::from_bits(1));
+        assert_eq!(next_down(0.0), -f64::from_bits(1));
+        assert_eq!(next_down(f64::INFINITY), f64::MAX);
+        // 1 + 2^−60 is not a float: the directed sums bracket it tightly.
+        let tiny = 2f64.powi(-60);
+        assert_eq!(add_dn(1.0, tiny), 1.0);
+        assert_eq!(add_up(1.0, tiny), next_up(1.0));
+        assert_eq!(add_dn(0.1, -0.1), 0.0);
+        assert_eq!(add_up(0.1, -0.1), 0.0);
+    }
+
+    #[test]
+    fn enclosures_hold_the_number() {
+        let third = Q::from_i64(1)
+            .quotient(&Q::from_i64(3))
+            .unwrap_or_else(Q::zero);
+        let e = enclose(&third);
+        assert!(e.lo < e.hi);
+        assert!(f64_to_exact::<Q>(e.lo).is_some_and(|x| x < third));
+        assert!(f64_to_exact::<Q>(e.hi).is_some_and(|x| x > third));
+        let x = f64_to_exact::<Q>(0.1).unwrap_or_else(Q::zero);
+        assert_eq!(enclose(&x), Iv::point(0.1));
+        // A product of two floats is enclosed, and its sign decided.
+        let p = Iv::point(0.1).mul(Iv::point(0.3));
+        let exact = x.times(&f64_to_exact::<Q>(0.3).unwrap_or_else(Q::zero));
+        assert!(f64_to_exact::<Q>(p.lo).is_some_and(|l| l <= exact));
+        assert!(f64_to_exact::<Q>(p.hi).is_some_and(|h| h >= exact));
+        assert_eq!(
+            Iv::point(3.0).sub(Iv::point(3.0)).sign(),
+            Ok(Ordering::Equal)
+        );
+        assert_eq!(Iv { lo: -1.0, hi: 1.0 }.sign(), Err(Abstain));
+        assert_eq!(Iv::ENTIRE.mul(Iv::point(0.0)), Iv::ZERO);
+        assert_eq!(Iv::ENTIRE.add(Iv::point(1.0)).sign(), Err(Abstain));
+        // Integers beyond 2^53 are enclosed, not rounded.
+        let big = (1i64 << 60) + 1;
+        let e = Iv::from_i64(big);
+        assert!(f64_to_exact::<Q>(e.lo).is_some_and(|l| l <= Q::from_i64(big)));
+        assert!(f64_to_exact::<Q>(e.hi).is_some_and(|h| h >= Q::from_i64(big)));
+    }
+}

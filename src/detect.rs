@@ -1464,7 +1464,7 @@ mod tests {
         assert_encl(i, 0.0, 4.0);
     }
 
-    /// Found by functions_vs_oracle: (ww + t·vv)·(aa + t·bb) = −1/16 for all t (ww·bb = 0
+    /// Found by paper_a_functions_vs_oracle: (ww + t·vv)·(aa + t·bb) = −1/16 for all t (ww·bb = 0
     /// exactly, but its ball has a tiny radius, so the line's slope is a tiny float and
     /// −c/b overflows). Rounding +∞ down gave NaN, and the set became everything.
     #[test]

@@ -188,7 +188,7 @@ fn closer_than_exact(t: Option<Terms>, buff: f64) -> Tri {
 /// a × e = a × b. The middle tests are a·e ≤ 0 and b·e ≥ 0 (the foot of the
 /// perpendicular lies on the segment). This form has no cancellation of squared lengths,
 /// so its error bound is on the scale of the distances themselves; it is the same real
-/// number test, and tests/functions_vs_oracle.rs checks it against the exact paper form.
+/// number test, and tests/paper_a_functions_vs_oracle.rs checks it against the exact paper form.
 /// Undecided parts are settled exactly on the ends' terms when there are any.
 #[inline]
 pub fn interior_closer_than(
@@ -737,7 +737,7 @@ pub fn box_interior_min_below(
 
 // well_formed (§II.J) is information only: a polygon that is not well formed is still
 // checked, never answered "no detection" for that reason. Its comparisons are the
-// paper's, in f64, with no certificate; tests/functions_vs_oracle.rs compares them with
+// paper's, in f64, with no certificate; tests/paper_a_functions_vs_oracle.rs compares them with
 // the exact oracle on dyadic grids.
 
 /// §II.J step 1: ‖p − q‖ < 2·BUFF, as ‖p − q‖² < 4·BUFF² (information only).

@@ -27,6 +27,8 @@
 //! `POLYGUARD_PROPTEST_CASES`. Failures are not persisted: the panic message carries
 //! the minimal failing input.
 
+mod common;
+use common::{dist2_point_segment, dist2_segments};
 use std::cell::Cell;
 use std::cmp::Ordering;
 use std::f64::consts::TAU;
@@ -229,39 +231,6 @@ fn sqrt_floor(d2: &Q) -> f64 {
         }
     }
     from_key(lo)
-}
-
-/// Exact squared distance from s to the segment a b.
-fn dist2_point_segment(s: &V2<Q>, a: &V2<Q>, b: &V2<Q>) -> Q {
-    let e = b.minus(a);
-    let w = s.minus(a);
-    let Some(r) = w.dot(&e).quotient(&e.sq()) else {
-        return w.sq();
-    };
-    let r = if r.is_neg() {
-        <Q as Arith>::zero()
-    } else if r > <Q as Arith>::one() {
-        <Q as Arith>::one()
-    } else {
-        r
-    };
-    w.minus(&e.scale(&r)).sq()
-}
-
-/// Exact squared distance between the segments a b and c d.
-fn dist2_segments(a: &V2<Q>, b: &V2<Q>, c: &V2<Q>, d: &V2<Q>) -> Q {
-    if polyguard_oracle::truth::segments_intersect(&Exact, a, b, c, d).decided() {
-        return <Q as Arith>::zero();
-    }
-    [
-        dist2_point_segment(a, c, d),
-        dist2_point_segment(b, c, d),
-        dist2_point_segment(c, a, b),
-        dist2_point_segment(d, a, b),
-    ]
-    .into_iter()
-    .min()
-    .expect("four distances")
 }
 
 // ================================================================== magnitudes and thresholds

@@ -226,7 +226,7 @@ pub fn edge_detect_simp(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2, f: f
 /// point is far. That acceptance is a false alarm of the paper on an edge that is not an
 /// edge (such a polygon is not well formed, §II.J step 1); a point that really enters
 /// crosses a proper edge or the collapsed point, which the neighbouring edges contain.
-/// tests/functions_vs_oracle.rs checks that this is the only difference.
+/// tests/paper_a_functions_vs_oracle.rs checks that this is the only difference.
 #[inline(always)]
 fn swept_boxes_apart(
     t: f64,

@@ -53,6 +53,8 @@
 //! engine gives it to σ = +1 except for A = 0, B < 0; the oracle always to σ = −1), so the
 //! interval suites compare the pair of intervals up to that swap.
 
+mod common;
+use common::{dist2_point_segment, dist2_segments};
 use std::cmp::Ordering;
 use std::f64::consts::TAU;
 
@@ -224,40 +226,6 @@ fn box_exact(pts: &[Vect2], step: f64) -> bool {
 }
 
 // ------------------------------------------------------------------ ties
-
-/// Exact squared distance from s to the segment a b.
-fn dist2_point_segment(s: &V2<Q>, a: &V2<Q>, b: &V2<Q>) -> Q {
-    let e = b.minus(a);
-    let w = s.minus(a);
-    let Some(r) = w.dot(&e).quotient(&e.sq()) else {
-        return w.sq();
-    };
-    let r = if r.is_neg() {
-        <Q as Arith>::zero()
-    } else if r > <Q as Arith>::one() {
-        <Q as Arith>::one()
-    } else {
-        r
-    };
-    w.minus(&e.scale(&r)).sq()
-}
-
-/// Exact squared distance between the segments a b and c d (attained at an end of one of
-/// them unless they meet).
-fn dist2_segments(a: &V2<Q>, b: &V2<Q>, c: &V2<Q>, d: &V2<Q>) -> Q {
-    if polyguard_oracle::truth::segments_intersect(&Exact, a, b, c, d).decided() {
-        return <Q as Arith>::zero();
-    }
-    [
-        dist2_point_segment(a, c, d),
-        dist2_point_segment(b, c, d),
-        dist2_point_segment(c, a, b),
-        dist2_point_segment(d, a, b),
-    ]
-    .into_iter()
-    .min()
-    .expect("four distances")
-}
 
 /// √d2 when it is k·unit with 1 ≤ k ≤ max (a BUFF that makes the distance √d2 a tie).
 fn grid_sqrt(d2: &Q, unit: f64, max: f64) -> Option<f64> {

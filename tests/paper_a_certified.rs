@@ -50,7 +50,7 @@ use polyguard_oracle::convert::f64_to_exact;
 use polyguard_oracle::detect::Interval as ExactInterval;
 use polyguard_oracle::qfield::Alg;
 use polyguard_oracle::{
-    contain as oc, detect as od, paper_detect, proximity as op, quad as oq, Arith, CaseF64,
+    contain as oc, detect as od, paper_detect, proximity as op, quad as oq, Arith, CaseInput,
     Decided, Exact, ExactCase, ExactField, Q, V2,
 };
 use proptest::prelude::*;
@@ -1396,7 +1396,7 @@ impl Scene {
                 slab = None;
             }
         }
-        let c = CaseF64 {
+        let c = CaseInput {
             lookahead: self.t,
             buff: self.buff,
             fac: self.f,
@@ -1406,7 +1406,7 @@ impl Scene {
             velocities: &vels,
             slab,
         };
-        let exact = ExactCase::<Q>::from_f64(&c).ok()?;
+        let exact = ExactCase::<Q>::new(&c).ok()?;
         Some(paper_detect(&exact).detected)
     }
 

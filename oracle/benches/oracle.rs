@@ -9,8 +9,8 @@
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use polyguard_oracle::{
-    paper_detect, paper_detect_unfiltered, truth, truth_unfiltered, CaseF64, ExactCase, ExactField,
-    PaperAnswer, Truth,
+    paper_detect, paper_detect_unfiltered, truth, truth_unfiltered, CaseInput, ExactCase,
+    ExactField, PaperAnswer, Truth,
 };
 
 struct Rng(u64);
@@ -79,7 +79,7 @@ fn exact<F: ExactField>(cases: &[OwnedCase]) -> Vec<ExactCase<F>> {
     cases
         .iter()
         .filter_map(|c| {
-            ExactCase::from_f64(&CaseF64 {
+            ExactCase::new(&CaseInput {
                 lookahead: 300.0,
                 buff: 0.01,
                 fac: 1e-4,

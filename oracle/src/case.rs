@@ -1,15 +1,15 @@
-//! A detection case in exact numbers (spec/cases.md), its validation, and the
+//! A detection case in exact numbers (docs/cases.md), its validation, and the
 //! paper's choice of detection function (paper A §II.F and §III).
 
 use core::fmt;
 
-use crate::convert::{parse_rational, raw_from_f64, CaseF64};
+use crate::convert::parse_rational;
 use crate::detect::{detect_2d, dispatch, slab_scene, Method};
 use crate::field::{ExactField, V2};
 use crate::kernel::run::{Filtered, Scene, Single};
 use crate::kernel::{Decided, Exact, Intervals, Iv, Kernel};
 
-/// A case that breaks a rule of spec/cases.md; `field` is the spec's field name.
+/// A case that breaks a rule of docs/cases.md; `field` is the spec's field name.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct OracleError {
     /// The offending field, as the spec names it (e.g. "polygon.vertices").
@@ -71,78 +71,89 @@ pub struct ExactCase<F> {
     pub vertical: Option<Vertical<F>>,
 }
 
-/// A case written with exact rationals as strings ("p/q", "p" or "-1.25").
+/// A case as written, field for field as docs/cases.md names them, in any number type
+/// the oracle reads exactly ([`Input`]): the engine's binary floats, or text ("p/q", an
+/// integer or a decimal). [`ExactCase::new`] checks it and makes it exact.
 #[derive(Clone, Copy, Debug)]
-pub struct CaseStr<'a> {
+pub struct CaseInput<'a, N> {
     /// T.
-    pub lookahead: &'a str,
+    pub lookahead: N,
     /// BUFF.
-    pub buff: &'a str,
+    pub buff: N,
     /// F.
-    pub fac: &'a str,
+    pub fac: N,
     /// s, 2 or 3 numbers.
-    pub pos: &'a [&'a str],
+    pub pos: &'a [N],
     /// v, same length as `pos`.
-    pub vel: &'a [&'a str],
+    pub vel: &'a [N],
     /// P.
-    pub vertices: &'a [[&'a str; 2]],
+    pub vertices: &'a [[N; 2]],
     /// V (empty means all zero).
-    pub velocities: &'a [[&'a str; 2]],
+    pub velocities: &'a [[N; 2]],
     /// bottom, top, vz when 3D.
-    pub slab: Option<[&'a str; 3]>,
+    pub slab: Option<[N; 3]>,
+}
+
+/// A number the oracle reads exactly: a finite binary float is the dyadic rational it denotes
+/// (in convert.rs, the one module that names floats), text is "p/q", an integer or a
+/// decimal.
+pub trait Input: Copy {
+    /// The exact value, or what is wrong with `field`.
+    fn exact<F: ExactField>(self, field: &'static str) -> Result<F, OracleError>;
+}
+
+impl Input for &str {
+    fn exact<F: ExactField>(self, field: &'static str) -> Result<F, OracleError> {
+        parse_rational(self).ok_or_else(|| {
+            OracleError::new(
+                field,
+                format!("{self:?} is not an exact rational (p/q, integer or decimal)"),
+            )
+        })
+    }
 }
 
 /// Raw exact components before the rules are checked.
-pub(crate) struct Raw<F> {
-    pub(crate) lookahead: F,
-    pub(crate) buff: F,
-    pub(crate) fac: F,
-    pub(crate) pos: Vec<F>,
-    pub(crate) vel: Vec<F>,
-    pub(crate) vertices: Vec<V2<F>>,
-    pub(crate) velocities: Vec<V2<F>>,
-    pub(crate) slab: Option<[F; 3]>,
+struct Raw<F> {
+    lookahead: F,
+    buff: F,
+    fac: F,
+    pos: Vec<F>,
+    vel: Vec<F>,
+    vertices: Vec<V2<F>>,
+    velocities: Vec<V2<F>>,
+    slab: Option<[F; 3]>,
 }
 
 impl<F: ExactField> ExactCase<F> {
-    /// The exact case denoted by an engine case (every finite binary float is a rational).
-    pub fn from_f64(c: &CaseF64<'_>) -> Result<Self, OracleError> {
-        Self::from_raw(raw_from_f64(c)?)
-    }
-
-    /// The case written with exact rational strings.
-    pub fn from_strs(c: &CaseStr<'_>) -> Result<Self, OracleError> {
-        fn num<F: ExactField>(field: &'static str, x: &str) -> Result<F, OracleError> {
-            parse_rational(x).ok_or_else(|| {
-                OracleError::new(
-                    field,
-                    format!("{x:?} is not an exact rational (p/q, integer or decimal)"),
-                )
-            })
-        }
-        fn list<F: ExactField>(field: &'static str, xs: &[&str]) -> Result<Vec<F>, OracleError> {
-            xs.iter().map(|x| num(field, x)).collect()
-        }
-        fn pts<F: ExactField>(
+    /// The exact case a written case denotes, checked against docs/cases.md's rules.
+    pub fn new<N: Input>(c: &CaseInput<'_, N>) -> Result<Self, OracleError> {
+        fn list<F: ExactField, N: Input>(
             field: &'static str,
-            xs: &[[&str; 2]],
+            xs: &[N],
+        ) -> Result<Vec<F>, OracleError> {
+            xs.iter().map(|x| x.exact(field)).collect()
+        }
+        fn pts<F: ExactField, N: Input>(
+            field: &'static str,
+            xs: &[[N; 2]],
         ) -> Result<Vec<V2<F>>, OracleError> {
             xs.iter()
-                .map(|p| Ok(V2::new(num(field, p[0])?, num(field, p[1])?)))
+                .map(|p| Ok(V2::new(p[0].exact(field)?, p[1].exact(field)?)))
                 .collect()
         }
         let slab = match c.slab {
             None => None,
             Some([b, t, z]) => Some([
-                num("polygon.bottom", b)?,
-                num("polygon.top", t)?,
-                num("polygon.vz", z)?,
+                b.exact("polygon.bottom")?,
+                t.exact("polygon.top")?,
+                z.exact("polygon.vz")?,
             ]),
         };
         Self::from_raw(Raw {
-            lookahead: num("lookahead", c.lookahead)?,
-            buff: num("buff", c.buff)?,
-            fac: num("fac", c.fac)?,
+            lookahead: c.lookahead.exact("lookahead")?,
+            buff: c.buff.exact("buff")?,
+            fac: c.fac.exact("fac")?,
             pos: list("point.pos", c.pos)?,
             vel: list("point.vel", c.vel)?,
             vertices: pts("polygon.vertices", c.vertices)?,

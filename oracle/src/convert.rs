@@ -1,36 +1,15 @@
 //! The only module of the oracle that touches binary floating point: exact
-//! conversion of finite f64 values to rationals, the f64 form of a case, and the
+//! conversion of finite f64 values to rationals (the f64 [`Input`] of a case), and the
 //! parsing of exact rationals written as strings ("p/q", "p", "-1.25").
 //!
 //! Every finite f64 is a dyadic rational m·2^e, so the conversion loses nothing.
 
-use crate::case::{OracleError, Raw};
-use crate::field::{ExactField, V2};
+use crate::case::{Input, OracleError};
+use crate::field::ExactField;
 use crate::truth::ExactTime;
 use core::cmp::Ordering;
 use num_bigint::BigInt;
 use num_rational::BigRational;
-
-/// A case as the f64 engine sees it (spec/cases.md), borrowed.
-#[derive(Clone, Copy, Debug)]
-pub struct CaseF64<'a> {
-    /// T, the lookahead time.
-    pub lookahead: f64,
-    /// BUFF, the buffer distance.
-    pub buff: f64,
-    /// F, the small fraction.
-    pub fac: f64,
-    /// s = (x, y) or (x, y, z).
-    pub pos: &'a [f64],
-    /// v, same length as `pos`.
-    pub vel: &'a [f64],
-    /// P = p0 … pn.
-    pub vertices: &'a [[f64; 2]],
-    /// V = v0 … vn (an empty slice means all zero).
-    pub velocities: &'a [[f64; 2]],
-    /// bottom, top, vz of the vertical slab (paper A §III), when the case is 3D.
-    pub slab: Option<[f64; 3]>,
-}
 
 /// The exact value of a finite f64 (`None` for NaN and ±∞).
 pub fn f64_to_exact<F: ExactField>(x: f64) -> Option<F> {
@@ -49,41 +28,10 @@ pub fn f64_to_exact<F: ExactField>(x: f64) -> Option<F> {
     Some(F::from_dyadic(neg, mant, exp))
 }
 
-fn num<F: ExactField>(field: &'static str, x: f64) -> Result<F, OracleError> {
-    f64_to_exact(x).ok_or_else(|| OracleError::new(field, "not a finite number"))
-}
-
-fn list<F: ExactField>(field: &'static str, xs: &[f64]) -> Result<Vec<F>, OracleError> {
-    xs.iter().map(|&x| num(field, x)).collect()
-}
-
-fn pts<F: ExactField>(field: &'static str, xs: &[[f64; 2]]) -> Result<Vec<V2<F>>, OracleError> {
-    xs.iter()
-        .map(|p| Ok(V2::new(num(field, p[0])?, num(field, p[1])?)))
-        .collect()
-}
-
-/// The exact components of an f64 case, each checked finite (the remaining
-/// rules are checked by `ExactCase`).
-pub(crate) fn raw_from_f64<F: ExactField>(c: &CaseF64<'_>) -> Result<Raw<F>, OracleError> {
-    let slab = match c.slab {
-        None => None,
-        Some([b, t, z]) => Some([
-            num("polygon.bottom", b)?,
-            num("polygon.top", t)?,
-            num("polygon.vz", z)?,
-        ]),
-    };
-    Ok(Raw {
-        lookahead: num("lookahead", c.lookahead)?,
-        buff: num("buff", c.buff)?,
-        fac: num("fac", c.fac)?,
-        pos: list("point.pos", c.pos)?,
-        vel: list("point.vel", c.vel)?,
-        vertices: pts("polygon.vertices", c.vertices)?,
-        velocities: pts("polygon.velocities", c.velocities)?,
-        slab,
-    })
+impl Input for f64 {
+    fn exact<F: ExactField>(self, field: &'static str) -> Result<F, OracleError> {
+        f64_to_exact(self).ok_or_else(|| OracleError::new(field, "not a finite number"))
+    }
 }
 
 fn all_digits(s: &str) -> bool {

@@ -17,11 +17,11 @@
 //! run the exact kernel alone).
 //!
 //! ```
-//! use polyguard_oracle::{paper_detect, truth, CaseF64, ExactCase, Q, Truth};
+//! use polyguard_oracle::{paper_detect, truth, CaseInput, ExactCase, Q, Truth};
 //! let square = [[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]];
-//! let c = CaseF64 { lookahead: 10.0, buff: 0.01, fac: 1e-4, pos: &[-5.0, 5.0],
+//! let c = CaseInput { lookahead: 10.0, buff: 0.01, fac: 1e-4, pos: &[-5.0, 5.0],
 //!     vel: &[1.0, 0.0], vertices: &square, velocities: &[], slab: None };
-//! let exact = ExactCase::<Q>::from_f64(&c).unwrap();
+//! let exact = ExactCase::<Q>::new(&c).unwrap();
 //! assert!(paper_detect(&exact).detected);
 //! match truth(&exact) {
 //!     Truth::Enters { entry_time } => assert_eq!(entry_time.as_rational_string().as_deref(), Some("5/1")),
@@ -46,10 +46,9 @@ pub mod truth;
 pub mod well_formed;
 
 pub use case::{
-    paper_detect, paper_detect_unfiltered, paper_detect_with, CaseStr, ExactCase, OracleError,
-    PaperAnswer, Vertical,
+    paper_detect, paper_detect_unfiltered, paper_detect_with, CaseInput, ExactCase, Input,
+    OracleError, PaperAnswer, Vertical,
 };
-pub use convert::CaseF64;
 pub use detect::{Method, Sign};
 #[cfg(feature = "rug")]
 pub use field::R;

@@ -33,7 +33,7 @@ use polyguard_oracle::proximity::segments_close;
 use polyguard_oracle::truth::{earliest_contact, segments_intersect};
 use polyguard_oracle::{
     paper_detect, paper_detect_unfiltered, paper_detect_with, truth, truth_unfiltered, truth_with,
-    CaseF64, Decided, Exact, ExactCase, ExactField, Kernel, Q, V2,
+    CaseInput, Decided, Exact, ExactCase, ExactField, Kernel, Q, V2,
 };
 
 /// Interval-then-exact and exact-only answers for one case, in one backend.
@@ -88,7 +88,7 @@ struct F64Case {
 
 impl F64Case {
     fn exact<F: ExactField>(&self) -> Result<ExactCase<F>, polyguard_oracle::OracleError> {
-        ExactCase::from_f64(&CaseF64 {
+        ExactCase::new(&CaseInput {
             lookahead: self.lookahead,
             buff: self.buff,
             fac: self.fac,
@@ -420,7 +420,7 @@ fn a_lying_first_kernel_is_caught() {
 fn intervals_decide_easy_cases_and_abstain_on_ties() {
     let square = [[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]];
     let case = |pos: &[f64], vel: &[f64], vels: &[[f64; 2]]| {
-        ExactCase::<Q>::from_f64(&CaseF64 {
+        ExactCase::<Q>::new(&CaseInput {
             lookahead: 10.0,
             buff: 0.125,
             fac: 1e-4,

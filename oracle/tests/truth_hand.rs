@@ -1,7 +1,7 @@
 //! Hand-computed ground truths (entry times derived in the comments).
 
 use polyguard_oracle::truth::{earliest_contact, RootId};
-use polyguard_oracle::{truth, CaseF64, CaseStr, Decided, Exact, ExactCase, Truth, Q, V2};
+use polyguard_oracle::{truth, CaseInput, Decided, Exact, ExactCase, Truth, Q, V2};
 
 fn q(s: &str) -> Q {
     polyguard_oracle::convert::parse_rational(s).expect("valid test rational")
@@ -20,7 +20,7 @@ fn case2d(
     verts: &[[&str; 2]],
     vels: &[[&str; 2]],
 ) -> ExactCase<Q> {
-    let c = CaseStr {
+    let c = CaseInput {
         lookahead: t,
         buff: "1/100",
         fac: "1/10000",
@@ -30,7 +30,7 @@ fn case2d(
         velocities: vels,
         slab: None,
     };
-    ExactCase::from_strs(&c).expect("valid test case")
+    ExactCase::new(&c).expect("valid test case")
 }
 
 fn entry(t: &Truth) -> Option<String> {
@@ -173,7 +173,7 @@ fn truth_3d_windows() {
     // Square at rest; s = (−5, 5, 0) moving (1, 0, 1); slab [10, 20]: window
     // [10, 20]; the point is inside from t = 5 on, so the entry is at t = 10.
     let mk = |bottom: &str, top: &str, vsp: &str| {
-        let c = CaseStr {
+        let c = CaseInput {
             lookahead: "30",
             buff: "1/100",
             fac: "1/10000",
@@ -183,7 +183,7 @@ fn truth_3d_windows() {
             velocities: &[],
             slab: Some([bottom, top, vsp]),
         };
-        truth(&ExactCase::<Q>::from_strs(&c).expect("valid"))
+        truth(&ExactCase::<Q>::new(&c).expect("valid"))
     };
     assert_eq!(entry(&mk("10", "20", "0")).as_deref(), Some("10/1"));
     assert_eq!(entry(&mk("0", "20", "0")).as_deref(), Some("5/1"));
@@ -198,7 +198,7 @@ fn truth_3d_windows() {
 #[test]
 fn validation_names_fields() {
     let sq = [[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]];
-    let base = CaseF64 {
+    let base = CaseInput {
         lookahead: 10.0,
         buff: 0.01,
         fac: 1e-4,
@@ -208,62 +208,62 @@ fn validation_names_fields() {
         velocities: &[],
         slab: None,
     };
-    let err = |c: CaseF64<'_>| ExactCase::<Q>::from_f64(&c).err().map(|e| e.field);
+    let err = |c: CaseInput<'_, f64>| ExactCase::<Q>::new(&c).err().map(|e| e.field);
     assert_eq!(err(base), None);
     assert_eq!(
-        err(CaseF64 {
+        err(CaseInput {
             lookahead: 0.0,
             ..base
         }),
         Some("lookahead")
     );
     assert_eq!(
-        err(CaseF64 {
+        err(CaseInput {
             lookahead: f64::NAN,
             ..base
         }),
         Some("lookahead")
     );
-    assert_eq!(err(CaseF64 { buff: -1.0, ..base }), Some("buff"));
-    assert_eq!(err(CaseF64 { fac: 1.0, ..base }), Some("fac"));
-    assert_eq!(err(CaseF64 { fac: 0.0, ..base }), Some("fac"));
+    assert_eq!(err(CaseInput { buff: -1.0, ..base }), Some("buff"));
+    assert_eq!(err(CaseInput { fac: 1.0, ..base }), Some("fac"));
+    assert_eq!(err(CaseInput { fac: 0.0, ..base }), Some("fac"));
     assert_eq!(
-        err(CaseF64 {
+        err(CaseInput {
             pos: &[f64::INFINITY, 0.0],
             ..base
         }),
         Some("point.pos")
     );
     assert_eq!(
-        err(CaseF64 {
+        err(CaseInput {
             vel: &[0.0, 0.0, 0.0],
             ..base
         }),
         Some("point.vel")
     );
     assert_eq!(
-        err(CaseF64 {
+        err(CaseInput {
             vertices: &sq[..2],
             ..base
         }),
         Some("polygon.vertices")
     );
     assert_eq!(
-        err(CaseF64 {
+        err(CaseInput {
             velocities: &sq[..3],
             ..base
         }),
         Some("polygon.velocities")
     );
     assert_eq!(
-        err(CaseF64 {
+        err(CaseInput {
             slab: Some([0.0, 1.0, 0.0]),
             ..base
         }),
         Some("point.pos")
     );
     assert_eq!(
-        err(CaseF64 {
+        err(CaseInput {
             pos: &[0.0, 0.0, 0.0],
             vel: &[0.0, 0.0, 0.0],
             ..base
@@ -271,7 +271,7 @@ fn validation_names_fields() {
         Some("polygon.bottom")
     );
     assert_eq!(
-        err(CaseF64 {
+        err(CaseInput {
             slab: Some([0.0, f64::NAN, 0.0]),
             pos: &[0.0, 0.0, 0.0],
             vel: &[0.0, 0.0, 0.0],
@@ -279,7 +279,7 @@ fn validation_names_fields() {
         }),
         Some("polygon.top")
     );
-    let msg = ExactCase::<Q>::from_f64(&CaseF64 {
+    let msg = ExactCase::<Q>::new(&CaseInput {
         vertices: &sq[..2],
         ..base
     })

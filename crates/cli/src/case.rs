@@ -479,7 +479,7 @@ impl RawCase {
     pub fn exact<F: polyguard_oracle::ExactField>(
         &self,
     ) -> Result<polyguard_oracle::ExactCase<F>, polyguard_oracle::OracleError> {
-        polyguard_oracle::ExactCase::from_f64(&polyguard_oracle::CaseF64 {
+        polyguard_oracle::ExactCase::new(&polyguard_oracle::CaseInput {
             lookahead: self.lookahead,
             buff: self.buff,
             fac: self.fac,

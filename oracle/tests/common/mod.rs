@@ -4,7 +4,7 @@
 
 #![allow(dead_code)]
 
-use polyguard_oracle::{CaseStr, ExactCase, ExactField, OracleError};
+use polyguard_oracle::{CaseInput, ExactCase, ExactField, OracleError};
 
 /// A small deterministic generator (xorshift64*), seeded by proptest.
 pub struct Rng(u64);
@@ -63,10 +63,10 @@ impl GenCase {
             .iter()
             .map(|[x, y]| [x.as_str(), y.as_str()])
             .collect();
-        let c = CaseStr {
-            lookahead: &self.lookahead,
-            buff: &self.buff,
-            fac: &self.fac,
+        let c = CaseInput {
+            lookahead: self.lookahead.as_str(),
+            buff: self.buff.as_str(),
+            fac: self.fac.as_str(),
             pos: &pos,
             vel: &vel,
             vertices: &verts,
@@ -76,7 +76,7 @@ impl GenCase {
                 .as_ref()
                 .map(|[a, b, c]| [a.as_str(), b.as_str(), c.as_str()]),
         };
-        ExactCase::from_strs(&c)
+        ExactCase::new(&c)
     }
 }
 

@@ -7,43 +7,8 @@
 //!
 //! This is the only module besides [`crate::convert`] that names a float type.
 //!
-//! # Why it is rigorous
-//!
-//! - **Enclosures.** An [`Iv`] `[lo, hi]` stands for one real number x that the
-//!   exact kernel computes from the same formula, with lo ≤ x ≤ hi. Inputs are
-//!   enclosed by [`enclose`]: a dyadic rational that is a binary float exactly
-//!   (every input that came from f64) becomes the point interval; any other rational
-//!   gets end points that are *checked* exactly against it (lo, hi are converted back
-//!   to rationals and compared; no float conversion routine is trusted).
-//! - **Outward rounding.** Each operation computes the round-to-nearest result r
-//!   of IEEE 754 (+, −, ×, ÷ and √ are correctly rounded), whose error is at most
-//!   half an ulp; the end points are then moved outward by one ulp with
-//!   [`next_down`] / [`next_up`] (bit steps), so the exact result lies in
-//!   [next_down(r), next_up(r)] — also at binade boundaries, in the subnormal range
-//!   and on overflow (next_down(+∞) = MAX is below any overflowed true value).
-//!   Additions use Knuth's TwoSum instead, which yields the exact rounding error
-//!   and therefore the tightest directed result (a difference of equal floats
-//!   stays exactly 0); it is used only while no operand reaches 2^1000, where no
-//!   intermediate can overflow. A product or quotient with an exactly-zero factor
-//!   is exactly 0. Any NaN turns the interval into (−∞, +∞), and an operation on an
-//!   infinite end point returns (−∞, +∞): such intervals certify nothing. The value
-//!   operations of the kernel (|x|, least and greatest, max and min with a root) are
-//!   the enclosures of the exact results, with no decision.
-//! - **Decisions.** A sign is certain when the interval excludes 0 (lo > 0 or
-//!   hi < 0), or is the point [0, 0]; a comparison x < y is certainly true when
-//!   hi(x) < lo(y) and certainly false when lo(x) ≥ hi(y) (x ≤ y likewise), and
-//!   x = y is certain for two equal points or two disjoint intervals. Anything else
-//!   is `Err(Abstain)`. The paper functions combine decisions with Kleene's logic
-//!   ([`crate::kernel::or`] …), so a combined answer is certain only when every
-//!   completion of the abstentions gives it, and they follow a case split (the sign
-//!   of a leading coefficient, of a discriminant) only when it is certain: the
-//!   functions evaluate the *same* formulas as the exact kernel, on enclosures of
-//!   the same real numbers.
-//! - **Roots.** A root is an enclosure computed from enclosures of its
-//!   quadratic's coefficients (√ rounded outward, quotients only by enclosures that
-//!   exclude 0). It is never turned into an answer: the truth's entry time is
-//!   identified by which root of which contact quadratic it is, and the exact
-//!   kernel builds that root (`kernel/run.rs`).
+//! Why it is rigorous (enclosures, outward rounding, decisions, roots):
+//! docs/derivations.md, "The oracle's interval kernel".
 
 use core::cmp::Ordering;
 use std::borrow::Cow;

@@ -397,7 +397,7 @@ where
     let Some((a, b)) = slab_window(t, sz, vz, pmin, pmax, vsp) else {
         return false;
     };
-    let same = statically_shaped(vels);
+    let same = crate::detect::dispatch(false, vels) == crate::detect::Method::DetectSame2d;
     if a == 0.0 {
         if same {
             detect_same_2d(b, s, v, p, vels, buff)

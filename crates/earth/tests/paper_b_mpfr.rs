@@ -35,20 +35,8 @@ fn cases() -> usize {
         .unwrap_or(2000)
 }
 
-/// SplitMix64 for reproducible inputs.
-struct Rng(u64);
-impl Rng {
-    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        lo + (hi - lo) * ((z >> 11) as f64 / (1u64 << 53) as f64)
-    }
-}
-
 use mp::error_ulps as ulps;
+use polyguard_cli::harness::gen::{Source, SplitMix};
 
 struct Max(&'static str, f64);
 impl Max {
@@ -65,16 +53,16 @@ impl Drop for Max {
 
 #[test]
 fn mercator_forward_and_inverse() {
-    let mut r = Rng(1);
+    let mut r = SplitMix(1);
     let (mut fy, mut fl) = (Max("mercator_y", 0.0), Max("mercator_lat", 0.0));
     for _ in 0..cases() {
-        let lat = r.uniform(-85.0, 85.0).to_radians();
+        let lat = r.range(-85.0, 85.0).to_radians();
         fy.see(
             ulps(sphere::mercator_y(lat), &mp::mercator_y(lat), 0.0),
             || format!("{lat}"),
             MERCATOR_Y_ULPS,
         );
-        let y = r.uniform(-3.1, 3.1);
+        let y = r.range(-3.1, 3.1);
         fl.see(
             ulps(sphere::mercator_lat(y), &mp::mercator_lat(y), 0.0),
             || format!("{y}"),
@@ -85,18 +73,18 @@ fn mercator_forward_and_inverse() {
 
 #[test]
 fn rhumb_destination_and_inverse() {
-    let mut r = Rng(2);
+    let mut r = SplitMix(2);
     let (mut dlat, mut dlon) = (Max("destination lat", 0.0), Max("destination lon", 0.0));
     let (mut idist, mut ibrg) = (Max("inverse distance", 0.0), Max("inverse bearing", 0.0));
     for k in 0..cases() {
-        let p = LonLat::from_degrees(r.uniform(-60.0, 60.0), r.uniform(-70.0, 70.0));
+        let p = LonLat::from_degrees(r.range(-60.0, 60.0), r.range(-70.0, 70.0));
         // every 8th bearing exactly east or west (the limit of eqs 24/27/29)
         let b = match k % 8 {
             0 => core::f64::consts::FRAC_PI_2,
             4 => -core::f64::consts::FRAC_PI_2,
-            _ => r.uniform(-core::f64::consts::PI, core::f64::consts::PI),
+            _ => r.range(-core::f64::consts::PI, core::f64::consts::PI),
         };
-        let d = r.uniform(0.5, 300.0);
+        let d = r.range(0.5, 300.0);
         let q = sphere::rhumb_destination(p, b, d);
         let (mlon, mlat) = mp::rhumb_destination(p.lon, p.lat, b, d);
         let ctx = || format!("{p:?} {b} {d}");
@@ -111,7 +99,7 @@ fn rhumb_destination_and_inverse() {
 
 #[test]
 fn track_time_algorithm4() {
-    let mut r = Rng(3);
+    let mut r = SplitMix(3);
     let mut m = Max("track_time", 0.0);
     let dims = RectDims {
         front: 10.0,
@@ -119,21 +107,21 @@ fn track_time_algorithm4() {
         side: 10.0,
     };
     for k in 0..cases() {
-        let a = LonLat::from_degrees(r.uniform(-60.0, 60.0), r.uniform(-70.0, 70.0));
+        let a = LonLat::from_degrees(r.range(-60.0, 60.0), r.range(-70.0, 70.0));
         let b = if k % 8 == 0 {
             LonLat {
-                lon: a.lon + r.uniform(0.01, 0.05),
+                lon: a.lon + r.range(0.01, 0.05),
                 lat: a.lat,
             }
         } else {
             sphere::rhumb_destination(
                 a,
-                r.uniform(-core::f64::consts::PI, core::f64::consts::PI),
-                r.uniform(20.0, 200.0),
+                r.range(-core::f64::consts::PI, core::f64::consts::PI),
+                r.range(20.0, 200.0),
             )
         };
         let leg = sphere::Leg::new(a, b, 15.0, 0.0, dims);
-        let rho = r.uniform(0.05, 1.0);
+        let rho = r.range(0.05, 1.0);
         let t = leg.track_time(rho);
         let mt = mp::track_time((a.lon, a.lat), (b.lon, b.lat), 15.0, 0.0, rho);
         let [c0, c1] = leg.merc;

@@ -60,3 +60,112 @@ fn closed_stdout_still_writes_the_report() {
     assert_eq!(out.status.code(), Some(0), "{stderr}");
     assert!(dir.join("report.json").is_file(), "{stderr}");
 }
+
+fn assure(args: &[&str], out: &std::path::Path) -> (i32, String, String) {
+    let o = Command::new(env!("CARGO_BIN_EXE_polyguard"))
+        .arg("assure")
+        .args(args)
+        .arg("--out")
+        .arg(out)
+        .output()
+        .expect("run polyguard assure");
+    (
+        o.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&o.stdout).into_owned(),
+        String::from_utf8_lossy(&o.stderr).into_owned(),
+    )
+}
+
+fn merge(
+    reports: &[&std::path::Path],
+    extra: &[&str],
+    out: &std::path::Path,
+) -> (i32, String, String) {
+    let o = Command::new(env!("CARGO_BIN_EXE_polyguard"))
+        .args(["assure", "merge"])
+        .args(reports.iter().map(|d| d.join("report.json")))
+        .args(extra)
+        .arg("--out")
+        .arg(out)
+        .output()
+        .expect("run polyguard assure merge");
+    (
+        o.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&o.stdout).into_owned(),
+        String::from_utf8_lossy(&o.stderr).into_owned(),
+    )
+}
+
+/// Two shards merge into exactly the unsharded run's counts, with every kept case's
+/// files beside the merged report; the merges the issue found lying are refused with
+/// exit 2, and a partial one needs --partial and says PARTIAL.
+#[test]
+fn merges_are_exact_or_refused() {
+    let (whole, s0, s1, s0_other) = (
+        out_dir("merge-whole"),
+        out_dir("merge-s0"),
+        out_dir("merge-s1"),
+        out_dir("merge-s0-other-size"),
+    );
+    let base = ["--cases", "400", "--seed", "3", "--quiet"];
+    for (dir, shard) in [(&whole, None), (&s0, Some("0/2")), (&s1, Some("1/2"))] {
+        let mut args = base.to_vec();
+        if let Some(s) = shard {
+            args.extend(["--shard", s]);
+        }
+        let (code, out, err) = assure(&args, dir);
+        assert!(code == 0 || code == 1, "{out}{err}");
+    }
+    let merged = out_dir("merge-out");
+    let (code, out, err) = merge(&[&s0, &s1], &[], &merged);
+    assert!(code == 0 || code == 1, "{out}{err}");
+    let read = |d: &std::path::Path| -> serde_json::Value {
+        serde_json::from_str(&std::fs::read_to_string(d.join("report.json")).expect("report"))
+            .expect("JSON")
+    };
+    let (m, w) = (read(&merged), read(&whole));
+    for key in [
+        "cases",
+        "campaign_cases",
+        "by_method",
+        "by_mode",
+        "contract",
+        "kept",
+    ] {
+        assert_eq!(m[key], w[key], "{key}");
+    }
+    for k in m["kept"].as_array().expect("kept") {
+        for f in ["case_file", "svg_file"] {
+            let name = k[f].as_str().expect("file name");
+            assert!(
+                merged.join(name).is_file(),
+                "{name} did not travel with the merge"
+            );
+        }
+    }
+    // one shard alone; a shard twice; a shard of another campaign size
+    let (code, _, err) = merge(&[&s0], &[], &out_dir("merge-bad-1"));
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("shards 1/2 of the campaign are missing"),
+        "{err}"
+    );
+    let (code, _, err) = merge(&[&s0, &s0], &[], &out_dir("merge-bad-2"));
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("count twice"), "{err}");
+    let (code, _, err) = merge(&[&whole, &s1], &[], &out_dir("merge-bad-3"));
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("split"), "{err}");
+    let (code, out, err) = assure(
+        &["--cases", "500", "--seed", "3", "--quiet", "--shard", "0/2"],
+        &s0_other,
+    );
+    assert!(code == 0 || code == 1, "{out}{err}");
+    let (code, _, err) = merge(&[&s0_other, &s1], &[], &out_dir("merge-bad-4"));
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("500"), "{err}");
+    // a partial merge is allowed when asked for, and says so
+    let (code, out, err) = merge(&[&s0], &["--partial"], &out_dir("merge-partial"));
+    assert!(code == 0 || code == 1, "{out}{err}");
+    assert!(out.contains("PARTIAL: shards 1/2"), "{out}");
+}

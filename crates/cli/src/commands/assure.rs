@@ -55,14 +55,20 @@ pub struct AssureArgs {
 /// `polyguard assure merge`.
 #[derive(Debug, clap::Subcommand)]
 pub enum MergeCommand {
-    /// Join the report.json files of shards of one campaign exactly.
+    /// Join the report.json files of the shards of one campaign exactly, with their
+    /// counterexample files. Reports of different seeds, campaign sizes or shard counts,
+    /// a shard given twice, or a missing shard are refused (exit 2).
     Merge {
         /// The shards' report.json files.
         #[arg(required = true)]
         reports: Vec<PathBuf>,
-        /// Where the merged report.json goes.
+        /// Where the merged report.json and the counterexamples go.
         #[arg(long, default_value = "assure-merged")]
         out: PathBuf,
+        /// Merge even though shards of the campaign are missing; the report lists them
+        /// and the summary says PARTIAL.
+        #[arg(long)]
+        partial: bool,
     },
 }
 
@@ -150,8 +156,13 @@ fn write_counterexample(
 
 /// Runs `polyguard assure`.
 pub fn run(args: &AssureArgs) -> ExitCode {
-    if let Some(MergeCommand::Merge { reports, out }) = &args.merge {
-        return merge(reports, out);
+    if let Some(MergeCommand::Merge {
+        reports,
+        out,
+        partial,
+    }) = &args.merge
+    {
+        return merge(reports, out, *partial);
     }
     let (shard_i, shard_n) = args.shard.unwrap_or((0, 1));
     let threads = args
@@ -183,6 +194,8 @@ pub fn run(args: &AssureArgs) -> ExitCode {
     let report = Mutex::new(Report {
         seed: args.seed,
         shards: vec![format!("{shard_i}/{shard_n}")],
+        campaign_cases: args.cases,
+        contract_only: args.contract,
         ..Default::default()
     });
     let interesting: Mutex<Vec<(u64, Verdict, RawCase, &'static str)>> = Mutex::new(Vec::new());
@@ -271,6 +284,14 @@ fn finish(report: &Report, out: &Path) -> ExitCode {
         }
     }
     let mut text = report.table();
+    if !report.missing_shards.is_empty() {
+        text += &format!(
+            "PARTIAL: shards {} of this {}-case campaign are missing; the counts cover {} cases\n",
+            report.missing_shards.join(", "),
+            report.campaign_cases,
+            report.cases
+        );
+    }
     if report.rejected > 0 {
         text += &format!(
             "{} generated cases were rejected by the engine or the oracle\n",
@@ -317,37 +338,51 @@ fn finish(report: &Report, out: &Path) -> ExitCode {
     }
 }
 
-fn merge(paths: &[PathBuf], out: &Path) -> ExitCode {
-    let mut merged = Report::default();
+fn merge(paths: &[PathBuf], out: &Path, partial: bool) -> ExitCode {
+    let fail = |msg: String| {
+        eprintln!("polyguard assure merge: {msg}");
+        ExitCode::from(2)
+    };
+    let mut reports = Vec::with_capacity(paths.len());
     for p in paths {
         let text = match fs::read_to_string(p) {
             Ok(t) => t,
-            Err(e) => {
-                eprintln!("polyguard assure merge: cannot read {}: {e}", p.display());
-                return ExitCode::from(2);
-            }
+            Err(e) => return fail(format!("cannot read {}: {e}", p.display())),
         };
-        let r = match Report::from_json(&text) {
-            Ok(r) => r,
-            Err(e) => {
-                eprintln!(
-                    "polyguard assure merge: {} is not a report: {e}",
-                    p.display()
-                );
-                return ExitCode::from(2);
-            }
-        };
-        if let Err(e) = merged.merge(&r) {
-            eprintln!("polyguard assure merge: {}: {e}", p.display());
-            return ExitCode::from(2);
+        match Report::from_json(&text) {
+            Ok(r) => reports.push(r),
+            Err(e) => return fail(format!("{} is not a report: {e}", p.display())),
         }
     }
-    if let Err(e) = fs::create_dir_all(out) {
-        eprintln!(
-            "polyguard assure merge: cannot create {}: {e}",
-            out.display()
-        );
-        return ExitCode::from(2);
+    let merged = match Report::merge_campaign(&reports, partial) {
+        Ok(m) => m,
+        // name the files: the message counts reports from 1, in the order given
+        Err(e) => {
+            let names: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
+            return fail(format!("{e} (reports: {})", names.join(", ")));
+        }
+    };
+    if let Err(e) = fs::create_dir_all(out.join("counterexamples")) {
+        return fail(format!("cannot create {}: {e}", out.display()));
+    }
+    // The kept counterexamples' files travel with the merge: a merged report never lists
+    // a case file that is not beside it.
+    for (p, r) in paths.iter().zip(&reports) {
+        let dir = p.parent().unwrap_or_else(|| Path::new("."));
+        for k in &r.kept {
+            for f in [&k.case_file, &k.svg_file] {
+                let (from, to) = (dir.join(f), out.join(f));
+                if from != to {
+                    if let Err(e) = fs::copy(&from, &to) {
+                        return fail(format!(
+                            "{} lists {}, which cannot be copied: {e}",
+                            p.display(),
+                            from.display()
+                        ));
+                    }
+                }
+            }
+        }
     }
     finish(&merged, out)
 }

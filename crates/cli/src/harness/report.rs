@@ -86,6 +86,17 @@ pub struct Report {
     pub seed: u64,
     /// Shards included, as "i/N".
     pub shards: Vec<String>,
+    /// The campaign's size (`--cases`): all shards together draw cases 0 … campaign_cases − 1.
+    /// 0 in reports written before it was recorded, which `merge` refuses.
+    #[serde(default)]
+    pub campaign_cases: u64,
+    /// Whether the run checked the contract alone (`--contract`): its counts cannot be
+    /// merged with a classifying run's.
+    #[serde(default)]
+    pub contract_only: bool,
+    /// Shards of the campaign absent from a merge made with `--partial` (empty otherwise).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub missing_shards: Vec<String>,
     /// Cases generated.
     pub cases: u64,
     /// Cases the engine or oracle rejected (should be 0: the generator makes valid cases).
@@ -103,6 +114,22 @@ pub struct Report {
     pub contract: Contract,
     /// The counterexamples kept (minimised, with pictures).
     pub kept: Vec<Kept>,
+}
+
+/// "i/N" → (i, N), with i < N.
+fn parse_shard_name(s: &str) -> Option<(u64, u64)> {
+    let (i, n) = s.split_once('/')?;
+    let (i, n) = (i.parse().ok()?, n.parse().ok()?);
+    (i < n).then_some((i, n))
+}
+
+/// How many of the cases 0 … cases − 1 shard i of n draws (those k with k mod n = i).
+pub fn shard_size(cases: u64, i: u64, n: u64) -> u64 {
+    if i >= cases {
+        0
+    } else {
+        (cases - 1 - i) / n + 1
+    }
 }
 
 impl Report {
@@ -165,20 +192,6 @@ impl Report {
         self.contract.violations > 0 || self.totals().iter().any(|(c, n)| c.is_failure() && *n > 0)
     }
 
-    /// Joins another shard's report of the same seed: every count adds exactly.
-    pub fn merge(&mut self, other: &Report) -> Result<(), String> {
-        if self.cases > 0 && other.seed != self.seed {
-            return Err(format!("seeds differ: {} and {}", self.seed, other.seed));
-        }
-        if let Some(s) = other.shards.iter().find(|s| self.shards.contains(s)) {
-            return Err(format!("shard {s} is in both reports"));
-        }
-        self.seed = other.seed;
-        self.shards.extend(other.shards.iter().cloned());
-        self.absorb(other);
-        Ok(())
-    }
-
     /// Adds another report's counts, times and kept cases (no seed or shard checks: for
     /// the per-thread parts of one run).
     pub fn absorb(&mut self, other: &Report) {
@@ -201,6 +214,102 @@ impl Report {
         self.wall_seconds += other.wall_seconds;
         self.contract.absorb(&other.contract);
         self.kept.extend(other.kept.iter().cloned());
+    }
+
+    /// `assure merge`: the shards of one campaign joined exactly, or an error saying why
+    /// they are not one campaign. Every report must give the same seed, campaign size and
+    /// mode (classifying or `--contract`) and the same shard count N; no shard may come
+    /// twice; each must hold exactly the cases its shard draws. A shard of the campaign
+    /// that is absent is an error unless `partial`, and is then listed in
+    /// `missing_shards`.
+    pub fn merge_campaign(reports: &[Report], partial: bool) -> Result<Report, String> {
+        let Some(first) = reports.first() else {
+            return Err("no reports to merge".into());
+        };
+        let mut n_shards = None;
+        let mut seen: BTreeMap<u64, usize> = BTreeMap::new();
+        for (at, r) in reports.iter().enumerate() {
+            let which = format!("report {}", at + 1);
+            if r.campaign_cases == 0 {
+                return Err(format!(
+                    "{which} does not say its campaign's size (written before reports recorded it): run it again"
+                ));
+            }
+            if r.seed != first.seed {
+                return Err(format!(
+                    "{which}: seed {} where report 1 has {}",
+                    r.seed, first.seed
+                ));
+            }
+            if r.campaign_cases != first.campaign_cases {
+                return Err(format!(
+                    "{which}: a campaign of {} cases where report 1's has {}",
+                    r.campaign_cases, first.campaign_cases
+                ));
+            }
+            if r.contract_only != first.contract_only {
+                return Err(format!(
+                    "{which}: a --contract run and a classifying run cannot be merged"
+                ));
+            }
+            if !r.missing_shards.is_empty() {
+                return Err(format!("{which} is itself a partial merge"));
+            }
+            for s in &r.shards {
+                let (i, n) = parse_shard_name(s)
+                    .ok_or_else(|| format!("{which}: shard {s:?} is not i/N"))?;
+                match n_shards {
+                    None => n_shards = Some(n),
+                    Some(m) if m != n => {
+                        return Err(format!(
+                            "{which}: shard {s} of a campaign split {n} ways, the others are split {m} ways"
+                        ))
+                    }
+                    Some(_) => {}
+                }
+                if let Some(prev) = seen.insert(i, at) {
+                    return Err(format!(
+                        "{which}: shard {s} is also in report {} (its cases would count twice)",
+                        prev + 1
+                    ));
+                }
+            }
+            let want: u64 = r
+                .shards
+                .iter()
+                .filter_map(|s| parse_shard_name(s))
+                .map(|(i, n)| shard_size(r.campaign_cases, i, n))
+                .sum();
+            if r.cases != want {
+                return Err(format!(
+                    "{which}: {} cases where its shards {:?} of a {}-case campaign draw {want}",
+                    r.cases, r.shards, r.campaign_cases
+                ));
+            }
+        }
+        let n = n_shards.unwrap_or(1);
+        let missing: Vec<String> = (0..n)
+            .filter(|i| !seen.contains_key(i))
+            .map(|i| format!("{i}/{n}"))
+            .collect();
+        if !missing.is_empty() && !partial {
+            return Err(format!(
+                "shards {} of the campaign are missing (merge them too, or pass --partial)",
+                missing.join(", ")
+            ));
+        }
+        let mut merged = Report {
+            seed: first.seed,
+            campaign_cases: first.campaign_cases,
+            contract_only: first.contract_only,
+            ..Default::default()
+        };
+        for r in reports {
+            merged.shards.extend(r.shards.iter().cloned());
+            merged.absorb(r);
+        }
+        merged.missing_shards = missing;
+        Ok(merged)
     }
 
     /// The summary table: per paper function and per class, counts and rates.
@@ -310,42 +419,100 @@ mod tests {
         }
     }
 
+    /// A shard of `cases` cases with `n` verdicts drawn (`missed` of them misses).
+    fn shard(seed: u64, cases: u64, i: u64, n: u64, missed: u64) -> Report {
+        let mut r = Report {
+            seed,
+            campaign_cases: cases,
+            shards: vec![format!("{i}/{n}")],
+            ..Default::default()
+        };
+        for j in 0..shard_size(cases, i, n) {
+            let class = if j < missed {
+                Class::MissedDetection
+            } else {
+                Class::Agree
+            };
+            r.add(&verdict(class, Method::DetectSame2d), "free");
+        }
+        r
+    }
+
     #[test]
-    fn merge_adds_exactly_and_refuses_overlaps() {
-        let mut a = Report {
-            seed: 1,
-            shards: vec!["0/2".into()],
-            ..Default::default()
-        };
-        let mut b = Report {
-            seed: 1,
-            shards: vec!["1/2".into()],
-            ..Default::default()
-        };
-        a.add(&verdict(Class::Agree, Method::DetectSame2d), "free");
-        a.add(
-            &verdict(Class::MissedDetection, Method::DetectDiff2d),
-            "edge_buff",
-        );
-        b.add(&verdict(Class::Agree, Method::DetectSame2d), "free");
-        let mut m = a.clone();
-        m.merge(&b).expect("disjoint shards");
-        assert_eq!(m.cases, 3);
-        assert_eq!(m.totals()[&Class::Agree], 2);
-        assert_eq!(m.by_mode["free"][&Class::Agree], 2);
-        assert_eq!(m.nanos, [3, 6, 9]);
+    fn shard_sizes_cover_the_campaign() {
+        for cases in [0, 1, 2, 5, 7, 100] {
+            for n in 1..6 {
+                let total: u64 = (0..n).map(|i| shard_size(cases, i, n)).sum();
+                assert_eq!(total, cases, "{cases} cases in {n} shards");
+                for i in 0..n {
+                    let direct = (0..cases).filter(|k| k % n == i).count() as u64;
+                    assert_eq!(shard_size(cases, i, n), direct);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn merge_adds_exactly() {
+        let (a, b) = (shard(1, 5, 0, 2, 1), shard(1, 5, 1, 2, 0));
+        let m = Report::merge_campaign(&[a, b], false).expect("one campaign");
+        assert_eq!(m.cases, 5);
+        assert_eq!(m.campaign_cases, 5);
+        assert_eq!(m.totals()[&Class::Agree], 4);
+        assert_eq!(m.by_mode["free"][&Class::MissedDetection], 1);
+        assert_eq!(m.nanos, [5, 10, 15]);
         assert!(m.has_failures());
-        assert!(m.merge(&b).is_err(), "the same shard twice");
-        let other_seed = Report {
-            seed: 2,
-            shards: vec!["0/1".into()],
-            ..Default::default()
-        };
-        assert!(a.clone().merge(&other_seed).is_err());
+        assert!(m.missing_shards.is_empty());
         // JSON round trip.
         let json = serde_json::to_string(&m).expect("serialise");
         let back = Report::from_json(&json).expect("parse");
         assert_eq!(back, m);
+    }
+
+    /// Each way the issue found to make a merge lie is refused, and says why.
+    #[test]
+    fn merges_that_would_lie_are_refused() {
+        let err = |rs: &[Report], partial: bool| {
+            Report::merge_campaign(rs, partial)
+                .err()
+                .unwrap_or_default()
+        };
+        // one shard alone is not the campaign
+        assert!(err(&[shard(1, 5000, 0, 2, 0)], false)
+            .contains("shards 1/2 of the campaign are missing"));
+        // shards of a 5,000- and a 6,000-case campaign
+        assert!(
+            err(&[shard(1, 5000, 0, 2, 0), shard(1, 6000, 1, 2, 0)], false).contains("6000 cases")
+        );
+        // a full run plus a shard: split 1 way and 2 ways
+        assert!(
+            err(&[shard(1, 50, 0, 1, 0), shard(1, 50, 1, 2, 0)], false).contains("split 2 ways")
+        );
+        // the same shard twice
+        assert!(err(&[shard(1, 50, 0, 2, 0), shard(1, 50, 0, 2, 0)], false).contains("count twice"));
+        // different seeds
+        assert!(err(&[shard(1, 50, 0, 2, 0), shard(2, 50, 1, 2, 0)], false).contains("seed 2"));
+        // a shard whose counts do not match its size
+        let mut short = shard(1, 50, 1, 2, 0);
+        short.cases -= 1;
+        assert!(err(&[shard(1, 50, 0, 2, 0), short], false).contains("draw 25"));
+        // a report from before campaign sizes were recorded
+        let mut old = shard(1, 50, 0, 1, 0);
+        old.campaign_cases = 0;
+        assert!(err(&[old], false).contains("run it again"));
+        // contract-only and classifying runs
+        let mut contract = shard(1, 50, 1, 2, 0);
+        contract.contract_only = true;
+        assert!(err(&[shard(1, 50, 0, 2, 0), contract], false).contains("--contract"));
+    }
+
+    #[test]
+    fn a_partial_merge_says_what_is_missing() {
+        let m = Report::merge_campaign(&[shard(1, 90, 2, 3, 0)], true).expect("partial");
+        assert_eq!(m.missing_shards, vec!["0/3".to_owned(), "1/3".to_owned()]);
+        assert_eq!(m.cases, 30);
+        // and a partial merge is not merged again as if it were whole
+        assert!(Report::merge_campaign(&[m], true).is_err());
     }
 
     /// A merge reads reports strictly: a misspelt field, or a count given twice (serde

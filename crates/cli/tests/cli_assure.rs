@@ -169,3 +169,51 @@ fn merges_are_exact_or_refused() {
     assert!(code == 0 || code == 1, "{out}{err}");
     assert!(out.contains("PARTIAL: shards 1/2"), "{out}");
 }
+
+/// The hunt's canary (issue 9): on the same cases, judging the plain transcription finds
+/// missed detections (exit 1, kept and minimised), while the certified engine has none
+/// (exit 0). A hunt that found nothing against the plain engine would be blind.
+#[test]
+fn the_plain_engine_is_caught_and_the_certified_one_is_not() {
+    let args = ["--cases", "2000", "--seed", "1", "--quiet"];
+    let (plain, certified) = (out_dir("hunt-plain"), out_dir("hunt-certified"));
+    let mut with_plain = args.to_vec();
+    with_plain.extend(["--engine", "plain"]);
+    let (code, out, err) = assure(&with_plain, &plain);
+    assert_eq!(code, 1, "{out}{err}");
+    let report: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(plain.join("report.json")).expect("report"))
+            .expect("JSON");
+    assert_eq!(report["engine"], "plain");
+    let missed: u64 = report["by_method"]
+        .as_object()
+        .expect("by_method")
+        .values()
+        .filter_map(|m| m["missed_detection"].as_u64())
+        .sum();
+    assert!(missed >= 1, "{out}");
+    let kept = report["kept"].as_array().expect("kept");
+    assert!(
+        kept.iter().any(|k| k["class"] == "missed_detection"),
+        "{out}"
+    );
+    let (code, out, err) = assure(&args, &certified);
+    assert_eq!(code, 0, "{out}{err}");
+    // a merge keeps the verdict: the plain engine's misses still exit 1
+    let (code, _, err) = merge(&[&plain], &[], &out_dir("hunt-merge"));
+    assert_eq!(code, 1, "{err}");
+    // and the two engines' shards cannot be merged as one campaign
+    let mut shard_plain = with_plain.clone();
+    shard_plain.extend(["--shard", "0/2"]);
+    let (sp, sc) = (out_dir("hunt-plain-0"), out_dir("hunt-cert-1"));
+    let _ = assure(&shard_plain, &sp);
+    let mut shard_cert = args.to_vec();
+    shard_cert.extend(["--shard", "1/2"]);
+    let _ = assure(&shard_cert, &sc);
+    let (code, _, err) = merge(&[&sp, &sc], &[], &out_dir("hunt-merge-mixed"));
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("plain engine") || err.contains("f64 engine"),
+        "{err}"
+    );
+}

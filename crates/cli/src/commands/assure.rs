@@ -11,7 +11,7 @@ use std::sync::Mutex;
 use std::time::Instant;
 
 use crate::case::RawCase;
-use crate::harness::classify::{check_contract, compare, Class, Verdict};
+use crate::harness::classify::{check_contract, compare_as, Class, Hunted, Verdict};
 use crate::harness::gen::{any_case, SplitMix};
 use crate::harness::minimise::minimise;
 use crate::harness::report::{Kept, Report};
@@ -50,6 +50,28 @@ pub struct AssureArgs {
     /// arithmetic only where the engine does not certify a yes.
     #[arg(long)]
     pub contract: bool,
+    /// The f64 engine to judge: `f64` (the certified engine, the product) or `plain` (the
+    /// uncertified transcription: the canary a hunt that sees must catch missing entries).
+    #[arg(long, value_enum, default_value_t = EngineArg::F64)]
+    pub engine: EngineArg,
+}
+
+/// `--engine` of `polyguard assure`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum EngineArg {
+    /// The certified engine.
+    F64,
+    /// The plain f64 transcription of paper A.
+    Plain,
+}
+
+impl From<EngineArg> for Hunted {
+    fn from(e: EngineArg) -> Hunted {
+        match e {
+            EngineArg::F64 => Hunted::Certified,
+            EngineArg::Plain => Hunted::Plain,
+        }
+    }
 }
 
 /// `polyguard assure merge`.
@@ -114,9 +136,10 @@ fn write_counterexample(
     v: &Verdict,
     raw: &RawCase,
     mode: &str,
+    hunted: Hunted,
 ) -> std::io::Result<Kept> {
-    let small = minimise(raw, v.class);
-    let event = compare(&small)
+    let small = minimise(raw, v.class, hunted);
+    let event = compare_as(&small, hunted)
         .ok()
         .and_then(|w| w.entry_time)
         .and_then(|t| t.parse::<f64>().ok())
@@ -165,6 +188,13 @@ pub fn run(args: &AssureArgs) -> ExitCode {
         return merge(reports, out, *partial);
     }
     let (shard_i, shard_n) = args.shard.unwrap_or((0, 1));
+    let hunted = Hunted::from(args.engine);
+    if args.contract && hunted != Hunted::Certified {
+        eprintln!(
+            "polyguard assure: --contract judges the certified engine (and counts the plain one's breaches as its canary); drop --engine plain"
+        );
+        return ExitCode::from(2);
+    }
     let threads = args
         .threads
         .unwrap_or_else(|| {
@@ -196,6 +226,7 @@ pub fn run(args: &AssureArgs) -> ExitCode {
         shards: vec![format!("{shard_i}/{shard_n}")],
         campaign_cases: args.cases,
         contract_only: args.contract,
+        engine: hunted.name().into(),
         ..Default::default()
     });
     let interesting: Mutex<Vec<(u64, Verdict, RawCase, &'static str)>> = Mutex::new(Vec::new());
@@ -223,7 +254,7 @@ pub fn run(args: &AssureArgs) -> ExitCode {
                         bar.inc(1);
                         continue;
                     }
-                    match compare(&raw) {
+                    match compare_as(&raw, hunted) {
                         Ok(v) => {
                             local.add(&v, mode);
                             if is_kept_class(v.class) {
@@ -258,7 +289,7 @@ pub fn run(args: &AssureArgs) -> ExitCode {
     let mut found = interesting.into_inner().unwrap_or_default();
     found.sort_by_key(|(k, _, _, _)| *k);
     for (k, v, raw, mode) in &found {
-        match write_counterexample(&args.out, *k, v, raw, mode) {
+        match write_counterexample(&args.out, *k, v, raw, mode, hunted) {
             Ok(kept) => report.kept.push(kept),
             Err(e) => eprintln!("polyguard assure: cannot write counterexample {k}: {e}"),
         }

@@ -129,8 +129,35 @@ pub fn classify(
     }
 }
 
+/// Which f64 engine a campaign judges.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Hunted {
+    /// The certified engine: the product.
+    #[default]
+    Certified,
+    /// The plain f64 transcription of paper A (no certificate): the hunt's canary, which
+    /// misses true entries that a hunt able to see must find.
+    Plain,
+}
+
+impl Hunted {
+    /// The name `--engine` takes and reports carry: "f64" or "plain".
+    pub fn name(self) -> &'static str {
+        match self {
+            Hunted::Certified => "f64",
+            Hunted::Plain => "plain",
+        }
+    }
+}
+
 /// Runs the engine, paper-exact and the truth on one case.
 pub fn compare(raw: &RawCase) -> Result<Verdict, CompareError> {
+    compare_as(raw, Hunted::Certified)
+}
+
+/// [`compare`] judging the `hunted` engine: the class, and `engine` in the verdict, are
+/// that engine's.
+pub fn compare_as(raw: &RawCase, hunted: Hunted) -> Result<Verdict, CompareError> {
     let case = raw
         .to_api()
         .map_err(|e| CompareError::Engine(e.to_string()))?;
@@ -161,6 +188,10 @@ pub fn compare(raw: &RawCase) -> Result<Verdict, CompareError> {
             .exact::<Exact>()
             .map(|c| polyguard_oracle::paper_detect(&c).detected)
             .unwrap_or(true)
+    };
+    let engine = match hunted {
+        Hunted::Certified => engine,
+        Hunted::Plain => plain,
     };
     let class = classify(engine, paper, truth, wide);
     let ns = |d: Duration| u64::try_from(d.as_nanos()).unwrap_or(u64::MAX);

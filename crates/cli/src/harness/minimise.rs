@@ -1,6 +1,6 @@
 //! Minimising a counterexample: fewer vertices and shorter numbers, same class.
 
-use super::classify::{compare, Class};
+use super::classify::{compare_as, Class, Hunted};
 use crate::case::RawCase;
 
 /// How many comparisons one minimisation may spend (each runs the exact oracle).
@@ -32,8 +32,9 @@ fn numbers(raw: &mut RawCase) -> Vec<&mut f64> {
     v
 }
 
-/// A smaller case of the same class (greedy; at most [`BUDGET`] comparisons).
-pub fn minimise(raw: &RawCase, class: Class) -> RawCase {
+/// A smaller case of the same class for the `hunted` engine (greedy; at most [`BUDGET`]
+/// comparisons).
+pub fn minimise(raw: &RawCase, class: Class, hunted: Hunted) -> RawCase {
     let mut best = raw.clone();
     let mut budget = BUDGET;
     let keeps = |c: &RawCase, budget: &mut usize| -> bool {
@@ -41,7 +42,7 @@ pub fn minimise(raw: &RawCase, class: Class) -> RawCase {
             return false;
         }
         *budget -= 1;
-        matches!(compare(c), Ok(v) if v.class == class)
+        matches!(compare_as(c, hunted), Ok(v) if v.class == class)
     };
     // Fewer vertices.
     let mut k = 0;
@@ -106,8 +107,11 @@ mod tests {
             velocities: vec![[0.0, 0.0]; 8],
             slab: None,
         };
-        let small = minimise(&raw, Class::Agree);
+        let small = minimise(&raw, Class::Agree, Hunted::Certified);
         assert!(small.vertices.len() < 8);
-        assert_eq!(compare(&small).map(|v| v.class), Ok(Class::Agree));
+        assert_eq!(
+            compare_as(&small, Hunted::Certified).map(|v| v.class),
+            Ok(Class::Agree)
+        );
     }
 }

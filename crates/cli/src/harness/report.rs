@@ -5,7 +5,7 @@ use std::collections::BTreeMap;
 
 use serde::{Deserialize, Serialize};
 
-use super::classify::{Class, ContractVerdict, Verdict};
+use super::classify::{Class, ContractVerdict, Hunted, Verdict};
 
 /// A kept counterexample (its case is written beside the report).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -94,6 +94,9 @@ pub struct Report {
     /// merged with a classifying run's.
     #[serde(default)]
     pub contract_only: bool,
+    /// The f64 engine judged: "f64" (the certified engine) or "plain" (the canary).
+    #[serde(default = "certified_name")]
+    pub engine: String,
     /// Shards of the campaign absent from a merge made with `--partial` (empty otherwise).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub missing_shards: Vec<String>,
@@ -114,6 +117,11 @@ pub struct Report {
     pub contract: Contract,
     /// The counterexamples kept (minimised, with pictures).
     pub kept: Vec<Kept>,
+}
+
+/// The certified engine's name in reports ("f64"), for reports written before `engine`.
+fn certified_name() -> String {
+    Hunted::Certified.name().into()
 }
 
 /// "i/N" → (i, N), with i < N.
@@ -252,6 +260,12 @@ impl Report {
                     "{which}: a --contract run and a classifying run cannot be merged"
                 ));
             }
+            if r.engine != first.engine {
+                return Err(format!(
+                    "{which} judges the {} engine, report 1 the {} engine",
+                    r.engine, first.engine
+                ));
+            }
             if !r.missing_shards.is_empty() {
                 return Err(format!("{which} is itself a partial merge"));
             }
@@ -302,6 +316,7 @@ impl Report {
             seed: first.seed,
             campaign_cases: first.campaign_cases,
             contract_only: first.contract_only,
+            engine: first.engine.clone(),
             ..Default::default()
         };
         for r in reports {

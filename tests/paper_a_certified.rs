@@ -28,7 +28,7 @@
 //! the minimal failing input.
 
 mod common;
-use common::{dist2_point_segment, dist2_segments};
+use common::{dist2_point_segment, dist2_segments, q, qpoly, qv};
 use std::cell::Cell;
 use std::cmp::Ordering;
 use std::f64::consts::TAU;
@@ -46,7 +46,6 @@ use polyguard::{
     detect_same_2d, detect_same_2d_tri, dot_nn_lin, edge_detect, edge_detect_simp, near_edge,
     quad_min_box_le_d, quad_min_le_d, segments_close, Interval, Sign, Tri, Vect2,
 };
-use polyguard_oracle::convert::f64_to_exact;
 use polyguard_oracle::detect::Interval as ExactInterval;
 use polyguard_oracle::qfield::Alg;
 use polyguard_oracle::{
@@ -153,18 +152,6 @@ fn check_bool(engine: bool, oracle: bool, what: &str) -> Result<(), TestCaseErro
 }
 
 // ================================================================== exact numbers
-
-fn q(x: f64) -> Q {
-    f64_to_exact(x).expect("finite input")
-}
-
-fn qv(p: Vect2) -> V2<Q> {
-    V2::new(q(p.x), q(p.y))
-}
-
-fn qpoly(ps: &[Vect2]) -> Vec<V2<Q>> {
-    ps.iter().map(|&p| qv(p)).collect()
-}
 
 fn finite(ps: &[Vect2]) -> bool {
     ps.iter().all(|p| p.x.is_finite() && p.y.is_finite())

@@ -54,7 +54,7 @@
 //! interval suites compare the pair of intervals up to that swap.
 
 mod common;
-use common::{dist2_point_segment, dist2_segments};
+use common::{dist2_point_segment, dist2_segments, q, qpoly, qv};
 use std::cmp::Ordering;
 use std::f64::consts::TAU;
 
@@ -64,7 +64,7 @@ use polyguard::{
     edge_detect_simp, near_edge, num_cross, perturb, quad_min_box_le_d, quad_min_le_d,
     segments_close, well_formed, Interval, Sign, Vect2,
 };
-use polyguard_oracle::convert::{f64_to_exact, to_float};
+use polyguard_oracle::convert::to_float;
 use polyguard_oracle::detect::Interval as ExactInterval;
 use polyguard_oracle::qfield::Alg;
 use polyguard_oracle::{
@@ -81,18 +81,6 @@ fn cases() -> u32 {
 }
 
 // ------------------------------------------------------------------ exact conversions
-
-fn q(x: f64) -> Q {
-    f64_to_exact(x).expect("grid values are finite")
-}
-
-fn qv(p: Vect2) -> V2<Q> {
-    V2::new(q(p.x), q(p.y))
-}
-
-fn qpoly(ps: &[Vect2]) -> Vec<V2<Q>> {
-    ps.iter().map(|&p| qv(p)).collect()
-}
 
 /// The relative step of the robustness check of the §II.I/§III detectors.
 const DELTA: f64 = 1.0 / 1_048_576.0;

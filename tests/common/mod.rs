@@ -1,6 +1,24 @@
-//! What the paper-A tests share: exact distances, to place cases at exact ties.
+//! What the paper-A tests share: the exact value of the engine's inputs, and exact
+//! distances, to place cases at exact ties.
 
+use polyguard::Vect2;
+use polyguard_oracle::convert::f64_to_exact;
 use polyguard_oracle::{Arith, Decided, Exact, ExactField, Q, V2};
+
+/// The exact value of a finite f64 (the tests draw finite inputs only).
+pub fn q(x: f64) -> Q {
+    f64_to_exact(x).expect("test inputs are finite")
+}
+
+/// The exact value of a point.
+pub fn qv(p: Vect2) -> V2<Q> {
+    V2::new(q(p.x), q(p.y))
+}
+
+/// The exact values of a polygon's points.
+pub fn qpoly(ps: &[Vect2]) -> Vec<V2<Q>> {
+    ps.iter().map(|&p| qv(p)).collect()
+}
 
 /// Exact squared distance from s to the segment a b.
 pub fn dist2_point_segment(s: &V2<Q>, a: &V2<Q>, b: &V2<Q>) -> Q {

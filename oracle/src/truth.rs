@@ -2,10 +2,11 @@
 //! in 3D, in the closed slab) for some t ∈ [0, T], and when first?
 //!
 //! Method. Restrict time to the window W = [t0, t1] (the slab window of paper A
-//! §III in 3D, [0, T] in 2D) and shift the clock to t0. The polygon must stay
-//! simple on W; then, by continuity, the point enters the closed polygon first
-//! either at t0 (it is inside or on the boundary then) or at the earliest time it
-//! lies on an edge. The point x(t) lies on the edge a(t) b(t) exactly when
+//! §III in 3D, [0, T] in 2D) and shift the clock to t0. The point's winding number
+//! around P(t) is constant while the point lies on no edge (it is continuous in t
+//! away from the boundary), so the point enters the closed polygon first either at
+//! t0 (it is on an edge or inside then) or at the earliest time it lies on an edge.
+//! The point x(t) lies on the edge a(t) b(t) exactly when
 //! g(t) = (x − a) × (b − a) = 0 (a quadratic in t) and
 //! h1(t) = (x − a)·(b − a) ≥ 0 and h2(t) = (b − x)·(b − a) ≥ 0. The roots of g
 //! are algebraic numbers (p + q√d)/r, the signs of h1, h2 at them are decided
@@ -13,13 +14,20 @@
 //! line), the solution sets of h1 ≥ 0 and h2 ≥ 0 are exact unions of intervals
 //! ([`crate::detect::dot_nn_lin`], which covers every degenerate case).
 //!
-//! Simplicity on W: checked at the start of W directly (no two non-adjacent
-//! edges meet). Later, a simple polygon stops being simple only through a vertex
-//! lying on a non-incident edge (two non-adjacent edges first touch at an end
-//! point; folding adjacent edges put an end point on the other edge; a collapsing
-//! edge puts its vertex on the next edge). So it is simple on all of W exactly
-//! when it is at the start and no vertex ever meets a non-incident edge in W —
-//! the same contact test as for the point.
+//! Polygons that are not simple. Paper A assumes P(t) simple; the truth does not
+//! need it. Where no fill rule can matter it answers anyway: a point on an edge of
+//! P(t) is in the closed polygon (it touches the boundary), a point of odd winding
+//! number is inside by the nonzero and the even-odd rule alike, a point of winding
+//! number 0 is outside by both. So the answer is defined unless the point starts
+//! the window with an even, non-zero winding number, which only a polygon that is
+//! not simple at t0 allows (a simple polygon winds 0 or ±1 times around a point off
+//! its edges): then it is `Undefined`, naming two crossing edges. Whether the
+//! polygon stays simple on W (the paper's premise) is a separate exact question,
+//! [`simple_on_window`], which the generators ask: a simple polygon stops being
+//! simple only through a vertex lying on a non-incident edge (two non-adjacent
+//! edges first touch at an end point; folding adjacent edges put an end point on
+//! the other edge; a collapsing edge puts its vertex on the next edge), the same
+//! contact test as for the point.
 
 use core::cmp::Ordering;
 use core::fmt;
@@ -244,7 +252,9 @@ pub enum Truth {
     },
     /// It never is.
     Misses,
-    /// The question has no answer: the polygon is not simple at some time of the window.
+    /// The question has no answer: at the window's start the polygon is not simple and
+    /// the point winds around it an even, non-zero number of times, inside by the
+    /// nonzero rule and outside by the even-odd rule (see the module doc).
     Undefined {
         /// Why.
         reason: String,
@@ -484,12 +494,13 @@ pub fn segments_intersect<N: Arith, K: Kernel<N>>(
     )
 }
 
-/// Whether s lies in the closed polygon P (on an edge, or winding number ≠ 0).
-pub fn in_closed_polygon<N: Arith, K: Kernel<N>>(
+/// The winding number of P around s, `None` when s lies on an edge of P (closed
+/// segments; P need not be simple).
+pub fn winding_number<N: Arith, K: Kernel<N>>(
     k: &K,
     p: &[V2<N>],
     s: &V2<N>,
-) -> Result<bool, K::Abstain> {
+) -> Result<Option<i64>, K::Abstain> {
     let n = p.len();
     let mut winding: i64 = 0;
     for i in 0..n {
@@ -504,7 +515,7 @@ pub fn in_closed_polygon<N: Arith, K: Kernel<N>>(
             not(k.is_neg(&b.minus(s).dot(&e))),
         )?;
         if on_edge {
-            return Ok(true);
+            return Ok(None);
         }
         if k.le(&a.y, &s.y)? {
             if and(k.lt(&s.y, &b.y), || k.is_pos(&o))? {
@@ -514,7 +525,16 @@ pub fn in_closed_polygon<N: Arith, K: Kernel<N>>(
             winding -= 1;
         }
     }
-    Ok(winding != 0)
+    Ok(Some(winding))
+}
+
+/// Whether s lies in the closed polygon P (on an edge, or winding number ≠ 0).
+pub fn in_closed_polygon<N: Arith, K: Kernel<N>>(
+    k: &K,
+    p: &[V2<N>],
+    s: &V2<N>,
+) -> Result<bool, K::Abstain> {
+    Ok(winding_number(k, p, s)?.is_none_or(|w| w != 0))
 }
 
 /// One sign test of the truth on its scene (the grain of the fallback).
@@ -522,8 +542,6 @@ pub fn in_closed_polygon<N: Arith, K: Kernel<N>>(
 enum Check {
     /// The edges from vertices i and m meet.
     Cross(usize, usize),
-    /// s is in the closed polygon.
-    Inside,
 }
 
 impl Unit for Check {
@@ -534,11 +552,30 @@ impl Unit for Check {
         let next = |i: usize| (i + 1) % p.len();
         match *self {
             Check::Cross(i, m) => segments_intersect(k, &p[i], &p[next(i)], &p[m], &p[next(m)]),
-            Check::Inside => in_closed_polygon(k, p, &sc.s),
         }
     }
 
     fn map_root<A, B>(out: bool, _: impl FnMut(A) -> B) -> bool {
+        out
+    }
+}
+
+/// Where s is at the scene's start: on an edge (`None`) or its winding number.
+#[derive(Clone, Copy, Debug)]
+struct Place;
+
+impl Unit for Place {
+    type Out<R> = Option<i64>;
+
+    fn run<N: Arith, K: Kernel<N>>(
+        &self,
+        k: &K,
+        sc: &Scene<'_, N>,
+    ) -> Result<Option<i64>, K::Abstain> {
+        winding_number(k, &sc.p, &sc.s)
+    }
+
+    fn map_root<A, B>(out: Option<i64>, _: impl FnMut(A) -> B) -> Option<i64> {
         out
     }
 }
@@ -649,26 +686,47 @@ fn window<F: ExactField>(c: &ExactCase<F>) -> Option<(F, F)> {
     }
 }
 
-/// The answer when edges i-(i+1) and m-(m+1) meet at the window's start.
-fn crossing_at_start(n: usize, i: usize, m: usize) -> Truth {
-    Truth::Undefined {
-        reason: format!(
-            "the polygon is not simple: edges {i}-{} and {m}-{} cross at the window's start",
-            (i + 1) % n,
-            (m + 1) % n
-        ),
-    }
+/// The first pair of non-adjacent edges that meet at the scene's start, as vertex
+/// indices (i, m) of their first ends.
+fn first_crossing<F: ExactField, R: Resolve<F>>(r: &R) -> Option<(usize, usize)> {
+    let n = r.count();
+    (0..n)
+        .flat_map(|i| ((i + 2)..n).map(move |m| (i, m)))
+        .filter(|&(i, m)| !(i == 0 && m == n - 1))
+        .find(|&(i, m)| r.run(&Check::Cross(i, m)).decided())
 }
 
-/// The answer when vertex m meets edge i-j at the shifted time tc + t0.
-fn vertex_meets_edge<F: ExactField>(m: usize, i: usize, j: usize, tc: &Alg<F>, t0: &F) -> Truth {
-    let when = ExactTime::from_alg(&tc.shifted(t0));
-    Truth::Undefined {
-        reason: format!(
-            "the polygon is not simple: vertex {m} meets edge {i}-{j} at t = {}",
-            when.to_decimal_string(9)
-        ),
+/// Why the polygon is not simple on the window: two edges cross at its start, or
+/// a vertex meets a non-incident edge at a time of the window (see the module doc);
+/// `None` when it is simple throughout.
+fn not_simple<F: ExactField, R: Resolve<F>>(r: &R, t0: &F) -> Option<String> {
+    let n = r.count();
+    if let Some((i, m)) = first_crossing(r) {
+        return Some(format!(
+            "edges {i}-{} and {m}-{} cross at the window's start",
+            (i + 1) % n,
+            (m + 1) % n
+        ));
     }
+    for i in 0..n {
+        let j = (i + 1) % n;
+        for m in (0..n).filter(|&m| m != i && m != j) {
+            let u = Touch {
+                mover: Mover::Vertex(m),
+                edge: i,
+            };
+            if let Some(c) = r.run(&u).decided() {
+                if let Some(tc) = exact_time(r, &u, &c) {
+                    let when = ExactTime::from_alg(&tc.shifted(t0));
+                    return Some(format!(
+                        "vertex {m} meets edge {i}-{j} at t = {}",
+                        when.to_decimal_string(9)
+                    ));
+                }
+            }
+        }
+    }
+    None
 }
 
 /// The truth on the scene restarted at the window's start t0 (see the module
@@ -680,41 +738,32 @@ fn ground_truth<F: ExactField, R: Resolve<F>>(r: &R, t0: &F) -> Truth {
             reason: "fewer than 3 vertices or velocities of the wrong length".to_string(),
         };
     }
-    // Simplicity at the window's start: non-adjacent edges do not meet
-    // (vertices on non-incident edges are caught by the contact test below).
-    for i in 0..n {
-        for m in (i + 2)..n {
-            if i == 0 && m == n - 1 {
-                continue;
-            }
-            if r.run(&Check::Cross(i, m)).decided() {
-                return crossing_at_start(n, i, m);
-            }
-        }
-    }
-    // Simplicity on the window: no vertex ever meets a non-incident edge.
-    for i in 0..n {
-        let j = (i + 1) % n;
-        for m in 0..n {
-            if m == i || m == j {
-                continue;
-            }
-            let u = Touch {
-                mover: Mover::Vertex(m),
-                edge: i,
+    let start = Truth::Enters {
+        entry_time: ExactTime::rational(t0.to_big()),
+    };
+    match r.run(&Place).decided() {
+        // On the boundary, or inside by every fill rule.
+        None => return start,
+        Some(w) if w % 2 != 0 => return start,
+        Some(0) => {}
+        Some(w) => {
+            let edges = first_crossing(r)
+                .map(|(i, m)| {
+                    format!(
+                        "edges {i}-{} and {m}-{} cross",
+                        (i + 1) % n,
+                        (m + 1) % n
+                    )
+                })
+                .unwrap_or_else(|| "it is not simple".into());
+            return Truth::Undefined {
+                reason: format!(
+                    "at the window's start {edges} and the point's winding number is {w}: inside by the nonzero rule, outside by the even-odd rule"
+                ),
             };
-            if let Some(c) = r.run(&u).decided() {
-                if let Some(tc) = exact_time(r, &u, &c) {
-                    return vertex_meets_edge(m, i, j, &tc, t0);
-                }
-            }
         }
     }
-    if r.run(&Check::Inside).decided() {
-        return Truth::Enters {
-            entry_time: ExactTime::rational(t0.to_big()),
-        };
-    }
+    // Outside by every rule at the start: the first entry is the first contact.
     let found: Vec<(Touch, Contact<R::Root>)> = (0..n)
         .filter_map(|edge| {
             let u = Touch {
@@ -758,7 +807,7 @@ fn on_window<F: ExactField>(
 }
 
 /// The ground truth of a case: `Enters` with the exact first entry time,
-/// `Misses`, or `Undefined` when the polygon is not simple during the window.
+/// `Misses`, or `Undefined` when the fill rule decides (see the module doc).
 ///
 /// Every sign test and contact test runs in the interval kernel first
 /// ([`Intervals`]) and, when it abstains, in the exact kernel; the answer is
@@ -794,4 +843,27 @@ pub fn truth_unfiltered<F: ExactField>(c: &ExactCase<F>) -> Truth {
         };
         ground_truth(&Single::new(&Exact, sc), t0)
     })
+}
+
+/// Paper A §II's premise, decided exactly: is the polygon simple at every time of
+/// [0, T] (the whole lookahead, also in 3D)? `Err` says why not: two edges that cross
+/// at t = 0, or a vertex meeting a non-incident edge and when. The generators ask it
+/// of every warping polygon and redraw the ones that fail.
+pub fn simple_on_window<F: ExactField>(c: &ExactCase<F>) -> Result<(), String> {
+    if c.vertices.len() < 3 || c.vertices.len() != c.velocities.len() {
+        return Err("fewer than 3 vertices or velocities of the wrong length".into());
+    }
+    let sc = Scene::new(
+        &c.lookahead,
+        &c.s,
+        &c.v,
+        &c.vertices,
+        &c.velocities,
+        &c.buff,
+        &c.fac,
+    );
+    match not_simple(&Filtered::new(&Intervals, sc), &F::zero()) {
+        Some(why) => Err(why),
+        None => Ok(()),
+    }
 }

@@ -457,7 +457,8 @@ fn intervals_decide_easy_cases_and_abstain_on_ties() {
         assert_eq!(paper_detect_with(&probe, &c), paper_detect_unfiltered(&c));
         assert_eq!(truth_with(&probe, &c), truth_unfiltered(&c));
         assert_eq!(probe.abstained.get(), 0, "{pos:?} {vel:?}");
-        assert!(probe.decided.get() > 50, "{}", probe.decided.get());
+        // (the truth no longer asks the n² simplicity questions: 50 decisions here)
+        assert!(probe.decided.get() >= 30, "{}", probe.decided.get());
     }
     // Exactly BUFF from an edge's end (a 3-4-5 triangle of dyadic sides): a tie
     // only the exact kernel can break; nearer and farther are certain.

@@ -1,6 +1,6 @@
 //! Hand-computed ground truths (entry times derived in the comments).
 
-use polyguard_oracle::truth::{earliest_contact, RootId};
+use polyguard_oracle::truth::{earliest_contact, simple_on_window, RootId};
 use polyguard_oracle::{truth, CaseInput, Decided, Exact, ExactCase, Truth, Q, V2};
 
 fn q(s: &str) -> Q {
@@ -146,26 +146,65 @@ fn figure_2_truth_rational_and_irrational() {
 }
 
 #[test]
-fn non_simple_polygons_are_undefined() {
-    // A bow tie at rest.
+fn polygons_that_are_not_simple_are_answered_where_no_fill_rule_matters() {
+    // A bow tie at rest: lobes (0,0),(5,5),(0,10) and (5,5),(10,10),(10,0), each of
+    // winding number ±1, inside by the nonzero and the even-odd rule alike.
     let bow = [["0", "0"], ["10", "10"], ["10", "0"], ["0", "10"]];
-    assert!(matches!(
-        truth(&case2d("1", ["20", "20"], ["0", "0"], &bow, &[])),
-        Truth::Undefined { .. }
-    ));
-    // The square's corner (10,10) moving by (−20, −20): it crosses the diagonal
-    // region and meets the edge (0,0)→(10,0)'s neighbour… it reaches (0, 0) at t = 1/2.
-    let vels = [["0", "0"], ["0", "0"], ["-20", "-20"], ["0", "0"]];
-    assert!(matches!(
-        truth(&case2d("1", ["20", "20"], ["0", "0"], &SQUARE, &vels)),
-        Truth::Undefined { .. }
-    ));
-    // …but the same motion over T = 1/4 keeps it simple ((10,10) → (5,5) is still convex-ish:
-    // (0,0),(10,0),(5,5),(0,10) is simple): a defined miss.
     assert_eq!(
-        truth(&case2d("1/4", ["20", "20"], ["0", "0"], &SQUARE, &vels)),
+        truth(&case2d("1", ["20", "20"], ["0", "0"], &bow, &[])),
         Truth::Misses
     );
+    for inside in [["8", "5"], ["2", "5"]] {
+        assert_eq!(
+            entry(&truth(&case2d("1", inside, ["0", "0"], &bow, &[]))).as_deref(),
+            Some("0/1")
+        );
+    }
+    // From (20, 5) at −10 along x, the right lobe's edge x = 10 is touched at t = 1.
+    assert_eq!(
+        entry(&truth(&case2d("2", ["20", "5"], ["-10", "0"], &bow, &[]))).as_deref(),
+        Some("1/1")
+    );
+    // Between the lobes' far ends (5, 1) lies outside both: winding 0, a miss at rest.
+    assert_eq!(
+        truth(&case2d("1", ["5", "1"], ["0", "0"], &bow, &[])),
+        Truth::Misses
+    );
+    // A pentagram winds twice around its centre: inside by the nonzero rule, outside
+    // by the even-odd rule. Only there does the truth refuse, naming two crossing edges.
+    let star = [["0", "10"], ["-6", "-8"], ["10", "3"], ["-10", "3"], ["6", "-8"]];
+    match truth(&case2d("1", ["0", "0"], ["0", "0"], &star, &[])) {
+        Truth::Undefined { reason } => {
+            assert!(reason.contains("winding number is 2"), "{reason}");
+            assert!(reason.contains("cross"), "{reason}");
+        }
+        other => panic!("the pentagram's centre depends on the fill rule: {other:?}"),
+    }
+    // Its points (winding 1) are inside by both rules.
+    assert_eq!(
+        entry(&truth(&case2d("1", ["0", "8"], ["0", "0"], &star, &[]))).as_deref(),
+        Some("0/1")
+    );
+}
+
+#[test]
+fn simplicity_on_the_lookahead_is_decided_exactly() {
+    // The square's corner (10,10) moving by (−20, −20) reaches the opposite corner
+    // (0, 0) at t = 1/2: not simple over T = 1, simple over T = 1/4 ((10,10) → (5,5)).
+    let vels = [["0", "0"], ["0", "0"], ["-20", "-20"], ["0", "0"]];
+    let long = case2d("1", ["20", "20"], ["0", "0"], &SQUARE, &vels);
+    let why = simple_on_window(&long).expect_err("the corner crosses the square");
+    assert!(why.contains("vertex 2 meets edge"), "{why}");
+    assert!(simple_on_window(&case2d("1/4", ["20", "20"], ["0", "0"], &SQUARE, &vels)).is_ok());
+    // The truth needs no simplicity: the point at (20, 20) is never touched.
+    assert_eq!(truth(&long), Truth::Misses);
+    // A bow tie fails at t = 0, naming the crossing edges.
+    let bow = [["0", "0"], ["10", "10"], ["10", "0"], ["0", "10"]];
+    let why = simple_on_window(&case2d("1", ["20", "20"], ["0", "0"], &bow, &[]))
+        .expect_err("a bow tie is not simple");
+    assert!(why.contains("edges 0-1 and 2-3 cross"), "{why}");
+    // The square at rest or translated is simple throughout.
+    assert!(simple_on_window(&case2d("1", ["20", "20"], ["0", "0"], &SQUARE, &[])).is_ok());
 }
 
 #[test]

@@ -508,6 +508,13 @@ pub fn winding_number<N: Arith, K: Kernel<N>>(
         let b = &p[(i + 1) % n];
         let e = b.minus(a);
         let q = s.minus(a);
+        if and(k.is_zero(&e.x), || k.is_zero(&e.y))? {
+            // A repeated vertex: the edge is the point a, and winds nothing.
+            if and(k.is_zero(&q.x), || k.is_zero(&q.y))? {
+                return Ok(None);
+            }
+            continue;
+        }
         let o = e.cross(&q);
         let on_edge = all_of!(
             k.is_zero(&o),
@@ -534,7 +541,7 @@ pub fn in_closed_polygon<N: Arith, K: Kernel<N>>(
     p: &[V2<N>],
     s: &V2<N>,
 ) -> Result<bool, K::Abstain> {
-    Ok(winding_number(k, p, s)?.is_none_or(|w| w != 0))
+    Ok(winding_number(k, p, s)? != Some(0))
 }
 
 /// One sign test of the truth on its scene (the grain of the fallback).
@@ -729,6 +736,45 @@ fn not_simple<F: ExactField, R: Resolve<F>>(r: &R, t0: &F) -> Option<String> {
     None
 }
 
+/// Whether an edge of the scene is a single point: never in the window, throughout it,
+/// or at one time of it.
+enum Collapse<F> {
+    Never,
+    Always,
+    At(F),
+}
+
+/// Edge i's ends b − a = d0 + t·dv: when, in [0, T] of the scene, are they equal?
+fn collapse<F: ExactField>(sc: &Scene<'_, F>, i: usize) -> Collapse<F> {
+    let j = (i + 1) % sc.p.len();
+    let d0 = sc.p[j].minus(&sc.p[i]);
+    let dv = sc.vels[j].minus(&sc.vels[i]);
+    let zero = |v: &V2<F>| v.x.is_zero_() && v.y.is_zero_();
+    if zero(&dv) {
+        return if zero(&d0) {
+            Collapse::Always
+        } else {
+            Collapse::Never
+        };
+    }
+    // d0 + t·dv = 0 at t = −d0_k / dv_k for a component k with dv_k ≠ 0.
+    let tc = if dv.x.is_zero_() {
+        d0.y.negated().quotient(&dv.y)
+    } else {
+        d0.x.negated().quotient(&dv.x)
+    };
+    match tc {
+        Some(tc)
+            if !tc.is_neg()
+                && tc.minus(&sc.t).sign() != Ordering::Greater
+                && zero(&d0.at(&dv, &tc)) =>
+        {
+            Collapse::At(tc)
+        }
+        _ => Collapse::Never,
+    }
+}
+
 /// The truth on the scene restarted at the window's start t0 (see the module
 /// doc), each sign test and contact test run by `r`.
 fn ground_truth<F: ExactField, R: Resolve<F>>(r: &R, t0: &F) -> Truth {
@@ -748,13 +794,7 @@ fn ground_truth<F: ExactField, R: Resolve<F>>(r: &R, t0: &F) -> Truth {
         Some(0) => {}
         Some(w) => {
             let edges = first_crossing(r)
-                .map(|(i, m)| {
-                    format!(
-                        "edges {i}-{} and {m}-{} cross",
-                        (i + 1) % n,
-                        (m + 1) % n
-                    )
-                })
+                .map(|(i, m)| format!("edges {i}-{} and {m}-{} cross", (i + 1) % n, (m + 1) % n))
                 .unwrap_or_else(|| "it is not simple".into());
             return Truth::Undefined {
                 reason: format!(
@@ -763,8 +803,34 @@ fn ground_truth<F: ExactField, R: Resolve<F>>(r: &R, t0: &F) -> Truth {
             };
         }
     }
-    // Outside by every rule at the start: the first entry is the first contact.
+    // Outside by every rule at the start: the first entry is the first contact. An edge
+    // that is a repeated vertex throughout is that vertex, which its neighbours' edges
+    // cover; one that shrinks to a point during the window is answered as undefined
+    // (the contact test takes a point edge for a line through it).
+    let sc = r.exact_scene();
+    let mut point_edges = vec![false; n];
+    for (i, is_point) in point_edges.iter_mut().enumerate() {
+        match collapse(sc, i) {
+            Collapse::Never => {}
+            Collapse::Always => *is_point = true,
+            Collapse::At(tc) => {
+                let j = (i + 1) % n;
+                return Truth::Undefined {
+                    reason: format!(
+                        "edge {i}-{j} shrinks to a point at t = {} (the polygon is not simple then)",
+                        ExactTime::rational(tc.plus(t0).to_big()).to_decimal_string(9)
+                    ),
+                };
+            }
+        }
+    }
+    if point_edges.iter().all(|&p| p) {
+        return Truth::Undefined {
+            reason: "every vertex is the same point".into(),
+        };
+    }
     let found: Vec<(Touch, Contact<R::Root>)> = (0..n)
+        .filter(|&edge| !point_edges[edge])
         .filter_map(|edge| {
             let u = Touch {
                 mover: Mover::Point,

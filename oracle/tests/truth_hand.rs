@@ -172,7 +172,13 @@ fn polygons_that_are_not_simple_are_answered_where_no_fill_rule_matters() {
     );
     // A pentagram winds twice around its centre: inside by the nonzero rule, outside
     // by the even-odd rule. Only there does the truth refuse, naming two crossing edges.
-    let star = [["0", "10"], ["-6", "-8"], ["10", "3"], ["-10", "3"], ["6", "-8"]];
+    let star = [
+        ["0", "10"],
+        ["-6", "-8"],
+        ["10", "3"],
+        ["-10", "3"],
+        ["6", "-8"],
+    ];
     match truth(&case2d("1", ["0", "0"], ["0", "0"], &star, &[])) {
         Truth::Undefined { reason } => {
             assert!(reason.contains("winding number is 2"), "{reason}");
@@ -327,5 +333,47 @@ fn validation_names_fields() {
     assert_eq!(
         msg.as_deref(),
         Some("polygon.vertices: 2 points, at least 3 are needed")
+    );
+}
+
+#[test]
+fn repeated_vertices_and_collapsing_edges() {
+    // The square with its corner (10, 0) given twice: the same point set. A point far
+    // outside misses (a zero-length edge is not a line through it), a point coming in
+    // enters where it would without the repeat, and the repeated corner itself is on
+    // the boundary.
+    let twice = [
+        ["0", "0"],
+        ["10", "0"],
+        ["10", "0"],
+        ["10", "10"],
+        ["0", "10"],
+    ];
+    assert_eq!(
+        truth(&case2d("1", ["20", "0"], ["0", "0"], &twice, &[])),
+        Truth::Misses
+    );
+    assert_eq!(
+        truth(&case2d("1", ["10", "-5"], ["0", "0"], &twice, &[])),
+        Truth::Misses
+    );
+    assert_eq!(
+        entry(&truth(&case2d("10", ["-5", "5"], ["1", "0"], &twice, &[]))).as_deref(),
+        Some("5/1")
+    );
+    assert_eq!(
+        entry(&truth(&case2d("1", ["10", "0"], ["0", "0"], &twice, &[]))).as_deref(),
+        Some("0/1")
+    );
+    // Edge (10,0)-(10,10) shrinking to the point (10, 0) at t = 1 (its upper end moving
+    // down at 10): undefined from T = 1 on, a miss of a far point before.
+    let vels = [["0", "0"], ["0", "0"], ["0", "-10"], ["0", "0"]];
+    match truth(&case2d("2", ["30", "30"], ["0", "0"], &SQUARE, &vels)) {
+        Truth::Undefined { reason } => assert!(reason.contains("edge 1-2 shrinks"), "{reason}"),
+        other => panic!("a collapsing edge: {other:?}"),
+    }
+    assert_eq!(
+        truth(&case2d("1/2", ["30", "30"], ["0", "0"], &SQUARE, &vels)),
+        Truth::Misses
     );
 }

@@ -5,8 +5,9 @@
 //! The cases are the harness's (`polyguard_cli::harness::gen::any_case`, the generator
 //! `polyguard assure` and the fuzz targets draw from): the point exactly at, or a few
 //! ulps / a relative 10⁻¹⁵…10⁻³ inside or outside of, the BUFF band around an edge or a
-//! vertex, through vertices, along edges, first contact at t = 0 or t = T, polygons offset
-//! by up to 10⁷, and half of them stretched into long relative paths.
+//! vertex, through vertices, along edges, first contact at t = 0 or t = T, over the whole
+//! scale space (relative paths of 10⁻³ … 10⁷ polygon sizes, BUFF of 10⁻¹² … 1 of it,
+//! offsets to 10⁹, lookaheads of 10⁻⁶ … 10⁹, needles, short edges, up to 256 vertices).
 
 use polyguard::api::detected;
 use polyguard_cli::harness::classify::Exact;
@@ -26,7 +27,8 @@ proptest! {
 
     #[test]
     fn truth_enters_implies_engine_and_paper_detect(seed in any::<u64>()) {
-        let (raw, _, _, mode) = any_case(&mut SplitMix(seed));
+        let drawn = any_case(&mut SplitMix(seed));
+        let (raw, mode) = (&drawn.raw, drawn.name());
         // the generator makes valid cases; one the engine refuses has nothing to check
         let Ok(case) = raw.to_api() else { return Ok(()) };
         let got = detected(&case);

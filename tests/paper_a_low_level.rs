@@ -143,20 +143,22 @@ fn every_regression_case_through_the_slice_functions() {
     assert!(seen >= 20, "the corpus has its cases ({seen})");
 }
 
-/// Long-path boundary cases of the assure generator (every mode and shape, stretched by
-/// 10 … 10⁶), through the slice functions.
+/// Long-path boundary cases of the assure generator (every mode and shape, relative
+/// paths of 10 … 10⁷ polygon sizes, the rest of the scale space drawn as in assure),
+/// through the slice functions.
 #[test]
 fn long_path_cases_through_the_slice_functions() {
     let mut src = SplitMix(0x5EED_0008);
+    let long = gen::Space::aimed((1.0, 7.0), gen::Space::FULL.buff).expect("within the space");
     let mut stretched = 0;
     for k in 0..600 {
         let shape = [gen::Shape::Static, gen::Shape::Warping, gen::Shape::ThreeD][k % 3];
         let mode = gen::Mode::ALL[(k / 3) % gen::Mode::ALL.len()];
-        let (mut raw, _) = gen::case(&mut src, shape, mode);
-        if gen::stretch(&mut src, &mut raw) > 1.0 {
+        let d = gen::case(&mut src, shape, mode, &long);
+        if d.stretch > 1.0 {
             stretched += 1;
         }
-        check(&raw, &format!("case {k} ({mode:?}, {shape:?})"));
+        check(&d.raw, &format!("case {k} ({mode:?}, {shape:?})"));
     }
     assert!(
         stretched > 500,

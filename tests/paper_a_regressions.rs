@@ -110,3 +110,28 @@ fn every_recorded_case_keeps_its_class() {
         problems.join("\n")
     );
 }
+
+/// The canary of the corpus: the plain f64 transcription still misses every true entry of
+/// `plain-canary.jsonl` (which the certified engine detects, checked above). If it stops
+/// missing them, the cases no longer show what the certificate is for.
+#[test]
+fn the_plain_transcription_still_misses_the_canary_cases() {
+    use polyguard_cli::harness::classify::{compare_as, Hunted};
+    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/regressions/plain-canary.jsonl");
+    let text = fs::read_to_string(&file).unwrap_or_else(|e| panic!("{}: {e}", file.display()));
+    let mut n = 0;
+    for (k, line) in text
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| !l.trim().is_empty())
+    {
+        let case = parse_line(line, k + 1)
+            .case
+            .unwrap_or_else(|e| panic!("line {}: {e}", k + 1));
+        let v = compare_as(&RawCase::from_api(&case), Hunted::Plain)
+            .unwrap_or_else(|e| panic!("line {}: {e:?}", k + 1));
+        assert_eq!(v.class, Class::MissedDetection, "line {}", k + 1);
+        n += 1;
+    }
+    assert!(n >= 3, "only {n} canary cases");
+}

@@ -41,19 +41,19 @@ pub fn differential(data: &[u8], shape: Shape) {
         };
         (RawCase::from_api(&case), "a case line".to_string())
     } else {
+        // The same scale space as assure: paths of 10⁻³ … 10⁷ polygon sizes, BUFF of
+        // 10⁻¹² … 1, offsets to 10⁹, T of 10⁻⁶ … 10⁹, every outline.
         let mut src = Bytes::new(data);
         let mode = src.pick(&Mode::ALL);
-        let (mut raw, eps) = gen::case(&mut src, shape, mode);
-        // Half the inputs stretched into long relative paths, as in assure.
-        let k = if src.coin() {
-            gen::stretch(&mut src, &mut raw)
-        } else {
-            1.0
-        };
-        (
-            raw,
-            format!("generator mode {}, eps {eps:e}, stretch {k:e}", mode.name()),
-        )
+        let d = gen::case(&mut src, shape, mode, &gen::Space::FULL);
+        let why = format!(
+            "generator mode {}, outline {}, eps {:e}, stretch {:e}",
+            mode.name(),
+            d.outline.name(),
+            d.eps,
+            d.stretch
+        );
+        (d.raw, why)
     };
     let Ok(verdict) = classify::compare(&raw) else {
         return;

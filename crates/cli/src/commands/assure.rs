@@ -12,13 +12,12 @@ use std::time::Instant;
 
 use crate::case::RawCase;
 use crate::harness::classify::{check_contract, compare_as, Class, Hunted, Verdict};
-use crate::harness::gen::{any_case, SplitMix};
+use crate::harness::gen::{any_case_in, bucket, Space, SplitMix};
 use crate::harness::minimise::minimise;
 use crate::harness::report::{Kept, Report};
 use crate::harness::svg::picture;
 
-/// Counterexamples kept (minimised, written with a picture) per class.
-pub const KEEP_PER_CLASS: usize = 5;
+pub use crate::harness::report::KEEP_PER_CLASS;
 
 /// Arguments of `polyguard assure`.
 #[derive(Debug, clap::Args)]
@@ -28,7 +27,7 @@ pub struct AssureArgs {
     #[command(subcommand)]
     pub merge: Option<MergeCommand>,
     /// How many cases (the default takes about a minute on 2 cores).
-    #[arg(long, default_value_t = 250_000)]
+    #[arg(long, default_value_t = 60_000)]
     pub cases: u64,
     /// The campaign's seed: case k is the same for every thread count and shard.
     #[arg(long, default_value_t = 1)]
@@ -54,6 +53,42 @@ pub struct AssureArgs {
     /// uncertified transcription: the canary a hunt that sees must catch missing entries).
     #[arg(long, value_enum, default_value_t = EngineArg::F64)]
     pub engine: EngineArg,
+    /// Aim the campaign at part of the scale space: `path=1e3..1e7,buff=1e-12..1e-9`
+    /// (relative path and BUFF per polygon size, as powers of ten; either may be left
+    /// out). The default is the whole space (path 1e-3..1e7, buff 1e-12..1e0).
+    #[arg(long, value_parser = parse_aim)]
+    pub aim: Option<Space>,
+}
+
+/// `--aim path=1eA..1eB,buff=1eC..1eD` → the narrowed scale space.
+fn parse_aim(s: &str) -> Result<Space, String> {
+    let (mut path, mut buff) = (Space::FULL.path, Space::FULL.buff);
+    for part in s.split(',') {
+        let (key, range) = part
+            .split_once('=')
+            .ok_or_else(|| format!("{part:?}: expected path=1eA..1eB or buff=1eC..1eD"))?;
+        let (lo, hi) = range
+            .split_once("..")
+            .ok_or_else(|| format!("{part:?}: expected a range lo..hi, e.g. 1e3..1e5"))?;
+        let exp = |x: &str| -> Result<f64, String> {
+            let v: f64 = x
+                .trim()
+                .parse()
+                .map_err(|_| format!("{key}: {x:?} is not a number"))?;
+            if v > 0.0 && v.is_finite() {
+                Ok(v.log10())
+            } else {
+                Err(format!("{key}: {x:?} must be a positive number"))
+            }
+        };
+        let r = (exp(lo)?, exp(hi)?);
+        match key.trim() {
+            "path" => path = r,
+            "buff" => buff = r,
+            other => return Err(format!("unknown scale {other:?}: use path or buff")),
+        }
+    }
+    Space::aimed(path, buff)
 }
 
 /// `--engine` of `polyguard assure`.
@@ -116,18 +151,17 @@ fn case_seed(seed: u64, k: u64) -> u64 {
     crate::harness::gen::Source::next_u64(&mut m)
 }
 
-/// Case k of a campaign, with its generator mode.
-pub fn campaign_case(seed: u64, k: u64) -> (RawCase, &'static str) {
+/// Case k of a campaign drawn from `space`, with its generator mode.
+pub fn campaign_case(seed: u64, k: u64, space: &Space) -> (RawCase, &'static str) {
     let mut src = SplitMix(case_seed(seed, k));
-    let (raw, _, _, name) = any_case(&mut src);
-    (raw, name)
+    let drawn = any_case_in(&mut src, space);
+    let name = drawn.name();
+    (drawn.raw, name)
 }
 
+/// Every class but agreement keeps its first [`KEEP_PER_CLASS`] cases.
 fn is_kept_class(c: Class) -> bool {
-    matches!(
-        c,
-        Class::MissedDetection | Class::FalseAlarmFar | Class::PaperGap | Class::FloatDivergence
-    )
+    c != Class::Agree
 }
 
 fn write_counterexample(
@@ -188,6 +222,7 @@ pub fn run(args: &AssureArgs) -> ExitCode {
         return merge(reports, out, *partial);
     }
     let (shard_i, shard_n) = args.shard.unwrap_or((0, 1));
+    let space = args.aim.unwrap_or_default();
     let hunted = Hunted::from(args.engine);
     if args.contract && hunted != Hunted::Certified {
         eprintln!(
@@ -227,6 +262,7 @@ pub fn run(args: &AssureArgs) -> ExitCode {
         campaign_cases: args.cases,
         contract_only: args.contract,
         engine: hunted.name().into(),
+        space: space.label(),
         ..Default::default()
     });
     let interesting: Mutex<Vec<(u64, Verdict, RawCase, &'static str)>> = Mutex::new(Vec::new());
@@ -242,7 +278,7 @@ pub fn run(args: &AssureArgs) -> ExitCode {
                         break;
                     }
                     let k = j * shard_n + shard_i;
-                    let (raw, mode) = campaign_case(args.seed, k);
+                    let (raw, mode) = campaign_case(args.seed, k, &space);
                     if args.contract {
                         match check_contract(&raw) {
                             Ok(c) => local.add_contract(&c),
@@ -256,13 +292,22 @@ pub fn run(args: &AssureArgs) -> ExitCode {
                     }
                     match compare_as(&raw, hunted) {
                         Ok(v) => {
-                            local.add(&v, mode);
+                            local.add(&v, mode, bucket(&raw));
                             if is_kept_class(v.class) {
+                                // The KEEP_PER_CLASS lowest indices of the class, whatever
+                                // the threads' order: shards then merge into exactly the
+                                // unsharded run's kept cases.
                                 if let Ok(mut g) = interesting.lock() {
-                                    let same =
-                                        g.iter().filter(|(_, w, _, _)| w.class == v.class).count();
-                                    if same < KEEP_PER_CLASS {
+                                    let same: Vec<usize> =
+                                        (0..g.len()).filter(|&x| g[x].1.class == v.class).collect();
+                                    if same.len() < KEEP_PER_CLASS {
                                         g.push((k, v, raw, mode));
+                                    } else if let Some(&worst) =
+                                        same.iter().max_by_key(|&&x| g[x].0)
+                                    {
+                                        if g[worst].0 > k {
+                                            g[worst] = (k, v, raw, mode);
+                                        }
                                     }
                                 }
                             }
@@ -340,6 +385,11 @@ fn finish(report: &Report, out: &Path) -> ExitCode {
         );
     }
     text += &format!("report: {}\n", path.display());
+    if !report.contract_only {
+        text += &report.coverage_grid();
+        text += &Report::legend();
+    }
+    text += &report.verdict_line();
     let mut stdout = std::io::stdout().lock();
     let _ = stdout
         .write_all(text.as_bytes())
@@ -400,7 +450,7 @@ fn merge(paths: &[PathBuf], out: &Path, partial: bool) -> ExitCode {
     // a case file that is not beside it.
     for (p, r) in paths.iter().zip(&reports) {
         let dir = p.parent().unwrap_or_else(|| Path::new("."));
-        for k in &r.kept {
+        for k in r.kept.iter().filter(|k| merged.kept.contains(k)) {
             for f in [&k.case_file, &k.svg_file] {
                 let (from, to) = (dir.join(f), out.join(f));
                 if from != to {
@@ -422,12 +472,43 @@ fn merge(paths: &[PathBuf], out: &Path, partial: bool) -> ExitCode {
 mod tests {
     use super::*;
 
+    /// An aimed campaign's cases land in (or next to, as the polygon's measured size
+    /// differs from the drawn one) the buckets it aims at.
+    #[test]
+    fn aimed_campaigns_hit_their_buckets() {
+        let space = parse_aim("path=1e4..1e5,buff=1e-9..1e-8").expect("a valid aim");
+        for k in 0..300 {
+            let (raw, mode) = campaign_case(5, k, &space);
+            let (p, b) = bucket(&raw);
+            assert!((3..=5).contains(&p), "case {k} ({mode}): path bucket 1e{p}");
+            assert!(
+                (-10..=-8).contains(&b),
+                "case {k} ({mode}): buff bucket 1e{b}"
+            );
+        }
+    }
+
     #[test]
     fn shards_parse_and_cases_are_reproducible() {
         assert_eq!(parse_shard("1/4"), Ok((1, 4)));
         assert!(parse_shard("4/4").is_err());
         assert!(parse_shard("x").is_err());
-        assert_eq!(campaign_case(9, 123).0, campaign_case(9, 123).0);
-        assert_ne!(campaign_case(9, 123).0, campaign_case(9, 124).0);
+        let full = Space::FULL;
+        assert_eq!(
+            parse_aim("path=1e3..1e5"),
+            Space::aimed((3.0, 5.0), full.buff)
+        );
+        assert!(parse_aim("path=1e5..1e3").is_err());
+        assert!(parse_aim("buff=1e-13..1e-9").is_err(), "outside the space");
+        assert!(parse_aim("speed=1..2").is_err());
+        assert!(parse_aim("path=0..1e3").is_err());
+        assert_eq!(
+            campaign_case(9, 123, &full).0,
+            campaign_case(9, 123, &full).0
+        );
+        assert_ne!(
+            campaign_case(9, 123, &full).0,
+            campaign_case(9, 124, &full).0
+        );
     }
 }

@@ -18,8 +18,55 @@ pub type Exact = polyguard_oracle::Q;
 
 /// How far BUFF and F are widened to tell a false alarm "in the band" from one "far"
 /// outside it: an engine alarm that paper A's own exact algorithm would not raise even
-/// with 4× the slack is far from anything the paper flags by design.
+/// with 4× the slack (and [`ROUNDING_BAND`]) is far from anything the paper flags by
+/// design.
 pub const WIDE_BAND: f64 = 4.0;
+
+/// The rounding allowance of the wide band, relative to the scene's largest magnitude
+/// ([`rounding_allowance`]): 2⁻⁴⁰, about 8,000 ulps. The f64 engine cannot tell
+/// distances apart below a few ulps of the coordinates it is given (at an offset of
+/// 10⁹, an ulp is 1.2·10⁻⁷, whatever BUFF is), and resolves what it cannot decide
+/// towards detection; an alarm within this allowance of paper A's thresholds is the
+/// price of f64 inputs, one beyond it is a bug.
+pub const ROUNDING_BAND: f64 = 1.0 / (1u64 << 40) as f64;
+
+/// [`ROUNDING_BAND`] times the largest magnitude of the scene over the lookahead: the
+/// positions of the point and the vertices at 0 and their displacements over T (and
+/// in 3D the heights of the point and the slab's ends, and their displacements).
+pub fn rounding_allowance(raw: &RawCase) -> f64 {
+    let t = raw.lookahead.abs();
+    let mut m = 0f64;
+    let mut see = |x: f64| m = m.max(x.abs());
+    for (&p, &v) in raw.pos.iter().zip(&raw.vel) {
+        see(p);
+        see(v * t);
+    }
+    for (p, v) in raw.vertices.iter().zip(&raw.velocities) {
+        for a in 0..2 {
+            see(p[a]);
+            see(v[a] * t);
+        }
+    }
+    if let Some([bottom, top, vsp]) = raw.slab {
+        see(bottom);
+        see(top);
+        see(vsp * t);
+    }
+    ROUNDING_BAND * m
+}
+
+/// The wide band's case: BUFF and F times [`WIDE_BAND`], BUFF plus the
+/// [`rounding_allowance`], and in 3D the slab grown by the allowance at both ends.
+pub fn wide_case(raw: &RawCase) -> RawCase {
+    let r = rounding_allowance(raw);
+    let mut wide = raw.widened(WIDE_BAND);
+    wide.buff += r;
+    if let Some(slab) = wide.slab.as_mut() {
+        slab[0] -= r;
+        slab[1] += r;
+    }
+    wide
+}
 
 /// The class of a compared case (issue "differential hunting", item 1).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
@@ -32,10 +79,17 @@ pub enum Class {
     FloatDivergence,
     /// Truth: the point enters; the engine says no. The one unforgivable bug.
     MissedDetection,
-    /// Engine yes, truth no, within the BUFF/F band (paper-exact with 4× slack agrees).
+    /// Engine yes, truth no, within the BUFF/F band (paper-exact with 4× slack and the
+    /// rounding allowance agrees).
     FalseAlarmInBand,
-    /// Engine yes, truth no, and not even paper-exact with 4× slack flags it: a bug.
+    /// Engine yes, truth no, and not even paper-exact with 4× slack and the rounding
+    /// allowance ([`wide_case`]) flags it: a bug.
     FalseAlarmFar,
+    /// Engine yes taken on a comparison it could not decide in f64 (`kind:
+    /// conservative`), truth no, and beyond the wide band: the price of deciding in f64
+    /// where the engine's rounding bound is wider than the band (near-tangent quadratics
+    /// at large magnitudes). Safe, reported and kept, not a failure.
+    ConservativeFar,
     /// Truth enters, paper-exact says no: a finding about the paper itself.
     PaperGap,
     /// The truth is undefined (the polygon stops being simple): not judged.
@@ -44,12 +98,13 @@ pub enum Class {
 
 impl Class {
     /// Every class, in report order.
-    pub const ALL: [Class; 7] = [
+    pub const ALL: [Class; 8] = [
         Class::Agree,
         Class::FloatDivergence,
         Class::MissedDetection,
         Class::FalseAlarmInBand,
         Class::FalseAlarmFar,
+        Class::ConservativeFar,
         Class::PaperGap,
         Class::Undefined,
     ];
@@ -62,8 +117,39 @@ impl Class {
             Class::MissedDetection => "missed_detection",
             Class::FalseAlarmInBand => "false_alarm_in_band",
             Class::FalseAlarmFar => "false_alarm_far",
+            Class::ConservativeFar => "conservative_far",
             Class::PaperGap => "paper_gap",
             Class::Undefined => "undefined",
+        }
+    }
+
+    /// The table's column head (at most 8 characters).
+    pub fn short(self) -> &'static str {
+        match self {
+            Class::Agree => "agree",
+            Class::FloatDivergence => "float_dv",
+            Class::MissedDetection => "MISSED",
+            Class::FalseAlarmInBand => "in_band",
+            Class::FalseAlarmFar => "FAR",
+            Class::ConservativeFar => "cons_far",
+            Class::PaperGap => "pap_gap",
+            Class::Undefined => "undef",
+        }
+    }
+
+    /// One line on what the class means (the summary's legend).
+    pub fn meaning(self) -> &'static str {
+        match self {
+            Class::Agree => "engine, paper-exact and truth tell the same story",
+            Class::FloatDivergence => "engine differs from paper-exact; no miss, no false alarm",
+            Class::MissedDetection => "the point enters, the engine says no: THE failure",
+            Class::FalseAlarmInBand => "engine yes, truth no, within the BUFF/F band: by design",
+            Class::FalseAlarmFar => "engine yes, truth no, beyond the wide band: a failure",
+            Class::ConservativeFar => {
+                "like FAR, on a comparison undecidable in f64: safe, reported"
+            }
+            Class::PaperGap => "the point enters, paper-exact says no: about the paper",
+            Class::Undefined => "the fill rule decides (polygon not simple at the start)",
         }
     }
 
@@ -105,10 +191,11 @@ pub enum CompareError {
     Oracle(String),
 }
 
-/// The class from the three answers (`wide` is paper-exact with [`WIDE_BAND`]× slack,
-/// asked only when needed).
+/// The class from the three answers (`wide` is paper-exact on [`wide_case`], asked only
+/// when needed; `conservative`: the engine's yes was taken on an undecided comparison).
 pub fn classify(
     engine: bool,
+    conservative: bool,
     paper: bool,
     truth: Option<bool>,
     wide: impl FnOnce() -> bool,
@@ -120,6 +207,8 @@ pub fn classify(
         Some(false) if engine => {
             if paper || wide() {
                 Class::FalseAlarmInBand
+            } else if conservative {
+                Class::ConservativeFar
             } else {
                 Class::FalseAlarmFar
             }
@@ -184,7 +273,7 @@ pub fn compare_as(raw: &RawCase, hunted: Hunted) -> Result<Verdict, CompareError
         polyguard_oracle::Truth::Undefined { .. } => (None, None),
     };
     let wide = || {
-        raw.widened(WIDE_BAND)
+        wide_case(raw)
             .exact::<Exact>()
             .map(|c| polyguard_oracle::paper_detect(&c).detected)
             .unwrap_or(true)
@@ -193,7 +282,13 @@ pub fn compare_as(raw: &RawCase, hunted: Hunted) -> Result<Verdict, CompareError
         Hunted::Certified => engine,
         Hunted::Plain => plain,
     };
-    let class = classify(engine, paper, truth, wide);
+    let class = classify(
+        engine,
+        conservative && hunted == Hunted::Certified,
+        paper,
+        truth,
+        wide,
+    );
     let ns = |d: Duration| u64::try_from(d.as_nanos()).unwrap_or(u64::MAX);
     Ok(Verdict {
         class,
@@ -253,34 +348,48 @@ mod tests {
     #[test]
     fn classes_follow_the_definitions() {
         let never = || panic!("not needed");
-        assert_eq!(classify(true, true, Some(true), never), Class::Agree);
-        assert_eq!(classify(false, false, Some(false), never), Class::Agree);
+        assert_eq!(classify(true, false, true, Some(true), never), Class::Agree);
         assert_eq!(
-            classify(false, true, Some(true), never),
+            classify(false, false, false, Some(false), never),
+            Class::Agree
+        );
+        assert_eq!(
+            classify(false, false, true, Some(true), never),
             Class::MissedDetection
         );
         assert_eq!(
-            classify(false, false, Some(true), never),
+            classify(false, false, false, Some(true), never),
             Class::MissedDetection
         );
-        assert_eq!(classify(true, false, Some(true), never), Class::PaperGap);
         assert_eq!(
-            classify(true, true, Some(false), never),
+            classify(true, false, false, Some(true), never),
+            Class::PaperGap
+        );
+        assert_eq!(
+            classify(true, false, true, Some(false), never),
             Class::FalseAlarmInBand
         );
         assert_eq!(
-            classify(true, false, Some(false), || true),
+            classify(true, false, false, Some(false), || true),
             Class::FalseAlarmInBand
         );
         assert_eq!(
-            classify(true, false, Some(false), || false),
+            classify(true, false, false, Some(false), || false),
             Class::FalseAlarmFar
         );
         assert_eq!(
-            classify(false, true, Some(false), never),
+            classify(true, true, false, Some(false), || false),
+            Class::ConservativeFar
+        );
+        assert_eq!(
+            classify(true, true, false, Some(false), || true),
+            Class::FalseAlarmInBand
+        );
+        assert_eq!(
+            classify(false, false, true, Some(false), never),
             Class::FloatDivergence
         );
-        assert_eq!(classify(true, true, None, never), Class::Undefined);
+        assert_eq!(classify(true, false, true, None, never), Class::Undefined);
     }
 
     #[test]

@@ -1,22 +1,34 @@
-//! Boundary-biased case generators: where floating point breaks.
+//! Boundary-biased case generators over the whole scale space: where floating point breaks.
 //!
-//! Every case is built around a star-shaped counterclockwise polygon and then puts the
-//! point at a threshold of one of paper A's decisions, moved by a relative ε that is
-//! 0, a few ulps, or 10⁻¹⁵ … 10⁻³ either way:
+//! Every case puts the point at a threshold of one of paper A's decisions, moved by a
+//! relative ε that is 0, a few ulps, or 10⁻¹⁵ … 10⁻³ either way ([`Mode`]):
 //! a distance BUFF·(1 ± ε) from an edge or a vertex (near_edge), a vertex at
 //! |p_x − s_x| = BUFF·(1 ± ε) or p_y = s_y − BUFF·(1 ± ε) (the perturbation of §II.B),
 //! a trajectory through a vertex or tangent to / along an edge, first contact at
 //! t = T·(1 ± ε) or at t = 0, the end of an extended edge (1 + F)·(1 ± ε) (edge_detect),
 //! an edge whose ends move alike (dot_nn_lin's vanishing leading coefficient), and a
-//! slab boundary reached at the contact time (detect_3d). Scales: coordinates offset by
-//! 0 or 10³ … 10⁷, polygons from 10⁻² to 10³ across, BUFF relative 10⁻² … 10⁻⁷.
+//! slab boundary reached at the contact time (detect_3d).
 //!
-//! Half the cases of [`any_case`] are then stretched into long relative paths
-//! ([`stretch`]): the whole scene is moved back in time by τ = (K − 1)·T with K
-//! log-uniform in 10 … 10⁶, the polygon's warping slowed by K, so that at τ the scene is
-//! the threshold configuration above and the relative path over the lookahead K·T is K
-//! times longer (up to ~3·10⁶ polygon sizes, BUFF down to ~10⁻¹³ of the path): where
-//! squared distances cancel, the region the plain f64 transcription misses.
+//! On top of the threshold, every mode draws its scales independently and log-uniformly
+//! ([`Space`], issue "hunting that sees", item 1):
+//! - the relative path (the point's path relative to the polygon over the lookahead)
+//!   from 10⁻³ to 10⁷ polygon sizes; paths beyond 3 sizes are made by [`stretch`]ing a
+//!   short case back in time, so that the threshold configuration lies far along a
+//!   long path;
+//! - BUFF from 10⁻¹² to 1 polygon size;
+//! - the offset of the polygon from the origin up to 10⁹, with size / |offset| from
+//!   10⁻¹² to 1 (a fifth of the cases sit at the origin, sizes 10⁻⁶ … 10⁶);
+//! - the lookahead T from 10⁻⁶ to 10⁹, speeds to match;
+//! - the outline ([`Outline`]): star-shaped polygons of 3 … 12 vertices, of up to 256,
+//!   needles of aspect down to 10⁻⁸, near-collinear vertices, short edges beside long
+//!   ones;
+//! - in 3D, slabs from 10⁻⁶ to 10³ polygon sizes thick.
+//!
+//! Warping polygons are drawn as an affine warp plus a jitter scaled to the outline's
+//! finest feature, with one edge whose ends move alike; the polygon's simplicity over
+//! [0, T] is decided exactly ([`polyguard_oracle::truth::simple_on_window`]) and a case
+//! that fails is redrawn with a gentler warp (the last resort is none). Polygons at
+//! time 0 are checked simple and counterclockwise exactly ([`polyguard::ring::simple_ccw`]).
 //!
 //! The choices are drawn from a [`Source`]: [`SplitMix`] for seeded runs, [`Bytes`] for
 //! fuzzers (the fuzzer's input bytes steer every choice).
@@ -193,141 +205,485 @@ pub fn epsilon<S: Source>(src: &mut S) -> f64 {
     }
 }
 
-/// One boundary-biased case of the given shape and mode, and the ε it used.
-pub fn case<S: Source>(src: &mut S, shape: Shape, mode: Mode) -> (RawCase, f64) {
+/// The polygon's outline, drawn independently of the mode.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Outline {
+    /// Star-shaped around its centre, 3 … 12 vertices.
+    Star,
+    /// Star-shaped, 13 … 256 vertices.
+    Many,
+    /// A star squeezed to an aspect ratio of 1 … 10⁻⁸ and turned: a thin needle.
+    Needle,
+    /// A star with vertices inserted 10⁻⁴ … 10⁻¹⁴ edge lengths off their edges' midpoints.
+    NearCollinear,
+    /// A star with a vertex inserted 10⁻³ … 10⁻¹² edge lengths from another: a short
+    /// edge beside a long one.
+    ShortEdge,
+}
+
+impl Outline {
+    /// Every outline.
+    pub const ALL: [Outline; 5] = [
+        Outline::Star,
+        Outline::Many,
+        Outline::Needle,
+        Outline::NearCollinear,
+        Outline::ShortEdge,
+    ];
+
+    /// snake_case name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Outline::Star => "star",
+            Outline::Many => "many",
+            Outline::Needle => "needle",
+            Outline::NearCollinear => "near_collinear",
+            Outline::ShortEdge => "short_edge",
+        }
+    }
+}
+
+/// Where in scale space cases are drawn: decimal exponents of the relative path per
+/// polygon size and of BUFF per polygon size, each drawn uniformly in its range (so the
+/// ratio is log-uniform). [`Space::FULL`] is the whole space; `assure --aim` narrows it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Space {
+    /// log₁₀ of (relative path over [0, T]) / (polygon size): within −3 … 7.
+    pub path: (f64, f64),
+    /// log₁₀ of BUFF / (polygon size): within −12 … 0.
+    pub buff: (f64, f64),
+}
+
+impl Space {
+    /// The whole space of issue "hunting that sees", item 1.
+    pub const FULL: Space = Space {
+        path: (-3.0, 7.0),
+        buff: (-12.0, 0.0),
+    };
+
+    /// A space narrowed to `path` and `buff` (decimal exponents), or why it cannot be:
+    /// each range must lie within [`Space::FULL`]'s and not be empty.
+    pub fn aimed(path: (f64, f64), buff: (f64, f64)) -> Result<Space, String> {
+        for (name, (lo, hi), (flo, fhi)) in [
+            ("path", path, Space::FULL.path),
+            ("buff", buff, Space::FULL.buff),
+        ] {
+            if !(lo.is_finite() && hi.is_finite() && lo <= hi && lo >= flo && hi <= fhi) {
+                return Err(format!(
+                    "{name}: 1e{lo}..1e{hi} is not a range within 1e{flo}..1e{fhi}"
+                ));
+            }
+        }
+        Ok(Space { path, buff })
+    }
+
+    /// The space as `assure --aim` writes it and reports record it:
+    /// `path=1e-3..1e7,buff=1e-12..1e0`.
+    pub fn label(&self) -> String {
+        format!(
+            "path=1e{}..1e{},buff=1e{}..1e{}",
+            self.path.0, self.path.1, self.buff.0, self.buff.1
+        )
+    }
+}
+
+impl Default for Space {
+    fn default() -> Self {
+        Space::FULL
+    }
+}
+
+/// A generated case and how it was drawn.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Drawn {
+    /// The case.
+    pub raw: RawCase,
+    /// Static, warping or 3D.
+    pub shape: Shape,
+    /// The threshold it is built on.
+    pub mode: Mode,
+    /// The polygon's outline.
+    pub outline: Outline,
+    /// The relative perturbation of the threshold.
+    pub eps: f64,
+    /// The factor K the case was stretched by ([`stretch`]); 1 when it was not.
+    pub stretch: f64,
+}
+
+impl Drawn {
+    /// The mode's name, with "+long" when the case was stretched into a long path.
+    pub fn name(&self) -> &'static str {
+        if self.stretch > 1.0 {
+            self.mode.long_name()
+        } else {
+            self.mode.name()
+        }
+    }
+}
+
+/// 10^u with u uniform in [lo, hi).
+fn decade<S: Source>(src: &mut S, (lo, hi): (f64, f64)) -> f64 {
+    10f64.powf(src.range(lo, hi))
+}
+
+/// A star-shaped counterclockwise ring around `o`: angular gaps below (1 + 0.45)/3 of a
+/// turn (under half), radii in [0.2, 0.5]·size.
+fn star<S: Source>(src: &mut S, n: usize, size: f64) -> Vec<Vect2> {
     let tau = core::f64::consts::TAU;
-    let n = 3 + src.below(10);
-    let scale = src.pick(&[1e-2, 1.0, 10.0, 1e3]);
-    let offset = src.pick(&[0.0, 0.0, 1e3, 1e5, 1e7]);
-    let o = Vect2::new(offset * src.range(-1.0, 1.0), offset * src.range(-1.0, 1.0));
-    // Star-shaped around o: angular gaps below (1 + 0.45)/3 < half a turn, radii in [0.4, 1]·scale.
-    let verts: Vec<Vect2> = (0..n)
+    (0..n)
         .map(|i| {
             let a = tau * (i as f64 + 0.45 * src.unit()) / n as f64;
-            let r = scale * src.range(0.4, 1.0);
-            o + Vect2::new(r * a.cos(), r * a.sin())
+            let r = size * src.range(0.2, 0.5);
+            Vect2::new(r * a.cos(), r * a.sin())
         })
-        .collect();
-    let t = src.pick(&[1.0, 10.0, 300.0]) * src.range(0.5, 1.0);
-    let buff = scale * src.pick(&[1e-2, 1e-4, 1e-7]);
+        .collect()
+}
+
+/// The outline's ring around the origin (before the offset) and the size of its finest
+/// feature (the needle's width, the short edge, the near-collinear vertex's distance),
+/// which bounds how much a warp may jitter it.
+fn outline_ring<S: Source>(src: &mut S, outline: Outline, size: f64) -> (Vec<Vect2>, f64) {
+    match outline {
+        Outline::Star => {
+            let n = 3 + src.below(10);
+            (star(src, n, size), size)
+        }
+        Outline::Many => {
+            let n = 2f64.powf(src.range(3.7, 8.0)).round() as usize;
+            (star(src, n.clamp(13, 256), size), size / n as f64)
+        }
+        Outline::Needle => {
+            let aspect = decade(src, (-8.0, 0.0));
+            let turn = src.range(0.0, core::f64::consts::TAU);
+            let (c, s) = (turn.cos(), turn.sin());
+            let n = 3 + src.below(6);
+            let ring = star(src, n, size)
+                .into_iter()
+                .map(|p| {
+                    let q = Vect2::new(p.x, aspect * p.y);
+                    Vect2::new(c * q.x - s * q.y, s * q.x + c * q.y)
+                })
+                .collect();
+            (ring, aspect * size)
+        }
+        Outline::NearCollinear | Outline::ShortEdge => {
+            let n = 3 + src.below(6);
+            let base = star(src, n, size);
+            let n = base.len();
+            let mut ring = Vec::with_capacity(2 * n);
+            let mut finest = size;
+            for i in 0..n {
+                let (a, b) = (base[i], base[(i + 1) % n]);
+                ring.push(a);
+                if !src.coin() && i != 0 {
+                    continue;
+                }
+                let d = b - a;
+                let len = d.sq().sqrt();
+                let out = d.perp().scale(1.0 / len);
+                let (at, off) = if outline == Outline::NearCollinear {
+                    let f = decade(src, (-14.0, -4.0));
+                    let side = if src.coin() { 1.0 } else { -1.0 };
+                    (0.5, side * f)
+                } else {
+                    let f = decade(src, (-12.0, -3.0));
+                    (f, 0.5 * f)
+                };
+                finest = finest.min(off.abs() * len).min(at * len);
+                ring.push(a + d.scale(at) + out.scale(off * len));
+            }
+            (ring, finest)
+        }
+    }
+}
+
+/// The polygon: an outline of nominal size `size` offset to `o`, simple and
+/// counterclockwise exactly after rounding. Redrawn (as a star, then larger) when the
+/// rounding at the offset breaks it.
+fn polygon<S: Source>(
+    src: &mut S,
+    outline: Outline,
+    size: f64,
+    o: Vect2,
+) -> (Vec<Vect2>, f64, Outline) {
+    let (mut outline, mut size) = (outline, size);
+    loop {
+        for _ in 0..4 {
+            let (ring, finest) = outline_ring(src, outline, size);
+            let verts: Vec<Vect2> = ring.into_iter().map(|p| o + p).collect();
+            let repeated = (0..verts.len()).any(|i| verts[i] == verts[(i + 1) % verts.len()]);
+            if !repeated && polyguard::ring::simple_ccw(&verts) {
+                return (verts, finest, outline);
+            }
+        }
+        // The offset's grid is too coarse for this outline: a star, then a larger one.
+        if outline == Outline::Star {
+            size *= 16.0;
+        }
+        outline = Outline::Star;
+    }
+}
+
+/// Is the case's polygon simple at every time of [0, T], decided exactly? (A case the
+/// oracle cannot read counts as not.)
+fn simple_throughout(raw: &RawCase) -> bool {
+    raw.exact::<polyguard_oracle::Q>()
+        .is_ok_and(|c| polyguard_oracle::truth::simple_on_window(&c).is_ok())
+}
+
+/// One boundary-biased case of the given shape and mode, its scales drawn from `space`.
+pub fn case<S: Source>(src: &mut S, shape: Shape, mode: Mode, space: &Space) -> Drawn {
+    let tau = core::f64::consts::TAU;
+    // Scales: size and offset, then BUFF, path and T, each log-uniform.
+    let outline = src.pick(&Outline::ALL);
+    let (size, offset) = if src.below(5) == 0 {
+        (decade(src, (-6.0, 6.0)), 0.0)
+    } else {
+        let offset = decade(src, (-3.0, 9.0));
+        (offset * decade(src, (-12.0, 0.0)), offset)
+    };
+    let dir_o = src.range(0.0, tau);
+    let o = Vect2::new(offset * dir_o.cos(), offset * dir_o.sin());
+    let (verts, finest, outline) = polygon(src, outline, size, o);
+    let n = verts.len();
+    let buff = size * decade(src, space.buff);
+    let path = decade(src, space.path);
+    let t_final = decade(src, (-6.0, 9.0));
+    // Paths beyond 3 sizes come from stretching a case whose path is 0.3 … 3 sizes.
+    let (rel, k) = if path <= 3.0 {
+        (path, 1.0)
+    } else {
+        let rel = src.range(0.3, 3.0);
+        (rel, path / rel)
+    };
+    let t = t_final / k;
+    let spd = rel * size / t; // the point's speed relative to the polygon
     let fac = src.pick(&[1e-4, 1e-4, 1e-2, 1e-6]);
     let warping = match shape {
         Shape::Static => false,
         Shape::Warping => true,
         Shape::ThreeD => src.coin(),
     };
-    let drift = Vect2::new(src.range(-1.0, 1.0), src.range(-1.0, 1.0)).scale(scale / t);
+    let drift_dir = src.range(0.0, tau);
+    let drift = Vect2::new(drift_dir.cos(), drift_dir.sin())
+        .scale(src.range(0.0, 1.0) * src.pick(&[1.0, 1.0, 1e3]) * size / t);
     let keep = src.below(n); // an edge whose ends move alike: dot_nn_lin's A = 0
-    let mut vels: Vec<Vect2> = (0..n)
-        .map(|_| {
-            if warping {
-                drift
-                    + Vect2::new(src.range(-1.0, 1.0), src.range(-1.0, 1.0)).scale(0.3 * scale / t)
-            } else {
-                drift
-            }
-        })
+    let warp = [
+        src.range(-0.3, 0.3),
+        src.range(-0.3, 0.3),
+        src.range(-0.3, 0.3),
+        src.range(-0.3, 0.3),
+    ];
+    let jitter: Vec<Vect2> = (0..n)
+        .map(|_| Vect2::new(src.range(-0.1, 0.1), src.range(-0.1, 0.1)))
         .collect();
-    if warping {
-        vels[(keep + 1) % n] = vels[keep];
-    }
     let e = epsilon(src);
     let i = src.below(n);
-    let j = (i + 1) % n;
-    let (pi, pj) = (verts[i], verts[j]);
+    let dir = src.range(0.0, tau);
+    let along = src.unit();
+    let side = if src.coin() { 1.0 } else { -1.0 };
+    let below = size * src.range(0.0, 1.0);
+    let dx = src.range(-1.0, 1.0);
+    let start_off = Vect2::new(src.range(-1.5, 1.5), src.range(-1.5, 1.5));
+    let z = [
+        src.range(-2.0, 2.0),
+        src.range(-0.5, 0.5),
+        src.range(0.2, 0.8),
+        src.range(-0.5, 0.5),
+        decade(src, (-6.0, 3.0)),
+    ];
+    let (z_still, z_bottom) = (src.coin(), src.coin());
+    // Warps from the full one down to none; the first whose polygon stays simple over
+    // [0, T] exactly is taken (a static polygon only translates: always simple).
+    let strengths: &[f64] = if warping {
+        &[1.0, 1e-2, 1e-5, 0.0]
+    } else {
+        &[0.0]
+    };
+    let make = |w: f64, drift: Vect2| {
+        let mut vels: Vec<Vect2> = verts
+            .iter()
+            .zip(&jitter)
+            .map(|(&p, &jit)| {
+                let q = (p - o).scale(w / t);
+                let affine =
+                    Vect2::new(warp[0] * q.x + warp[1] * q.y, warp[2] * q.x + warp[3] * q.y);
+                drift + affine + jit.scale(w * finest / t)
+            })
+            .collect();
+        if w > 0.0 {
+            vels[(keep + 1) % n] = vels[keep];
+        }
+        let mut raw = threshold_case(&Threshold {
+            mode,
+            verts: &verts,
+            vels: &vels,
+            i,
+            e,
+            t,
+            buff,
+            fac,
+            spd,
+            dir,
+            along,
+            side,
+            below,
+            dx,
+            start_off,
+            o,
+            size,
+        });
+        if shape == Shape::ThreeD {
+            add_slab(&mut raw, &z, z_still, z_bottom, e, spd, size);
+        }
+        let k_done = if k > 1.0 {
+            stretch_to(&mut raw, k)
+        } else {
+            1.0
+        };
+        (raw, k_done)
+    };
+    // A stretch that the rounding of far-away vertices (p − τ·v₀) would break is
+    // redrawn without the polygon's drift, where that rounding is gone.
+    let drifts = [drift, Vect2::default()];
+    let (raw, stretch) = drifts
+        .iter()
+        .flat_map(|&d| strengths.iter().map(move |&w| (w, d)))
+        .find_map(|(w, d)| {
+            let (raw, k_done) = make(w, d);
+            let stretched = k <= 1.0 || k_done > 1.0 || d == Vect2::default();
+            (stretched && (w == 0.0 || simple_throughout(&raw))).then_some((raw, k_done))
+        })
+        .unwrap_or_else(|| make(0.0, Vect2::default()));
+    Drawn {
+        raw,
+        shape,
+        mode,
+        outline,
+        eps: e,
+        stretch,
+    }
+}
+
+/// What a threshold configuration is built from (all drawn before the warp is chosen,
+/// so that a gentler warp redraws nothing else).
+struct Threshold<'a> {
+    mode: Mode,
+    verts: &'a [Vect2],
+    vels: &'a [Vect2],
+    i: usize,
+    e: f64,
+    t: f64,
+    buff: f64,
+    fac: f64,
+    spd: f64,
+    dir: f64,
+    along: f64,
+    side: f64,
+    below: f64,
+    dx: f64,
+    start_off: Vect2,
+    o: Vect2,
+    size: f64,
+}
+
+/// The 2D case at the threshold of `c.mode` (see [`Mode`]).
+fn threshold_case(c: &Threshold) -> RawCase {
+    let n = c.verts.len();
+    let (i, j) = (c.i, (c.i + 1) % n);
+    let (pi, pj) = (c.verts[i], c.verts[j]);
+    let (t, buff, e) = (c.t, c.buff, c.e);
     let d = pj - pi;
     let len = d.sq().sqrt();
     let (u, out) = (d.scale(1.0 / len), d.perp().scale(1.0 / len)); // outward: CCW
-    let speed = src.range(0.0, 3.0) * scale / t;
-    let dir = src.range(0.0, tau);
-    let free_v = Vect2::new(dir.cos(), dir.sin()).scale(speed);
-    let along = src.unit();
-    let (s, v) = match mode {
-        Mode::EdgeBuff => (pi + d.scale(along) + out.scale(buff * (1.0 + e)), free_v),
+    let vi = c.vels[i];
+    let free_v = vi + Vect2::new(c.dir.cos(), c.dir.sin()).scale(c.spd);
+    let vin = out.scale(-c.spd);
+    let (s, v) = match c.mode {
+        Mode::EdgeBuff => (pi + d.scale(c.along) + out.scale(buff * (1.0 + e)), free_v),
         Mode::VertexBuff => {
             let w = (out - u).scale(1.0 / 2f64.sqrt());
             (pi + w.scale(buff * (1.0 + e)), free_v)
         }
-        Mode::PerturbX => {
-            let side = if src.coin() { 1.0 } else { -1.0 };
-            let below = scale * src.range(0.0, 2.0);
-            (
-                Vect2::new(pi.x + side * buff * (1.0 + e), pi.y - below),
-                free_v,
-            )
-        }
-        Mode::PerturbY => {
-            let dx = buff * src.range(-1.0, 1.0);
-            (Vect2::new(pi.x + dx, pi.y + buff * (1.0 + e)), free_v)
-        }
+        Mode::PerturbX => (
+            Vect2::new(pi.x + c.side * buff * (1.0 + e), pi.y - c.below),
+            free_v,
+        ),
+        Mode::PerturbY => (
+            Vect2::new(pi.x + buff * c.dx, pi.y + buff * (1.0 + e)),
+            free_v,
+        ),
         Mode::ThroughVertex => {
             let tc = t * (0.5 + e);
-            (pi.at(vels[i], tc) - free_v.scale(tc), free_v)
+            (pi.at(vi, tc) - free_v.scale(tc), free_v)
         }
-        Mode::AlongEdge => {
-            let start = pi - d.scale(0.5) + out.scale(buff * e);
-            (start, vels[i] + d.scale(2.0 / t))
-        }
+        Mode::AlongEdge => (pi - d.scale(0.5) + out.scale(buff * e), vi + u.scale(c.spd)),
         Mode::ContactAtT => {
-            let vin = out.scale(-speed.max(0.1 * scale / t));
-            let hit = pi + d.scale(along);
-            (hit - vin.scale(t * (1.0 + e)), vels[i] + vin)
+            let hit = pi + d.scale(c.along);
+            (hit - vin.scale(t * (1.0 + e)), vi + vin)
         }
-        Mode::ContactAtZero => (pi + d.scale(along) + out.scale(buff * e), free_v),
+        Mode::ContactAtZero => (pi + d.scale(c.along) + out.scale(buff * e), free_v),
         Mode::ExtendedEnd => {
             // Crosses the edge's line (moving with vertex i) at (1 + F)(1 + ε) half-edges
             // beyond the midpoint, i.e. just past p_j, at time T/2.
             let mid = pi + d.scale(0.5);
-            let cross = mid + d.scale(0.5 * (1.0 + fac) * (1.0 + e));
-            let vin = out.scale(-speed.max(0.1 * scale / t));
+            let cross = mid + d.scale(0.5 * (1.0 + c.fac) * (1.0 + e));
             let tc = 0.5 * t;
-            (
-                cross.at(vels[i], tc) - vin.scale(tc) - vels[i].scale(tc),
-                vels[i] + vin,
-            )
+            (cross.at(vi, tc) - vin.scale(tc) - vi.scale(tc), vi + vin)
         }
-        Mode::Free => {
-            let start = o + Vect2::new(src.range(-3.0, 3.0), src.range(-3.0, 3.0)).scale(scale);
-            (start, free_v)
-        }
+        Mode::Free => (c.o + c.start_off.scale(c.size), free_v),
     };
-    let mut raw = RawCase {
+    RawCase {
         lookahead: t,
         buff,
-        fac,
+        fac: c.fac,
         pos: vec![s.x, s.y],
         vel: vec![v.x, v.y],
-        vertices: verts.iter().map(|&p| p.into()).collect(),
-        velocities: vels.iter().map(|&p| p.into()).collect(),
+        vertices: c.verts.iter().map(|&p| p.into()).collect(),
+        velocities: c.vels.iter().map(|&p| p.into()).collect(),
         slab: None,
-    };
-    if shape == Shape::ThreeD {
-        // The point reaches the slab's bottom (or top) at a time near the middle, ± ε.
-        let vz = src.range(-2.0, 2.0) * scale / t;
-        let vsp = if src.coin() {
-            0.0
-        } else {
-            src.range(-0.5, 0.5) * scale / t
-        };
-        let tz = t * src.range(0.2, 0.8) * (1.0 + e);
-        let z0 = src.range(-1.0, 1.0) * scale;
-        let height = scale * src.range(0.01, 2.0);
-        let z_at = z0 + vz * tz;
-        let (bottom, top) = if src.coin() {
-            let b = z_at - vsp * tz;
-            (b, b + height)
-        } else {
-            let tp = z_at - vsp * tz;
-            (tp - height, tp)
-        };
-        raw.pos.push(z0);
-        raw.vel.push(vz);
-        raw.slab = Some([bottom, top, vsp]);
     }
-    (raw, e)
 }
 
-/// Stretches a case into a long relative path: K = 10^u, u uniform in [1, 6].
+/// Makes a 2D case 3D: the point reaches the slab's bottom (or top) at a time near the
+/// middle, ± ε; the slab is `z[4]` polygon sizes thick (thin and thick), still or moving.
+fn add_slab(
+    raw: &mut RawCase,
+    z: &[f64; 5],
+    still: bool,
+    bottom_first: bool,
+    e: f64,
+    spd: f64,
+    size: f64,
+) {
+    let t = raw.lookahead;
+    let vz = z[0] * spd;
+    let vsp = if still { 0.0 } else { z[1] * spd };
+    let tz = t * z[2] * (1.0 + e);
+    let z0 = z[3] * size;
+    let height = size * z[4];
+    let z_at = z0 + vz * tz;
+    let (bottom, top) = if bottom_first {
+        let b = z_at - vsp * tz;
+        (b, b + height)
+    } else {
+        let tp = z_at - vsp * tz;
+        (tp - height, tp)
+    };
+    raw.pos.push(z0);
+    raw.vel.push(vz);
+    raw.slab = Some([bottom, top, vsp]);
+}
+
+/// Stretches a case into a long relative path: K = 10^u, u uniform in [1, 6]. Returns
+/// K, or 1 (the case unchanged) when the polygon at time 0 is then no longer simple and
+/// counterclockwise. See [`stretch_to`].
+pub fn stretch<S: Source>(src: &mut S, raw: &mut RawCase) -> f64 {
+    let k = 10f64.powf(src.range(1.0, 6.0));
+    stretch_to(raw, k)
+}
+
+/// Stretches a case by K (> 1) into a long relative path.
 ///
 /// With τ = (K − 1)·T, vertex velocities v_i = v_0 + δ_i and a slab moving at vsp, the
 /// new case has lookahead K·T, start s − τ·v, vertices p_i − τ·v_0 − (τ/K)·δ_i and
@@ -337,9 +693,9 @@ pub fn case<S: Source>(src: &mut S, shape: Shape, mode: Mode) -> (RawCase, f64) 
 /// point travels K times as far relative to it. Returns K; 1 (the case unchanged) when
 /// the polygon at time 0, the original one warped backwards, is no longer simple and
 /// counterclockwise.
-pub fn stretch<S: Source>(src: &mut S, raw: &mut RawCase) -> f64 {
+pub fn stretch_to(raw: &mut RawCase, k: f64) -> f64 {
     let original = raw.clone();
-    let k = stretch_by(src, raw);
+    stretch_by(raw, k);
     let verts: Vec<Vect2> = raw.vertices.iter().map(|&p| p.into()).collect();
     if polyguard::ring::simple_ccw(&verts) {
         k
@@ -349,8 +705,7 @@ pub fn stretch<S: Source>(src: &mut S, raw: &mut RawCase) -> f64 {
     }
 }
 
-fn stretch_by<S: Source>(src: &mut S, raw: &mut RawCase) -> f64 {
-    let k = 10f64.powf(src.range(1.0, 6.0));
+fn stretch_by(raw: &mut RawCase, k: f64) {
     let t = raw.lookahead;
     let tau = (k - 1.0) * t;
     let v = Vect2::new(raw.vel[0], raw.vel[1]);
@@ -375,21 +730,53 @@ fn stretch_by<S: Source>(src: &mut S, raw: &mut RawCase) -> f64 {
             slab[1] -= tau * slab[2];
         }
     }
-    k
 }
 
-/// A case of random shape and mode; half of them stretched into long relative paths
-/// ([`stretch`]). The name is the mode's, with "+long" for a stretched one.
-pub fn any_case<S: Source>(src: &mut S) -> (RawCase, Shape, Mode, &'static str) {
+/// A case of random shape and mode over the whole scale space.
+pub fn any_case<S: Source>(src: &mut S) -> Drawn {
+    any_case_in(src, &Space::FULL)
+}
+
+/// A case of random shape and mode, its scales drawn from `space`.
+pub fn any_case_in<S: Source>(src: &mut S, space: &Space) -> Drawn {
     let shape = src.pick(&[Shape::Static, Shape::Warping, Shape::ThreeD]);
     let mode = src.pick(&Mode::ALL);
-    let (mut raw, _) = case(src, shape, mode);
-    if src.coin() {
-        stretch(src, &mut raw);
-        (raw, shape, mode, mode.long_name())
-    } else {
-        (raw, shape, mode, mode.name())
+    case(src, shape, mode, space)
+}
+
+/// The coverage bucket of a case: the decimal exponents (floors) of its relative path
+/// per polygon size, clamped to −3 … 7, and of its BUFF per polygon size, clamped to
+/// −12 … 0. The size is the diagonal of the polygon's bounding box at time 0; the
+/// relative path is |v − v̄|·T with v̄ the mean vertex velocity.
+pub fn bucket(raw: &RawCase) -> (i32, i32) {
+    let n = raw.vertices.len().max(1) as f64;
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for p in &raw.vertices {
+        for a in 0..2 {
+            lo[a] = lo[a].min(p[a]);
+            hi[a] = hi[a].max(p[a]);
+        }
     }
+    let size = (hi[0] - lo[0]).hypot(hi[1] - lo[1]);
+    let mean = raw
+        .velocities
+        .iter()
+        .fold([0.0, 0.0], |m, w| [m[0] + w[0] / n, m[1] + w[1] / n]);
+    let rel = match raw.vel.as_slice() {
+        [vx, vy, ..] => (vx - mean[0]).hypot(vy - mean[1]),
+        _ => 0.0,
+    };
+    let exp = |x: f64, lo: i32, hi: i32| {
+        if x > 0.0 && x.is_finite() {
+            (x.log10().floor() as i32).clamp(lo, hi)
+        } else {
+            lo
+        }
+    };
+    (
+        exp(rel * raw.lookahead / size, -3, 7),
+        exp(raw.buff / size, -12, 0),
+    )
 }
 
 #[cfg(test)]
@@ -401,10 +788,9 @@ mod tests {
         let mut a = SplitMix(7);
         let mut b = SplitMix(7);
         for _ in 0..500 {
-            let (ca, _, _, _) = any_case(&mut a);
-            let (cb, _, _, _) = any_case(&mut b);
+            let (ca, cb) = (any_case(&mut a), any_case(&mut b));
             assert_eq!(ca, cb);
-            ca.to_api().expect("generated cases are valid");
+            ca.raw.to_api().expect("generated cases are valid");
         }
     }
 
@@ -412,7 +798,15 @@ mod tests {
     fn edge_buff_mode_is_at_buff_from_the_edge() {
         let mut src = SplitMix(3);
         for _ in 0..200 {
-            let (raw, e) = case(&mut src, Shape::Static, Mode::EdgeBuff);
+            let Drawn { raw, eps: e, .. } = case(
+                &mut src,
+                Shape::Static,
+                Mode::EdgeBuff,
+                &Space {
+                    path: (-3.0, 0.4),
+                    buff: (-7.0, -2.0),
+                },
+            );
             let s = Vect2::new(raw.pos[0], raw.pos[1]);
             // Distance to the nearest edge, relative to BUFF, is about 1 + ε.
             let n = raw.vertices.len();
@@ -438,7 +832,7 @@ mod tests {
     fn bytes_source_is_total() {
         for data in [&[][..], &[1, 2, 3][..], &[255; 100][..]] {
             let mut src = Bytes::new(data);
-            let (raw, _, _, _) = any_case(&mut src);
+            let raw = any_case(&mut src).raw;
             assert!(raw.to_api().is_ok() || raw.vertices.len() >= 3);
         }
     }

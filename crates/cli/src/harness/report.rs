@@ -7,6 +7,11 @@ use serde::{Deserialize, Serialize};
 
 use super::classify::{Class, ContractVerdict, Hunted, Verdict};
 
+/// Counterexamples kept (minimised, written with a picture) per class: those of the
+/// lowest case indices, so that the shards of a campaign merge into exactly the kept
+/// cases of the whole.
+pub const KEEP_PER_CLASS: usize = 5;
+
 /// A kept counterexample (its case is written beside the report).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -108,6 +113,16 @@ pub struct Report {
     pub by_method: BTreeMap<String, BTreeMap<Class, u64>>,
     /// generator mode → class → count.
     pub by_mode: BTreeMap<String, BTreeMap<Class, u64>>,
+    /// Coverage: generator mode → scale bucket → class → count. A bucket is named
+    /// `path=1eP,buff=1eB`: the relative path is 10^P … 10^(P+1) polygon sizes and BUFF
+    /// 10^B … 10^(B+1) of the polygon (`harness::gen::bucket`; the ends clamp). Empty in
+    /// `--contract` runs and in reports written before coverage was recorded.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub by_bucket: BTreeMap<String, BTreeMap<String, BTreeMap<Class, u64>>>,
+    /// The scale space the cases were drawn from (`assure --aim`), e.g.
+    /// `path=1e-3..1e7,buff=1e-12..1e0` (the whole space).
+    #[serde(default = "full_space")]
+    pub space: String,
     /// Total ns in the engine, paper-exact and truth.
     pub nanos: [u64; 3],
     /// Wall-clock seconds of the run (summed over shards when merged).
@@ -119,9 +134,27 @@ pub struct Report {
     pub kept: Vec<Kept>,
 }
 
+/// The whole scale space's label, for reports written before `space`.
+fn full_space() -> String {
+    crate::harness::gen::Space::FULL.label()
+}
+
+/// A coverage bucket's name: `path=1eP,buff=1eB`.
+pub fn bucket_name((path, buff): (i32, i32)) -> String {
+    format!("path=1e{path},buff=1e{buff}")
+}
+
 /// The certified engine's name in reports ("f64"), for reports written before `engine`.
 fn certified_name() -> String {
     Hunted::Certified.name().into()
+}
+
+/// `path=1eP,buff=1eB` → (P, B).
+fn parse_bucket(name: &str) -> Option<(i32, i32)> {
+    let (p, b) = name.split_once(',')?;
+    let p = p.strip_prefix("path=1e")?.parse().ok()?;
+    let b = b.strip_prefix("buff=1e")?.parse().ok()?;
+    Some((p, b))
 }
 
 /// "i/N" → (i, N), with i < N.
@@ -157,9 +190,17 @@ impl Report {
         serde_json::from_str(body).map_err(|e| e.to_string())
     }
 
-    /// Counts one verdict.
-    pub fn add(&mut self, v: &Verdict, mode: &str) {
+    /// Counts one verdict of a case in coverage bucket `bucket` (`harness::gen::bucket`).
+    pub fn add(&mut self, v: &Verdict, mode: &str, bucket: (i32, i32)) {
         self.cases += 1;
+        *self
+            .by_bucket
+            .entry(mode.into())
+            .or_default()
+            .entry(bucket_name(bucket))
+            .or_default()
+            .entry(v.class)
+            .or_default() += 1;
         *self
             .by_method
             .entry(v.method.name().into())
@@ -216,6 +257,15 @@ impl Report {
                 }
             }
         }
+        for (mode, buckets) in &other.by_bucket {
+            let d = self.by_bucket.entry(mode.clone()).or_default();
+            for (b, m) in buckets {
+                let e = d.entry(b.clone()).or_default();
+                for (c, n) in m {
+                    *e.entry(*c).or_default() += n;
+                }
+            }
+        }
         for k in 0..3 {
             self.nanos[k] = self.nanos[k].saturating_add(other.nanos[k]);
         }
@@ -258,6 +308,12 @@ impl Report {
             if r.contract_only != first.contract_only {
                 return Err(format!(
                     "{which}: a --contract run and a classifying run cannot be merged"
+                ));
+            }
+            if r.space != first.space {
+                return Err(format!(
+                    "{which} draws from the scale space {}, report 1 from {}",
+                    r.space, first.space
                 ));
             }
             if r.engine != first.engine {
@@ -317,12 +373,21 @@ impl Report {
             campaign_cases: first.campaign_cases,
             contract_only: first.contract_only,
             engine: first.engine.clone(),
+            space: first.space.clone(),
             ..Default::default()
         };
         for r in reports {
             merged.shards.extend(r.shards.iter().cloned());
             merged.absorb(r);
         }
+        // The campaign keeps the lowest indices of each class: so does its merge.
+        merged.kept.sort_by_key(|k| k.index);
+        let mut per_class: BTreeMap<Class, usize> = BTreeMap::new();
+        merged.kept.retain(|k| {
+            let n = per_class.entry(k.class).or_default();
+            *n += 1;
+            *n <= KEEP_PER_CLASS
+        });
         merged.missing_shards = missing;
         Ok(merged)
     }
@@ -343,10 +408,12 @@ impl Report {
             out.push_str(&self.contract_lines());
             return out;
         }
+        // Counts per paper function and class, then the rates of the whole: at most
+        // 100 columns ([`Class::short`] heads the columns; the legend explains them).
         let classes = Class::ALL;
-        out.push_str(&format!("{:<16}", "function"));
+        out.push_str(&format!("{:<15}{:>9}", "function", "cases"));
         for c in classes {
-            out.push_str(&format!(" {:>20}", c.name()));
+            out.push_str(&format!("{:>9}", c.short()));
         }
         out.push('\n');
         let mut rows: Vec<(String, BTreeMap<Class, u64>)> = self
@@ -354,21 +421,28 @@ impl Report {
             .iter()
             .map(|(k, v)| (k.clone(), v.clone()))
             .collect();
-        rows.push(("all".into(), self.totals()));
+        let totals = self.totals();
+        rows.push(("all".into(), totals.clone()));
         for (name, counts) in rows {
             let total: u64 = counts.values().sum();
-            out.push_str(&format!("{name:<16}"));
+            out.push_str(&format!("{name:<15}{total:>9}"));
             for c in classes {
-                let n = counts.get(&c).copied().unwrap_or(0);
-                let rate = if total == 0 {
-                    0.0
-                } else {
-                    n as f64 / total as f64
-                };
-                out.push_str(&format!(" {:>9} ({:>7.3}%)", n, 100.0 * rate));
+                out.push_str(&format!("{:>9}", counts.get(&c).copied().unwrap_or(0)));
             }
             out.push('\n');
         }
+        let all: u64 = totals.values().sum();
+        out.push_str(&format!("{:<15}{:>9}", "all, % ", ""));
+        for c in classes {
+            let n = totals.get(&c).copied().unwrap_or(0);
+            let pct = if all == 0 {
+                0.0
+            } else {
+                100.0 * n as f64 / all as f64
+            };
+            out.push_str(&format!("{:>9}", format!("{pct:.3}")));
+        }
+        out.push('\n');
         let per = |ns: u64| {
             if self.cases == 0 {
                 0.0
@@ -387,6 +461,94 @@ impl Report {
         ));
         out.push_str(&self.contract_lines());
         out
+    }
+
+    /// The legend of the table's columns, one line a class.
+    pub fn legend() -> String {
+        let mut out = String::from("classes:\n");
+        for c in Class::ALL {
+            out.push_str(&format!(
+                "  {:<9} {:<20} {}\n",
+                c.short(),
+                c.name(),
+                c.meaning()
+            ));
+        }
+        out
+    }
+
+    /// The coverage grid: cases per scale bucket, all modes together (rows: BUFF per
+    /// polygon size, columns: relative path per polygon size, decades), `.` for an empty
+    /// bucket, `!` after a count that includes a failure. The report holds the grid per
+    /// mode and class.
+    pub fn coverage_grid(&self) -> String {
+        let mut grid: BTreeMap<(i32, i32), (u64, bool)> = BTreeMap::new();
+        for buckets in self.by_bucket.values() {
+            for (name, counts) in buckets {
+                let Some(key) = parse_bucket(name) else {
+                    continue;
+                };
+                let e = grid.entry(key).or_default();
+                e.0 += counts.values().sum::<u64>();
+                e.1 |= counts.iter().any(|(c, n)| c.is_failure() && *n > 0);
+            }
+        }
+        if grid.is_empty() {
+            return String::new();
+        }
+        let compact = |n: u64| match n {
+            0..=9_999 => n.to_string(),
+            10_000..=999_999 => format!("{}k", n / 1000),
+            _ => format!("{}M", n / 1_000_000),
+        };
+        let mut out = String::from(
+            "coverage: cases per bucket (rows BUFF/size, columns relative path/size, decades)\n",
+        );
+        out.push_str(&format!("{:>10}", "buff\\path"));
+        for p in -3..=7 {
+            out.push_str(&format!("{:>7}", format!("1e{p}")));
+        }
+        out.push('\n');
+        for b in (-12..=0).rev() {
+            out.push_str(&format!("{:>10}", format!("1e{b}")));
+            for p in -3..=7 {
+                let cell = match grid.get(&(p, b)) {
+                    None => ".".to_string(),
+                    Some((n, bad)) => format!("{}{}", compact(*n), if *bad { "!" } else { "" }),
+                };
+                out.push_str(&format!("{cell:>7}"));
+            }
+            out.push('\n');
+        }
+        out
+    }
+
+    /// The one verdict line that ends a campaign's summary: PASS or FAIL, with the counts
+    /// of missed detections, far false alarms and contract breaches.
+    pub fn verdict_line(&self) -> String {
+        let t = self.totals();
+        let n = |c: Class| t.get(&c).copied().unwrap_or(0);
+        let (missed, far) = (n(Class::MissedDetection), n(Class::FalseAlarmFar));
+        let word = if self.has_failures() { "FAIL" } else { "PASS" };
+        let partial = if self.missing_shards.is_empty() {
+            ""
+        } else {
+            " (PARTIAL)"
+        };
+        if self.contract_only {
+            return format!(
+                "{word}{partial}: {} contract breaches in {} cases ({} engine)\n",
+                self.contract.violations, self.cases, self.engine
+            );
+        }
+        format!(
+            "{word}{partial}: {missed} missed detections, {far} far false alarms, {} contract breaches in {} cases ({} engine); {} conservative far alarms, {} undefined\n",
+            self.contract.violations,
+            self.cases,
+            self.engine,
+            n(Class::ConservativeFar),
+            n(Class::Undefined)
+        )
     }
 
     /// The contract's lines of the summary.
@@ -448,7 +610,7 @@ mod tests {
             } else {
                 Class::Agree
             };
-            r.add(&verdict(class, Method::DetectSame2d), "free");
+            r.add(&verdict(class, Method::DetectSame2d), "free", (1, -3));
         }
         r
     }
@@ -539,7 +701,11 @@ mod tests {
             shards: vec!["0/1".into()],
             ..Default::default()
         };
-        r.add(&verdict(Class::Agree, Method::DetectSame2d), "free");
+        r.add(
+            &verdict(Class::Agree, Method::DetectSame2d),
+            "free",
+            (0, -2),
+        );
         let json = serde_json::to_string_pretty(&r).expect("serialise");
         assert_eq!(Report::from_json(&format!("\u{feff}{json}")), Ok(r.clone()));
         let typo = json.replacen("\"rejected\"", "\"rejectd\"", 1);

@@ -15,7 +15,7 @@ use crate::harness::classify::{check_contract, compare_as, Class, Hunted, Verdic
 use crate::harness::gen::{any_case_in, bucket, Space, SplitMix};
 use crate::harness::minimise::minimise;
 use crate::harness::report::{Kept, Report};
-use crate::harness::svg::picture;
+use crate::harness::svg::{picture, Picture};
 
 pub use crate::harness::report::KEEP_PER_CLASS;
 
@@ -173,24 +173,21 @@ fn write_counterexample(
     hunted: Hunted,
 ) -> std::io::Result<Kept> {
     let small = minimise(raw, v.class, hunted);
-    let event = compare_as(&small, hunted)
-        .ok()
-        .and_then(|w| w.entry_time)
-        .and_then(|t| t.parse::<f64>().ok())
-        .unwrap_or(small.lookahead);
+    // The minimised case keeps the class; its own answers go in the file and the picture.
+    let w = compare_as(&small, hunted).unwrap_or_else(|_| v.clone());
     let stem = format!("{}-{k}", v.class.name());
     let case_file = format!("counterexamples/{stem}.jsonl");
     let svg_file = format!("counterexamples/{stem}.svg");
     fs::create_dir_all(dir.join("counterexamples"))?;
     let extra = [
-        ("class", serde_json::Value::from(v.class.name())),
-        ("function", v.method.name().into()),
+        ("class", serde_json::Value::from(w.class.name())),
+        ("function", w.method.name().into()),
         ("mode", mode.into()),
-        ("engine", v.engine.into()),
-        ("paper_exact", v.paper.into()),
+        ("engine", w.engine.into()),
+        ("paper_exact", w.paper.into()),
         (
             "truth",
-            v.truth
+            w.truth
                 .map(serde_json::Value::from)
                 .unwrap_or(serde_json::Value::Null),
         ),
@@ -199,8 +196,16 @@ fn write_counterexample(
         dir.join(&case_file),
         small.to_json_line(&stem, &extra) + "\n",
     )?;
-    let title = format!("{} in {} ({mode})", v.class.name(), v.method.name());
-    fs::write(dir.join(&svg_file), picture(&small, event, &title))?;
+    let title = format!("{} in {} ({mode})", w.class.name(), w.method.name());
+    let pic = Picture {
+        title: &title,
+        engine: w.engine,
+        engine_name: hunted.name(),
+        paper: w.paper,
+        truth: w.truth,
+        entry_time: w.entry_time.as_deref().and_then(|t| t.parse::<f64>().ok()),
+    };
+    fs::write(dir.join(&svg_file), picture(&small, &pic))?;
     Ok(Kept {
         index: k,
         class: v.class,

@@ -1,6 +1,7 @@
 //! Engine against the exact oracle on boundary-biased cases: the safety property
-//! "truth enters ⇒ the engine detects" (a failure is a missed detection), and the paper's
-//! own theorem in exact arithmetic "truth enters ⇒ paper-exact detects".
+//! "truth enters ⇒ the engine detects" (a failure is a missed detection), the paper's
+//! own theorem in exact arithmetic "truth enters ⇒ paper-exact detects", and the engine's
+//! certificate both ways: a certified yes or no is paper A's answer.
 //!
 //! The cases are the harness's (`polyguard_cli::harness::gen::any_case`, the generator
 //! `polyguard assure` and the fuzz targets draw from): the point exactly at, or a few
@@ -9,7 +10,8 @@
 //! scale space (relative paths of 10⁻³ … 10⁷ polygon sizes, BUFF of 10⁻¹² … 1 of it,
 //! offsets to 10⁹, lookaheads of 10⁻⁶ … 10⁹, needles, short edges, up to 256 vertices).
 
-use polyguard::api::detected;
+use polyguard::api::{decide, detected};
+use polyguard::ball::Tri;
 use polyguard_cli::harness::classify::Exact;
 use polyguard_cli::harness::gen::{any_case, SplitMix};
 use polyguard_oracle::{paper_detect, truth, Truth};
@@ -32,10 +34,13 @@ proptest! {
         // the generator makes valid cases; one the engine refuses has nothing to check
         let Ok(case) = raw.to_api() else { return Ok(()) };
         let got = detected(&case);
+        let tri = decide(&case);
         let exact = raw.exact::<Exact>();
         prop_assert!(exact.is_ok(), "seed {seed} ({mode}): the oracle refuses a case the engine takes");
         let Ok(exact) = exact else { return Ok(()) };
         let paper = paper_detect(&exact).detected;
+        // The certificate, both ways: a decided answer is paper A's answer.
+        prop_assert!(tri == Tri::Unsure || (tri == Tri::Yes) == paper, "seed {seed} ({mode}): the engine certifies {tri:?}, paper-exact says {paper}");
         if let Truth::Enters { entry_time } = truth(&exact) {
             prop_assert!(paper, "seed {seed} ({mode}): paper gap: truth enters at {} but paper-exact says no", entry_time.to_decimal_string(20));
             prop_assert!(got, "seed {seed} ({mode}): missed detection: truth enters at {} but the engine says no", entry_time.to_decimal_string(20));

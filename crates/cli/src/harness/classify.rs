@@ -170,6 +170,9 @@ pub struct Verdict {
     pub engine: bool,
     /// The engine's "yes" was taken on an undecided comparison (`api::Kind::Conservative`).
     pub conservative: bool,
+    /// The certified engine decided (a certified yes or no) against paper A in exact
+    /// arithmetic: a breach of its certificate, whichever engine the campaign judges.
+    pub certificate_breach: bool,
     /// The plain f64 transcription's answer (the canary of the contract check).
     pub plain: bool,
     /// Paper A's answer without rounding (the oracle).
@@ -295,6 +298,11 @@ pub fn compare_as(raw: &RawCase, hunted: Hunted) -> Result<Verdict, CompareError
         method: case.method(),
         engine,
         conservative,
+        certificate_breach: match tri {
+            polyguard::ball::Tri::Yes => !paper,
+            polyguard::ball::Tri::No => paper,
+            polyguard::ball::Tri::Unsure => false,
+        },
         plain,
         paper,
         truth,

@@ -50,6 +50,11 @@ pub struct Contract {
     /// without asking paper A (`assure --contract`); 0 in full campaigns.
     #[serde(default)]
     pub certified_yes: u64,
+    /// Certified answers (yes or no, not conservative) that paper A in exact arithmetic
+    /// contradicts: must be 0. Counted in classifying runs, which ask paper A on every
+    /// case (a `--contract` run trusts a certified yes and counts only `violations`).
+    #[serde(default)]
+    pub certificate_breaches: u64,
 }
 
 impl Contract {
@@ -59,6 +64,7 @@ impl Contract {
         self.conservative += u64::from(v.conservative);
         self.conservative_paper_no += u64::from(v.conservative && !v.paper);
         self.plain_violations += u64::from(v.paper && !v.plain);
+        self.certificate_breaches += u64::from(v.certificate_breach);
     }
 
     fn absorb(&mut self, o: &Contract) {
@@ -68,6 +74,7 @@ impl Contract {
         self.conservative_paper_no += o.conservative_paper_no;
         self.plain_violations += o.plain_violations;
         self.certified_yes += o.certified_yes;
+        self.certificate_breaches += o.certificate_breaches;
     }
 
     fn add_check(&mut self, v: &ContractVerdict) {
@@ -238,7 +245,9 @@ impl Report {
 
     /// Any missed detection, far false alarm, or breach of the contract?
     pub fn has_failures(&self) -> bool {
-        self.contract.violations > 0 || self.totals().iter().any(|(c, n)| c.is_failure() && *n > 0)
+        self.contract.violations > 0
+            || self.contract.certificate_breaches > 0
+            || self.totals().iter().any(|(c, n)| c.is_failure() && *n > 0)
     }
 
     /// Adds another report's counts, times and kept cases (no seed or shard checks: for
@@ -543,7 +552,7 @@ impl Report {
         }
         format!(
             "{word}{partial}: {missed} missed detections, {far} far false alarms, {} contract breaches in {} cases ({} engine); {} conservative far alarms, {} undefined\n",
-            self.contract.violations,
+            self.contract.violations + self.contract.certificate_breaches,
             self.cases,
             self.engine,
             n(Class::ConservativeFar),
@@ -566,6 +575,12 @@ impl Report {
             "contract paper-exact => engine: {} violations in {} paper-exact yes (canary, plain f64 transcription: {} violations)\n",
             c.violations, c.paper_yes, c.plain_violations
         ));
+        if !self.contract_only {
+            out.push_str(&format!(
+                "certificate: {} certified answers contradicted by paper-exact\n",
+                c.certificate_breaches
+            ));
+        }
         out.push_str(&format!(
             "conservative answers (an undecided comparison): {} ({:.4}%), {} of them where paper-exact says no ({:.4}%)\n",
             c.conservative,
@@ -588,6 +603,7 @@ mod tests {
             method,
             engine: true,
             conservative: false,
+            certificate_breach: false,
             plain: true,
             paper: true,
             truth: Some(true),

@@ -58,9 +58,10 @@ pub fn differential(data: &[u8], shape: Shape) {
     let Ok(verdict) = classify::compare(&raw) else {
         return;
     };
-    // A failure: a missed detection, a far false alarm, or a breach of the engine's
-    // contract (paper A without rounding says yes, the engine says no).
-    let breach = verdict.paper && !verdict.engine;
+    // A failure: a missed detection, a far false alarm, a breach of the engine's
+    // contract (paper A without rounding says yes, the engine says no), or a certified
+    // answer paper A contradicts.
+    let breach = (verdict.paper && !verdict.engine) || verdict.certificate_breach;
     if !verdict.class.is_failure() && !breach {
         return;
     }

@@ -434,6 +434,51 @@ mod tests {
         Vect2::new(0.0, 4.0),
     ];
 
+    /// The shortcut "every vertex certainly above BUFF" (skip_margin) must not fire for a
+    /// point just below an edge within BUFF, nor for one just beside a side: in the
+    /// frame at t = 0 ([`AtTime`]) and in the shifted frame ([`Shifted`]). The margin
+    /// is BUFF plus the rounding bound, never less (a mutation-test survivor: a margin
+    /// of 0 or −1 passed every other test).
+    #[test]
+    fn the_all_above_shortcut_keeps_its_margin() {
+        for (s, buff) in [
+            (v(2.0, -0.5), 1.0),  // 0.5 below the bottom edge, BUFF 1
+            (v(2.0, -0.25), 0.5), // likewise, BUFF 0.5
+            (v(-0.5, 2.0), 1.0),  // 0.5 left of the left edge
+            (v(4.75, 2.0), 1.0),  // 0.75 right of the right edge
+        ] {
+            assert!(!definitely_outside(&SQUARE[..], s, buff), "{s:?}");
+            let at = AtTime {
+                p: &SQUARE[..],
+                vels: &SQUARE[..],
+                s,
+                v: Vect2::ZERO,
+                t: crate::ball::Ball::exact(0.0),
+            };
+            assert_eq!(definitely_outside_rel(&at, buff), Tri::No, "{s:?}");
+            // The same point reached by a shift: the square moving right by 1 over t = 1,
+            // the point too (the relative picture is the one above).
+            let shifted = Shifted::new(
+                &SQUARE[..],
+                s,
+                v(1.0, 0.0),
+                v(1.0, 0.0),
+                crate::ball::Ball::exact(1.0),
+            );
+            assert_eq!(definitely_outside_rel(&shifted, buff), Tri::No, "{s:?}");
+        }
+        // Beyond BUFF below (2 below, BUFF 1): certainly outside, in both frames.
+        assert!(definitely_outside(&SQUARE[..], v(2.0, -2.0), 1.0));
+        let far = Shifted::new(
+            &SQUARE[..],
+            v(2.0, -2.0),
+            v(0.5, 0.0),
+            v(0.5, 0.0),
+            crate::ball::Ball::exact(3.0),
+        );
+        assert_eq!(definitely_outside_rel(&far, 1.0), Tri::Yes);
+    }
+
     #[test]
     fn perturb_moves_only_vertices_near_the_ray() {
         let s = v(1.0, 1.0);

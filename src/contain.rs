@@ -57,18 +57,13 @@ pub trait RelPoly {
     fn rel(&self, i: usize) -> BallV;
     /// Vertex i relative to the point as exact sums of floats, if it is one.
     fn terms(&self, i: usize) -> Option<Terms>;
-    /// The computed value of [`RelPoly::rel`] alone.
-    #[inline(always)]
-    fn at(&self, i: usize) -> Vect2 {
-        self.rel(i).v
-    }
+    /// The computed value of [`RelPoly::rel`] alone (each frame computes it its own,
+    /// cheaper way: no default, so that none is left unused and untested).
+    fn at(&self, i: usize) -> Vect2;
     /// A margin M, the same for every vertex, such that a coordinate computed by
     /// [`RelPoly::at`] above M (below −M) is certainly above BUFF (below −BUFF) exactly;
     /// `None` when the error is not bounded that way.
-    #[inline(always)]
-    fn skip_margin(&self, _buff: f64) -> Option<f64> {
-        None
-    }
+    fn skip_margin(&self, buff: f64) -> Option<f64>;
     /// The vertex after i, cyclically.
     #[inline(always)]
     fn next(&self, i: usize) -> usize {

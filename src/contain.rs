@@ -474,6 +474,34 @@ mod tests {
         assert_eq!(definitely_outside_rel(&far, 1.0), Tri::Yes);
     }
 
+    /// The frame at a time t ≠ 0 ([`AtTime`]) is P(t) seen from s(t), the same answer as
+    /// the polygon and point moved there by hand (exact dyadic motion); a frame that
+    /// forgot the motion (a mutation-test survivor) answers for t = 0 instead.
+    #[test]
+    fn the_frame_at_a_time_is_the_moved_scene() {
+        let vels = [v(1.0, 0.0), v(1.0, 0.0), v(1.5, 0.5), v(1.0, 0.5)];
+        let s = v(9.0, 2.0);
+        let sv = v(-1.0, 0.0);
+        for (t, inside) in [(0.0, false), (2.0, false), (3.0, true), (4.0, true)] {
+            let at = AtTime {
+                p: &SQUARE[..],
+                vels: &vels[..],
+                s,
+                v: sv,
+                t: crate::ball::Ball::exact(t),
+            };
+            let moved: Vec<Vect2> = SQUARE
+                .iter()
+                .zip(&vels)
+                .map(|(&p, &w)| p + w.scale(t))
+                .collect();
+            let by_hand = definitely_outside(&moved[..], s + sv.scale(t), 0.25);
+            assert_eq!(by_hand, !inside, "t = {t}");
+            let want = if inside { Tri::No } else { Tri::Yes };
+            assert_eq!(definitely_outside_rel(&at, 0.25), want, "t = {t}");
+        }
+    }
+
     #[test]
     fn perturb_moves_only_vertices_near_the_ray() {
         let s = v(1.0, 1.0);

@@ -1396,6 +1396,38 @@ mod tests {
         }
     }
 
+    /// Paper A §II.I edge_detect accepts a crossing of the edge's line beyond the edge's
+    /// end by an F-dependent stretch: for the bottom edge (0,0)-(2,0) of this warping
+    /// triangle with F = 1/2, crossings up to x = 3 are detected and x = 3.1 is not
+    /// (paper A in exact arithmetic, `polyguard detect --engine exact`, says the same),
+    /// all of them far beyond BUFF = 0.01 from the polygon. The filter in front of
+    /// edge_detect (swept_boxes_apart, margin 2F·L doubled) must keep the edge for every
+    /// detected crossing: a mutant that shrinks the margin below 1 (the gap from the
+    /// edge's box to x = 3) rejects it.
+    #[test]
+    fn the_sweep_filter_keeps_the_extended_edge() {
+        let p = [v(0.0, 0.0), v(2.0, 0.0), v(1.0, 3.0)];
+        // Warping (detect_diff_2d): the apex drifts up slowly, the bottom edge stays.
+        let vels = [v(0.0, 0.0), v(0.0, 0.0), v(0.0, 1.0 / 64.0)];
+        let (t, buff, vel) = (1.0, 0.01, v(0.0, 2.0));
+        for (x, f, want) in [
+            (2.4, 0.5, true),
+            (2.9, 0.5, true),
+            (3.0, 0.5, true),
+            (3.1, 0.5, false),
+            (3.5, 0.5, false),
+            (2.0001, 1e-4, true),
+            (2.01, 1e-4, false),
+        ] {
+            let s = v(x, -1.0);
+            assert_eq!(
+                detect_diff_2d(t, s, vel, &p[..], &vels[..], f, buff),
+                want,
+                "crossing y = 0 at x = {x}, F = {f}"
+            );
+        }
+    }
+
     #[test]
     fn dot_nn_lin_cases() {
         // A = 0, B = 0: f = C.

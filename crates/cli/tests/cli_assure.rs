@@ -36,6 +36,29 @@ fn small_campaign_writes_its_report() {
         .map(|n| n.as_u64().expect("count"))
         .sum();
     assert_eq!(counted, 300);
+    assert!(stdout.contains("coverage (all modes)"), "{stdout}");
+    assert!(
+        stdout
+            .lines()
+            .last()
+            .is_some_and(|l| l.starts_with("PASS: 0 missed detections")),
+        "{stdout}"
+    );
+    // The coverage of one mode, as the rate of a class; an unknown mode names the known.
+    let cov = |args: &[&str]| {
+        Command::new(env!("CARGO_BIN_EXE_polyguard"))
+            .args(["assure", "coverage"])
+            .arg(dir.join("report.json"))
+            .args(args)
+            .output()
+            .expect("run polyguard assure coverage")
+    };
+    let view = cov(&["--mode", "free", "--class", "agree"]);
+    assert_eq!(view.status.code(), Some(0));
+    assert!(String::from_utf8_lossy(&view.stdout).contains("coverage (modes free*): % agree"));
+    let none = cov(&["--mode", "nosuchmode"]);
+    assert_eq!(none.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&none.stderr).contains("the report has: along_edge"));
 }
 
 /// `polyguard assure | head` used to lose the report: the summary was printed first and a

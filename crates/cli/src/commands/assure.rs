@@ -127,6 +127,58 @@ pub enum MergeCommand {
         #[arg(long)]
         partial: bool,
     },
+    /// Print a report's coverage grid for some generator modes, as counts or as the
+    /// rate of one class per scale bucket.
+    Coverage {
+        /// A report.json (of a run or a merge).
+        report: PathBuf,
+        /// Only the modes whose name starts with this (e.g. `edge_buff`, `free+long`).
+        #[arg(long)]
+        mode: Option<String>,
+        /// Show the percentage of this class per bucket instead of the case counts
+        /// (e.g. `false_alarm_in_band`).
+        #[arg(long, value_parser = parse_class)]
+        class: Option<Class>,
+    },
+}
+
+fn parse_class(s: &str) -> Result<Class, String> {
+    Class::ALL
+        .into_iter()
+        .find(|c| c.name() == s)
+        .ok_or_else(|| {
+            let names: Vec<&str> = Class::ALL.iter().map(|c| c.name()).collect();
+            format!("unknown class {s:?}; one of {}", names.join(", "))
+        })
+}
+
+/// `polyguard assure coverage`.
+fn coverage(path: &Path, mode: Option<&str>, class: Option<Class>) -> ExitCode {
+    let report = match fs::read_to_string(path)
+        .map_err(|e| e.to_string())
+        .and_then(|t| Report::from_json(&t))
+    {
+        Ok(r) => r,
+        Err(e) => {
+            eprintln!("polyguard assure coverage: {}: {e}", path.display());
+            return ExitCode::from(2);
+        }
+    };
+    match report.coverage_view(mode, class) {
+        Some(grid) => {
+            let mut stdout = std::io::stdout().lock();
+            let _ = stdout.write_all(grid.as_bytes());
+            ExitCode::SUCCESS
+        }
+        None => {
+            eprintln!(
+                "polyguard assure coverage: no mode starts with {:?}; the report has: {}",
+                mode.unwrap_or(""),
+                report.coverage_modes().join(", ")
+            );
+            ExitCode::from(2)
+        }
+    }
 }
 
 fn parse_shard(s: &str) -> Result<(u64, u64), String> {
@@ -218,13 +270,18 @@ fn write_counterexample(
 
 /// Runs `polyguard assure`.
 pub fn run(args: &AssureArgs) -> ExitCode {
-    if let Some(MergeCommand::Merge {
-        reports,
-        out,
-        partial,
-    }) = &args.merge
-    {
-        return merge(reports, out, *partial);
+    match &args.merge {
+        Some(MergeCommand::Merge {
+            reports,
+            out,
+            partial,
+        }) => return merge(reports, out, *partial),
+        Some(MergeCommand::Coverage {
+            report,
+            mode,
+            class,
+        }) => return coverage(report, mode.as_deref(), *class),
+        None => {}
     }
     let (shard_i, shard_n) = args.shard.unwrap_or((0, 1));
     let space = args.aim.unwrap_or_default();
@@ -392,6 +449,10 @@ fn finish(report: &Report, out: &Path) -> ExitCode {
     text += &format!("report: {}\n", path.display());
     if !report.contract_only {
         text += &report.coverage_grid();
+        text += &format!(
+            "per mode, or a class's rate per bucket: polyguard assure coverage {} --mode MODE --class CLASS\n",
+            path.display()
+        );
         text += &Report::legend();
     }
     text += &report.verdict_line();

@@ -489,29 +489,53 @@ impl Report {
     /// The coverage grid: cases per scale bucket, all modes together (rows: BUFF per
     /// polygon size, columns: relative path per polygon size, decades), `.` for an empty
     /// bucket, `!` after a count that includes a failure. The report holds the grid per
-    /// mode and class.
+    /// mode and class; [`Report::coverage_view`] shows any of it.
     pub fn coverage_grid(&self) -> String {
-        let mut grid: BTreeMap<(i32, i32), (u64, bool)> = BTreeMap::new();
-        for buckets in self.by_bucket.values() {
+        self.coverage_view(None, None).unwrap_or_default()
+    }
+
+    /// The generator modes the coverage holds.
+    pub fn coverage_modes(&self) -> Vec<String> {
+        self.by_bucket.keys().cloned().collect()
+    }
+
+    /// A coverage grid of the modes whose name starts with `mode` (all when `None`):
+    /// the count of cases per bucket, or with `class` the percentage of that class among
+    /// the bucket's cases. `None` when no mode matches.
+    pub fn coverage_view(&self, mode: Option<&str>, class: Option<Class>) -> Option<String> {
+        // per bucket: (cases, of the class, any failure)
+        let mut grid: BTreeMap<(i32, i32), (u64, u64, bool)> = BTreeMap::new();
+        let mut matched = false;
+        for (m, buckets) in &self.by_bucket {
+            if mode.is_some_and(|want| !m.starts_with(want)) {
+                continue;
+            }
+            matched = true;
             for (name, counts) in buckets {
                 let Some(key) = parse_bucket(name) else {
                     continue;
                 };
                 let e = grid.entry(key).or_default();
                 e.0 += counts.values().sum::<u64>();
-                e.1 |= counts.iter().any(|(c, n)| c.is_failure() && *n > 0);
+                e.1 += class.and_then(|c| counts.get(&c)).copied().unwrap_or(0);
+                e.2 |= counts.iter().any(|(c, n)| c.is_failure() && *n > 0);
             }
         }
-        if grid.is_empty() {
-            return String::new();
+        if !matched {
+            return None;
         }
         let compact = |n: u64| match n {
             0..=9_999 => n.to_string(),
             10_000..=999_999 => format!("{}k", n / 1000),
             _ => format!("{}M", n / 1_000_000),
         };
-        let mut out = String::from(
-            "coverage: cases per bucket (rows BUFF/size, columns relative path/size, decades)\n",
+        let what = match class {
+            None => "cases".to_string(),
+            Some(c) => format!("% {}", c.name()),
+        };
+        let modes = mode.map_or("all modes".to_string(), |m| format!("modes {m}*"));
+        let mut out = format!(
+            "coverage ({modes}): {what} per bucket (rows BUFF/size, columns relative path/size, decades)\n"
         );
         out.push_str(&format!("{:>10}", "buff\\path"));
         for p in -3..=7 {
@@ -522,14 +546,20 @@ impl Report {
             out.push_str(&format!("{:>10}", format!("1e{b}")));
             for p in -3..=7 {
                 let cell = match grid.get(&(p, b)) {
-                    None => ".".to_string(),
-                    Some((n, bad)) => format!("{}{}", compact(*n), if *bad { "!" } else { "" }),
+                    None | Some((0, _, _)) => ".".to_string(),
+                    Some((n, k, bad)) => {
+                        let v = match class {
+                            None => compact(*n),
+                            Some(_) => format!("{:.2}", 100.0 * *k as f64 / *n as f64),
+                        };
+                        format!("{v}{}", if *bad { "!" } else { "" })
+                    }
                 };
                 out.push_str(&format!("{cell:>7}"));
             }
             out.push('\n');
         }
-        out
+        Some(out)
     }
 
     /// The one verdict line that ends a campaign's summary: PASS or FAIL, with the counts
@@ -629,6 +659,49 @@ mod tests {
             r.add(&verdict(class, Method::DetectSame2d), "free", (1, -3));
         }
         r
+    }
+
+    /// The coverage views count cases per bucket and mode, and give a class's rate.
+    #[test]
+    fn coverage_views_count_and_rate() {
+        let mut r = Report::default();
+        r.add(
+            &verdict(Class::Agree, Method::DetectSame2d),
+            "free",
+            (2, -5),
+        );
+        r.add(
+            &verdict(Class::FalseAlarmInBand, Method::DetectSame2d),
+            "free",
+            (2, -5),
+        );
+        r.add(
+            &verdict(Class::Agree, Method::DetectSame2d),
+            "free",
+            (2, -5),
+        );
+        r.add(
+            &verdict(Class::MissedDetection, Method::DetectSame2d),
+            "edge_buff",
+            (-3, 0),
+        );
+        let row = |grid: &str, label: &str| -> Vec<String> {
+            grid.lines()
+                .find(|l| l.split_whitespace().next() == Some(label))
+                .map(|l| l.split_whitespace().skip(1).map(String::from).collect())
+                .unwrap_or_default()
+        };
+        let all = r.coverage_grid();
+        // columns 1e-3 … 1e7: path 1e2 is the 6th
+        assert_eq!(row(&all, "1e-5")[5], "3");
+        assert_eq!(row(&all, "1e0")[0], "1!", "a failure is marked");
+        assert_eq!(row(&all, "1e-6")[5], ".", "an empty bucket");
+        let rate = r
+            .coverage_view(Some("free"), Some(Class::FalseAlarmInBand))
+            .expect("the mode exists");
+        assert_eq!(row(&rate, "1e-5")[5], "33.33");
+        assert_eq!(row(&rate, "1e0")[0], ".", "edge_buff is not shown");
+        assert!(r.coverage_view(Some("vertex"), None).is_none());
     }
 
     #[test]

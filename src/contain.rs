@@ -441,6 +441,7 @@ mod tests {
             (v(2.0, -0.25), 0.5), // likewise, BUFF 0.5
             (v(-0.5, 2.0), 1.0),  // 0.5 left of the left edge
             (v(4.75, 2.0), 1.0),  // 0.75 right of the right edge
+            (v(2.0, 4.5), 1.0),   // 0.5 above the top edge: every vertex below the point
         ] {
             assert!(!definitely_outside(&SQUARE[..], s, buff), "{s:?}");
             let at = AtTime {

@@ -172,7 +172,7 @@ fn merges_are_exact_or_refused() {
     let (code, _, err) = merge(&[&s0], &[], &out_dir("merge-bad-1"));
     assert_eq!(code, 2, "{err}");
     assert!(
-        err.contains("shards 1/2 of the campaign are missing"),
+        err.contains("shard 1 of 2 (1 shard) of the campaign are missing"),
         "{err}"
     );
     let (code, _, err) = merge(&[&s0, &s0], &[], &out_dir("merge-bad-2"));
@@ -192,7 +192,10 @@ fn merges_are_exact_or_refused() {
     // a partial merge is allowed when asked for, and says so
     let (code, out, err) = merge(&[&s0], &["--partial"], &out_dir("merge-partial"));
     assert!(code == 0 || code == 1, "{out}{err}");
-    assert!(out.contains("PARTIAL: shards 1/2"), "{out}");
+    assert!(
+        out.contains("PARTIAL: shard 1 of 2 (1 shard) of this"),
+        "{out}"
+    );
 }
 
 /// The hunt's canary (issue 9): on the same cases, judging the plain transcription finds

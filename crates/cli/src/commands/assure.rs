@@ -424,8 +424,8 @@ fn finish(report: &Report, out: &Path) -> ExitCode {
     let mut text = report.table();
     if !report.missing_shards.is_empty() {
         text += &format!(
-            "PARTIAL: shards {} of this {}-case campaign are missing; the counts cover {} cases\n",
-            report.missing_shards.join(", "),
+            "PARTIAL: {} of this {}-case campaign are missing; the counts cover {} cases\n",
+            crate::harness::report::shard_ranges(&report.missing_shards),
             report.campaign_cases,
             report.cases
         );

@@ -373,8 +373,8 @@ impl Report {
             .collect();
         if !missing.is_empty() && !partial {
             return Err(format!(
-                "shards {} of the campaign are missing (merge them too, or pass --partial)",
-                missing.join(", ")
+                "{} of the campaign are missing (merge them too, or pass --partial)",
+                shard_ranges(&missing)
             ));
         }
         let mut merged = Report {
@@ -622,6 +622,46 @@ impl Report {
     }
 }
 
+/// Shards written "i/N" (as `missing_shards` lists them), said briefly: consecutive
+/// indices as ranges, "shards 3-5, 9 of 10 (4 shards)"; a list that is not of that form
+/// is said as it is.
+pub fn shard_ranges(shards: &[String]) -> String {
+    let parsed: Option<Vec<(u64, u64)>> = shards
+        .iter()
+        .map(|s| {
+            let (i, n) = s.split_once('/')?;
+            Some((i.parse().ok()?, n.parse().ok()?))
+        })
+        .collect();
+    let Some(parsed) = parsed.filter(|p| !p.is_empty() && p.iter().all(|q| q.1 == p[0].1)) else {
+        return format!("shards {}", shards.join(", "));
+    };
+    let mut idx: Vec<u64> = parsed.iter().map(|q| q.0).collect();
+    idx.sort_unstable();
+    idx.dedup();
+    let mut parts: Vec<String> = Vec::new();
+    let mut k = 0;
+    while k < idx.len() {
+        let start = idx[k];
+        while k + 1 < idx.len() && idx[k + 1] == idx[k] + 1 {
+            k += 1;
+        }
+        parts.push(if idx[k] == start {
+            start.to_string()
+        } else {
+            format!("{start}-{}", idx[k])
+        });
+        k += 1;
+    }
+    let count = idx.len();
+    let noun = if count == 1 { "shard" } else { "shards" };
+    format!(
+        "{noun} {} of {} ({count} {noun})",
+        parts.join(", "),
+        parsed[0].1
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -745,7 +785,7 @@ mod tests {
         };
         // one shard alone is not the campaign
         assert!(err(&[shard(1, 5000, 0, 2, 0)], false)
-            .contains("shards 1/2 of the campaign are missing"));
+            .contains("shard 1 of 2 (1 shard) of the campaign are missing"));
         // shards of a 5,000- and a 6,000-case campaign
         assert!(
             err(&[shard(1, 5000, 0, 2, 0), shard(1, 6000, 1, 2, 0)], false).contains("6000 cases")
@@ -774,8 +814,17 @@ mod tests {
 
     #[test]
     fn a_partial_merge_says_what_is_missing() {
+        // Said briefly: 97 missing shards of 100 make one range, not 97 names.
+        let many: Vec<String> = (3..100).map(|i| format!("{i}/100")).collect();
+        assert_eq!(shard_ranges(&many), "shards 3-99 of 100 (97 shards)");
+        let gaps: Vec<String> = ["9/10", "3/10", "4/10", "5/10"].map(String::from).to_vec();
+        assert_eq!(shard_ranges(&gaps), "shards 3-5, 9 of 10 (4 shards)");
         let m = Report::merge_campaign(&[shard(1, 90, 2, 3, 0)], true).expect("partial");
         assert_eq!(m.missing_shards, vec!["0/3".to_owned(), "1/3".to_owned()]);
+        assert_eq!(
+            shard_ranges(&m.missing_shards),
+            "shards 0-1 of 3 (2 shards)"
+        );
         assert_eq!(m.cases, 30);
         // and a partial merge is not merged again as if it were whole
         assert!(Report::merge_campaign(&[m], true).is_err());

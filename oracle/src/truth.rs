@@ -56,6 +56,7 @@ pub struct ExactTime {
     d: BigRational,
 }
 
+/// ⌊√n⌋, 0 for n ≤ 0 (paper A §II: entry times are roots of quadratics).
 fn big_isqrt(n: &BigInt) -> BigInt {
     if n.sign() != Sign::Plus {
         BigInt::zero()
@@ -66,6 +67,7 @@ fn big_isqrt(n: &BigInt) -> BigInt {
 
 /// Whether n may be a perfect square: false is certain (squares have few
 /// residues modulo 64 and 45045 = 5·7·9·11·13), true means "compute the root".
+/// (Paper A §II (entry times are roots of quadratics).)
 fn may_be_square(n: &BigInt) -> bool {
     let low = n.iter_u64_digits().next().unwrap_or(0);
     if (0x0202_0212_0203_0213u64 >> (low & 63)) & 1 == 0 {
@@ -78,6 +80,7 @@ fn may_be_square(n: &BigInt) -> bool {
     })
 }
 
+/// √x when it is rational (paper A §II: entry times are roots of quadratics).
 fn rational_sqrt(x: &BigRational) -> Option<BigRational> {
     if x.is_negative() {
         return None;
@@ -94,6 +97,7 @@ fn rational_sqrt(x: &BigRational) -> Option<BigRational> {
     }
 }
 
+/// ⌊n⌋ (paper A §II: entry times, printed in decimal).
 fn floor_div(n: &BigRational) -> BigInt {
     n.floor().to_integer()
 }
@@ -265,6 +269,7 @@ pub enum Truth {
 /// its two end positions and the moving segment in the box spanned by the four
 /// end positions of its ends (each coordinate is linear in t); disjoint boxes
 /// mean no contact.
+/// (Paper A §II.C's bounding-box filter, exact.)
 fn boxes_apart<N: Arith, K: Kernel<N>>(
     k: &K,
     t: &N,
@@ -290,6 +295,7 @@ fn boxes_apart<N: Arith, K: Kernel<N>>(
 
 /// g(t) = (q0 + t·q1) × (e0 + t·e1) = g2·t² + g1·t + g0, as [g2, g1, g0]
 /// (q = x − a, the point relative to the edge's start; e = b − a, the edge).
+/// (Paper A §II.C's quadratic, for a point on an edge's line rather than within BUFF.)
 fn contact_coeffs<N: Arith>(q0: &V2<N>, q1: &V2<N>, e0: &V2<N>, e1: &V2<N>) -> [N; 3] {
     let g2 = q1.cross(e1);
     let g1 = q0.cross(e1).plus(&q1.cross(e0));
@@ -299,6 +305,7 @@ fn contact_coeffs<N: Arith>(q0: &V2<N>, q1: &V2<N>, e0: &V2<N>, e1: &V2<N>) -> [
 
 /// The real roots of g2·t² + g1·t + g0, not identically zero, in increasing
 /// order (the candidates of [`earliest_contact`], which names them by index).
+/// (Paper A §II.A (quad_min_le_D's roots), without the BUFF band.)
 fn contact_roots<N: Arith, K: Kernel<N>>(
     k: &K,
     g2: &N,
@@ -347,6 +354,7 @@ pub struct Contact<R> {
 
 /// The earliest t ∈ [0, T] at which the point x0 + t·xv lies on the closed
 /// segment from a0 + t·av to b0 + t·bv, if any (see the module doc).
+/// (Paper A §II.C with BUFF = 0: the exact first touch of a moving point and edge.)
 pub fn earliest_contact<N: Arith, K: Kernel<N>>(
     k: &K,
     t: &N,
@@ -450,6 +458,7 @@ fn sliding<N: Arith, K: Kernel<N>>(
 }
 
 /// Whether the closed segments a b and c d meet (orientation tests).
+/// (Paper A §II's premise (P simple), checked exactly.)
 pub fn segments_intersect<N: Arith, K: Kernel<N>>(
     k: &K,
     a: &V2<N>,
@@ -496,6 +505,7 @@ pub fn segments_intersect<N: Arith, K: Kernel<N>>(
 
 /// The winding number of P around s, `None` when s lies on an edge of P (closed
 /// segments; P need not be simple).
+/// (Paper A §II.D (the ray's crossings), exact and signed.)
 pub fn winding_number<N: Arith, K: Kernel<N>>(
     k: &K,
     p: &[V2<N>],
@@ -536,6 +546,7 @@ pub fn winding_number<N: Arith, K: Kernel<N>>(
 }
 
 /// Whether s lies in the closed polygon P (on an edge, or winding number ≠ 0).
+/// (Paper A §II.D–E without the BUFF band: exact containment.)
 pub fn in_closed_polygon<N: Arith, K: Kernel<N>>(
     k: &K,
     p: &[V2<N>],
@@ -657,6 +668,7 @@ impl Unit for Touch {
 }
 
 /// The exact time of a contact found by the runner.
+/// (Paper A §II: the exact entry time of a contact.)
 fn exact_time<F: ExactField, R: Resolve<F>>(
     r: &R,
     u: &Touch,
@@ -668,6 +680,7 @@ fn exact_time<F: ExactField, R: Resolve<F>>(
     }
 }
 
+/// The earlier of two exact times (paper A §II: the first entry).
 pub(crate) fn min_alg<F: ExactField>(best: Option<Alg<F>>, x: Alg<F>) -> Option<Alg<F>> {
     match best {
         Some(b) if b.cmp_alg(&x) != Ordering::Greater => Some(b),
@@ -736,6 +749,7 @@ impl FBox {
 /// edge does not change when one velocity is subtracted from every vertex (both
 /// positions shift by the same vector at every time), and without the common
 /// translation a polygon's swept boxes stay as small as its warp.
+/// (Paper A §II's premise (P(t) simple): the broad phase's boxes.)
 fn vertex_boxes<F: ExactField>(sc: &Scene<'_, F>, swept: bool) -> Vec<FBox> {
     let t = enclose(&*sc.t);
     let common = sc
@@ -759,6 +773,7 @@ fn vertex_boxes<F: ExactField>(sc: &Scene<'_, F>, swept: bool) -> Vec<FBox> {
 }
 
 /// The boxes of the edges (edge i from vertex i to i + 1) from their ends' boxes.
+/// (Paper A §II's premise (P(t) simple): the broad phase's boxes.)
 fn edge_boxes(vertex: &[FBox]) -> Vec<FBox> {
     let n = vertex.len();
     (0..n)
@@ -769,6 +784,7 @@ fn edge_boxes(vertex: &[FBox]) -> Vec<FBox> {
 /// Every pair (i, m) with a[i] meeting b[m], in increasing order: a sort and sweep
 /// along the first axis, O((|a| + |b|) log + the pairs overlapping on that axis),
 /// in place of the |a|·|b| pairs (256² for the generators' largest outlines).
+/// (Paper A §II's premise (P(t) simple): the broad phase's pairs.)
 fn meeting_pairs(a: &[FBox], b: &[FBox]) -> Vec<(usize, usize)> {
     // Events: every box by its low end on axis 0, the a's first on ties (either order
     // finds the pair; this one is deterministic).
@@ -809,6 +825,7 @@ fn meeting_pairs(a: &[FBox], b: &[FBox]) -> Vec<(usize, usize)> {
 /// The first pair of non-adjacent edges that meet at the scene's start, as vertex
 /// indices (i, m) of their first ends (in the order i, then m). Only edges whose
 /// boxes meet are tested.
+/// (Paper A §II's premise (P simple) at the window's start.)
 fn first_crossing<F: ExactField, R: Resolve<F>>(r: &R) -> Option<(usize, usize)> {
     let n = r.count();
     let edges = edge_boxes(&vertex_boxes(r.exact_scene(), false));
@@ -821,6 +838,7 @@ fn first_crossing<F: ExactField, R: Resolve<F>>(r: &R) -> Option<(usize, usize)>
 /// Why the polygon is not simple on the window: two edges cross at its start, or
 /// a vertex meets a non-incident edge at a time of the window (see the module doc);
 /// `None` when it is simple throughout.
+/// (Paper A §II's premise (P(t) simple on the window).)
 fn not_simple<F: ExactField, R: Resolve<F>>(r: &R, t0: &F) -> Option<String> {
     let n = r.count();
     if let Some((i, m)) = first_crossing(r) {
@@ -865,6 +883,7 @@ enum Collapse<F> {
 }
 
 /// Edge i's ends b − a = d0 + t·dv: when, in [0, T] of the scene, are they equal?
+/// (Paper A §II's premise: an edge of positive length.)
 fn collapse<F: ExactField>(sc: &Scene<'_, F>, i: usize) -> Collapse<F> {
     let j = (i + 1) % sc.p.len();
     let d0 = sc.p[j].minus(&sc.p[i]);
@@ -897,6 +916,7 @@ fn collapse<F: ExactField>(sc: &Scene<'_, F>, i: usize) -> Collapse<F> {
 
 /// The truth on the scene restarted at the window's start t0 (see the module
 /// doc), each sign test and contact test run by `r`.
+/// (Paper A §II's question (and §III's in the slab window), answered exactly.)
 fn ground_truth<F: ExactField, R: Resolve<F>>(r: &R, t0: &F) -> Truth {
     let n = r.count();
     if n < 3 {
@@ -980,6 +1000,7 @@ fn ground_truth<F: ExactField, R: Resolve<F>>(r: &R, t0: &F) -> Truth {
 
 /// The case's scene over its window, restarted at the window's start t0, handed to
 /// `run` with t0 and the window's length (`None` when the point never is in the slab).
+/// (Paper A §III's slab window (all of [0, T] in 2D).)
 fn on_window<F: ExactField>(
     c: &ExactCase<F>,
     run: impl FnOnce(Scene<'_, F>, &F, &F) -> Truth,
@@ -998,12 +1019,14 @@ fn on_window<F: ExactField>(
 /// Every sign test and contact test runs in the interval kernel first
 /// ([`Intervals`]) and, when it abstains, in the exact kernel; the answer is
 /// identical to [`truth_unfiltered`]'s, entry time representation included.
+/// (Paper A §II–III's question, answered exactly.)
 pub fn truth<F: ExactField>(c: &ExactCase<F>) -> Truth {
     truth_with(&Intervals, c)
 }
 
 /// [`truth`] with `first` in front of the exact kernel instead of [`Intervals`]:
-/// the answer is the exact one as long as `first`'s decisions are right.
+/// the answer is the exact one as long as `first`'s decisions are right (paper A
+/// §II–III's question).
 pub fn truth_with<F: ExactField, K: Kernel<Iv>>(first: &K, c: &ExactCase<F>) -> Truth {
     on_window(c, |sc, t0, tw| {
         if t0.is_zero_() {
@@ -1020,6 +1043,7 @@ pub fn truth_with<F: ExactField, K: Kernel<Iv>>(first: &K, c: &ExactCase<F>) -> 
 }
 
 /// The ground truth computed by the exact kernel alone.
+/// (Paper A §II–III's question, answered exactly.)
 pub fn truth_unfiltered<F: ExactField>(c: &ExactCase<F>) -> Truth {
     on_window(c, |sc, t0, tw| {
         let sc = if t0.is_zero_() {

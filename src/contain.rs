@@ -61,8 +61,8 @@ pub trait RelPoly {
     /// cheaper way: no default, so that none is left unused and untested).
     fn at(&self, i: usize) -> Vect2;
     /// A margin M, the same for every vertex, such that a coordinate computed by
-    /// [`RelPoly::at`] above M (below −M) is certainly above BUFF (below −BUFF) exactly;
-    /// `None` when the error is not bounded that way.
+    /// [`RelPoly::at`] at or above M (at or below −M) is certainly above BUFF (below
+    /// −BUFF) exactly, strictly; `None` when the error is not bounded that way.
     fn skip_margin(&self, buff: f64) -> Option<f64>;
     /// The vertex after i, cyclically.
     #[inline(always)]
@@ -106,7 +106,8 @@ impl<P: VertexSeq + ?Sized, V: VertexSeq + ?Sized> RelPoly for AtTime<'_, P, V> 
         d.add(w.scale(self.t))
     }
     /// At t = 0 the only error is the rounding of p_i − s, relative: |x̃ − x| ≤ u|x|, so
-    /// x̃ > BUFF·(1 + 4u) (itself rounded at most down to BUFF(1 + 3u)) gives x > BUFF.
+    /// x̃ ≥ BUFF·(1 + 4u) (itself rounded at most down to BUFF(1 + 3u)) gives
+    /// x ≥ BUFF·(1 + 3u)/(1 + u) > BUFF.
     #[inline(always)]
     fn skip_margin(&self, buff: f64) -> Option<f64> {
         if self.t.z == 0.0 && self.t.r == 0.0 {
@@ -191,7 +192,7 @@ impl<P: VertexSeq + ?Sized> RelPoly for Shifted<'_, P> {
     /// x̃ = fl(fl(p − s) + sh̃): |x̃ − x| ≤ u|x̃|(1 + 2u) (the sum) + 2u|fl(p − s)| (the
     /// difference, |fl(p − s)| ≤ (|x̃| + |sh̃|)(1 + 2u)) + r_sh ≤ 5u|x̃| + C with
     /// C = 3u·|sh̃| + r_sh. So x̃ > (BUFF + C)/(1 − 5u) gives x > BUFF; [`crate::ball::up`]
-    /// of BUFF + C is larger than that.
+    /// of BUFF + C is larger than that, so x̃ ≥ it suffices.
     #[inline(always)]
     fn skip_margin(&self, buff: f64) -> Option<f64> {
         Some(crate::ball::up(buff + self.slack))
@@ -227,12 +228,14 @@ pub fn near_edge_rel(
         return Tri::Unsure;
     }
     // A non-finite coordinate comes with an infinite radius (see ball::bounded), so t is
-    // then +∞ and nothing is filtered.
+    // then +∞ and nothing is filtered. Closed comparisons: with both balls in x ≥ BUFF
+    // (t ≥ BUFF + radius), every point of the segment is at distance ≥ BUFF, and
+    // "closer than BUFF" is strict, so a tie is decided too.
     let t = crate::ball::up(buff + mx(a.r, b.r));
-    if (a.v.x > t && b.v.x > t)
-        || (a.v.x < -t && b.v.x < -t)
-        || (a.v.y > t && b.v.y > t)
-        || (a.v.y < -t && b.v.y < -t)
+    if (a.v.x >= t && b.v.x >= t)
+        || (a.v.x <= -t && b.v.x <= -t)
+        || (a.v.y >= t && b.v.y >= t)
+        || (a.v.y <= -t && b.v.y <= -t)
     {
         return Tri::No;
     }
@@ -337,7 +340,7 @@ pub fn definitely_outside_rel<R: RelPoly + ?Sized>(p: &R, buff: f64) -> Tri {
     // number. The per-edge test below cannot see this (an edge above the point may
     // cross the ray), so it goes first, vertex by vertex, stopping at the first miss.
     if let Some(m) = fixed {
-        if n > 0 && (0..n).all(|i| p.at(i).y > m) {
+        if n > 0 && (0..n).all(|i| p.at(i).y >= m) {
             return Tri::Yes;
         }
     }
@@ -352,9 +355,11 @@ pub fn definitely_outside_rel<R: RelPoly + ?Sized>(p: &R, buff: f64) -> Tri {
         // point is farther than BUFF from its bounding box (§II.C): nothing to count.
         // (A point outside the polygon's bounding box skips every edge this way.) With a
         // margin common to all vertices the test needs no radius; otherwise the two
-        // radii give it.
-        let skip =
-            |m: f64| (av.x > m && bv.x > m) || (av.x < -m && bv.x < -m) || (av.y < -m && bv.y < -m);
+        // radii give it (x̃ ≥ up(BUFF + r) > BUFF + r gives x > BUFF). Closed
+        // comparisons: either margin is strict on its own.
+        let skip = |m: f64| {
+            (av.x >= m && bv.x >= m) || (av.x <= -m && bv.x <= -m) || (av.y <= -m && bv.y <= -m)
+        };
         if let Some(m) = fixed {
             if skip(m) {
                 continue;
@@ -589,5 +594,258 @@ mod tests {
         assert!(!definitely_outside(sq, v(4.05, 2.0), 0.1)); // within BUFF of the edge
         assert!(definitely_outside(sq, v(4.5, 2.0), 0.5)); // exactly BUFF away
         assert!(!definitely_outside(sq, v(4.25, 2.0), 0.5));
+    }
+
+    /// A frame that counts its ball computations ([`RelPoly::rel`]): the work that
+    /// §II.E's shortcuts are there to save.
+    struct Counting<'a, R> {
+        inner: &'a R,
+        rels: core::cell::Cell<usize>,
+    }
+
+    impl<'a, R: RelPoly> Counting<'a, R> {
+        fn new(inner: &'a R) -> Self {
+            Counting {
+                inner,
+                rels: core::cell::Cell::new(0),
+            }
+        }
+    }
+
+    impl<R: RelPoly> RelPoly for Counting<'_, R> {
+        fn count(&self) -> usize {
+            self.inner.count()
+        }
+        fn rel(&self, i: usize) -> BallV {
+            self.rels.set(self.rels.get() + 1);
+            self.inner.rel(i)
+        }
+        fn terms(&self, i: usize) -> Option<Terms> {
+            self.inner.terms(i)
+        }
+        fn at(&self, i: usize) -> Vect2 {
+            self.inner.at(i)
+        }
+        fn skip_margin(&self, buff: f64) -> Option<f64> {
+            self.inner.skip_margin(buff)
+        }
+    }
+
+    /// §II.E's shortcuts do their work: a point 1.5·BUFF or 10⁶ beyond a side of the
+    /// polygon's bounding box, on any of the four sides, is answered `Yes` without a
+    /// single ball computation, in the frame at t = 0 and in the shifted frame. 1.5·BUFF
+    /// lies between the margins BUFF·(1 + 4u) (or BUFF + the shift's slack) and BUFF + 1
+    /// or 5·BUFF, so a margin off by a term or a factor shows; a frame whose `at` or
+    /// `skip_margin` stopped answering shows too. (Mutation-test survivors: each of these
+    /// left every answer unchanged, only slower.)
+    #[test]
+    fn the_shortcuts_skip_what_is_far() {
+        for d in [1.5, 1e6] {
+            for (s, side) in [
+                (v(-d, 2.0), "left: every edge skipped"),
+                (v(4.0 + d, 2.0), "right: every edge skipped"),
+                (v(2.0, 4.0 + d), "above: every edge skipped"),
+                (v(2.0, -d), "below: the all-above shortcut"),
+            ] {
+                let at = AtTime {
+                    p: &SQUARE[..],
+                    vels: &SQUARE[..],
+                    s,
+                    v: Vect2::ZERO,
+                    t: crate::ball::Ball::exact(0.0),
+                };
+                let counted = Counting::new(&at);
+                assert_eq!(definitely_outside_rel(&counted, 1.0), Tri::Yes, "{side}");
+                assert_eq!(counted.rels.get(), 0, "t = 0, {side}, d = {d}");
+                // The square and the point both moving right by 1 over t = 1.
+                let shifted = Shifted::new(
+                    &SQUARE[..],
+                    s,
+                    v(1.0, 0.0),
+                    v(1.0, 0.0),
+                    crate::ball::Ball::exact(1.0),
+                );
+                let counted = Counting::new(&shifted);
+                assert_eq!(definitely_outside_rel(&counted, 1.0), Tri::Yes, "{side}");
+                assert_eq!(counted.rels.get(), 0, "shifted, {side}, d = {d}");
+            }
+        }
+        // Within BUFF the edges are computed: the shortcut is not a blanket.
+        let at = AtTime {
+            p: &SQUARE[..],
+            vels: &SQUARE[..],
+            s: v(-0.5, 2.0),
+            v: Vect2::ZERO,
+            t: crate::ball::Ball::exact(0.0),
+        };
+        let counted = Counting::new(&at);
+        assert_eq!(definitely_outside_rel(&counted, 1.0), Tri::No);
+        assert!(counted.rels.get() > 0);
+    }
+
+    /// At a time t ≠ 0 the vertex's computed position carries the rounding of t·(v_i − v),
+    /// up to half an ulp of the product: no margin of the t = 0 kind holds, and the
+    /// per-edge skip must widen BUFF by the balls' radii. Crafted: x = 2⁵³ + 2 +
+    /// t·W with W = −(2⁵³ − 1), t = 1 + 2⁻⁵², so exactly x = 1 + 2⁻⁵², while fl(t·W) = −2⁵³
+    /// and the computed x is 2. With BUFF 1.5 the square's left side is within BUFF of the
+    /// point (exactly), yet computed beyond 1.5·(1 + 4u). (Mutation-test survivors: a
+    /// t = 0 margin for every exact time, and BUFF − radius for BUFF + radius.)
+    #[test]
+    fn a_moved_frame_keeps_its_rounding_in_the_skip() {
+        let left = 9_007_199_254_740_994.0; // 2⁵³ + 2
+        let (side, half) = (1_048_576.0, 524_288.0); // 2²⁰, 2¹⁹
+        let p = [
+            v(left, -half),
+            v(left + side, -half),
+            v(left + side, half),
+            v(left, half),
+        ];
+        let w = v(-9_007_199_254_740_991.0, 0.0); // −(2⁵³ − 1)
+        let vels = [w; 4];
+        let t = 1.0 + f64::EPSILON;
+        assert_eq!(
+            w.x * t,
+            -9_007_199_254_740_992.0,
+            "the product rounds as designed"
+        );
+        let at = AtTime {
+            p: &p[..],
+            vels: &vels[..],
+            s: Vect2::ZERO,
+            v: Vect2::ZERO,
+            t: crate::ball::Ball::exact(t),
+        };
+        assert_eq!(at.at(0).x, 2.0, "the computed left side");
+        assert_ne!(definitely_outside_rel(&at, 1.5), Tri::Yes);
+    }
+
+    /// §II.C's filter decides what the ball tests cannot: two balls of radius 4 with their
+    /// centres BUFF + 4 beyond BUFF's box on one side, or exactly at the filter's bound (a
+    /// tie: every point of the segment is then at distance ≥ BUFF, and near_edge is
+    /// strict), are `No` on each of the four sides, while the end and interior tests on
+    /// the same balls are `Unsure`. (Mutation-test survivors: a filter weakened to `==`,
+    /// `&&` or a strict comparison changed no answer the other tests saw.)
+    #[test]
+    fn the_near_edge_filter_decides_far_balls() {
+        let (buff, r) = (1.0, 4.0);
+        let bound = crate::ball::up(buff + r);
+        for x in [bound, 10.0] {
+            for (a, b) in [
+                (v(x, -3.0), v(x, 1e3)),   // both right of the point
+                (v(-x, -3.0), v(-x, 1e3)), // left
+                (v(-3.0, x), v(1e3, x)),   // above
+                (v(-3.0, -x), v(1e3, -x)), // below
+            ] {
+                let (a, b) = (BallV { v: a, r }, BallV { v: b, r });
+                assert_eq!(near_edge_rel(a, b, buff, || None), Tri::No, "{a:?} {b:?}");
+                let ends = pr::closer_than(a, buff, || None).or(pr::closer_than(b, buff, || None));
+                let unfiltered = ends.or(pr::interior_closer_than(a, b, buff, || None));
+                assert_eq!(unfiltered, Tri::Unsure, "the filter is what decides {a:?}");
+            }
+        }
+        // One end on the near side of the bound: the filter does not fire.
+        let (a, b) = (
+            BallV {
+                v: v(bound, -3.0),
+                r,
+            },
+            BallV {
+                v: v(bound * (1.0 - f64::EPSILON), 1e3),
+                r,
+            },
+        );
+        assert_eq!(near_edge_rel(a, b, buff, || None), Tri::Unsure);
+    }
+
+    /// The margins are closed: vertices exactly at the margin M (computed as the frame
+    /// computes it) are skipped, in the all-above shortcut and in the per-edge skip, with
+    /// no ball computed; M is strict on its own (see [`RelPoly::skip_margin`]).
+    #[test]
+    fn the_shortcut_margins_are_closed() {
+        let buff = 1.0;
+        let zero = crate::ball::Ball::exact(0.0);
+        let probe = AtTime {
+            p: &SQUARE[..],
+            vels: &SQUARE[..],
+            s: Vect2::ZERO,
+            v: Vect2::ZERO,
+            t: zero,
+        };
+        let m = probe.skip_margin(buff).expect("t = 0 has a margin");
+        assert!(m > buff);
+        // A square [m, m + 4] × [−2, 2] right of the point, and one [−2, 2] × [m, m + 4]
+        // above the point (every vertex above: the all-above shortcut).
+        let right: Vec<Vect2> = SQUARE.iter().map(|q| v(q.x + m, q.y - 2.0)).collect();
+        let above: Vec<Vect2> = SQUARE.iter().map(|q| v(q.x - 2.0, q.y + m)).collect();
+        for (poly, what) in [(&right, "per-edge skip"), (&above, "all-above shortcut")] {
+            let at = AtTime {
+                p: &poly[..],
+                vels: &poly[..],
+                s: Vect2::ZERO,
+                v: Vect2::ZERO,
+                t: zero,
+            };
+            let q = at.at(0); // (m, −2) or (−2, m): the tie is exact
+            assert!(q.x == m || q.y == m, "{q:?}");
+            let counted = Counting::new(&at);
+            assert_eq!(definitely_outside_rel(&counted, buff), Tri::Yes, "{what}");
+            assert_eq!(
+                counted.rels.get(),
+                0,
+                "{what}: a vertex exactly at M is skipped"
+            );
+        }
+    }
+
+    /// An empty vertex list: definitely outside, with no vertex read (the shortcuts must
+    /// not look at a vertex 0 that is not there).
+    #[test]
+    fn an_empty_polygon_is_outside_and_reads_no_vertex() {
+        let none: [Vect2; 0] = [];
+        assert!(definitely_outside(&none[..], v(1.0, 2.0), 1.0));
+    }
+
+    /// A time known only as a ball around 0 (a slab window's start that underflowed to 0,
+    /// with its error radius r) still carries the motion: every position at a time in
+    /// [−r, r] is in the vertex's ball. Crafted with exact dyadics: velocity 2⁹⁰⁰, r =
+    /// 2⁻⁹⁰⁰, so the vertex (1, 1) can be anywhere in x ∈ [0, 2]. (A mutation-test
+    /// survivor returned the t = 0 position for such a ball.)
+    #[test]
+    fn a_time_ball_around_zero_carries_the_motion() {
+        let big = 2f64.powi(900);
+        let p = [v(1.0, 1.0), v(3.0, 1.0), v(3.0, 3.0)];
+        let vels = [v(big, 0.0); 3];
+        let t = crate::ball::Ball {
+            z: 0.0,
+            r: 1.0 / big,
+        };
+        let at = AtTime {
+            p: &p[..],
+            vels: &vels[..],
+            s: Vect2::ZERO,
+            v: Vect2::ZERO,
+            t,
+        };
+        for (i, q) in p.iter().enumerate() {
+            let b = at.rel(i);
+            for x in [q.x - 1.0, q.x + 1.0] {
+                // the position at t = ∓r, exactly
+                assert!((b.v.x - x).abs() <= b.r, "vertex {i}: {b:?} misses x = {x}");
+            }
+        }
+        // Such a frame has no exact terms (its time is not a float), so it cannot claim
+        // "definitely outside" from the t = 0 picture: the triangle 3 beyond the point at
+        // t = 0 (BUFF 1) sweeps x by ±4 within the ball and covers the point at t = −r.
+        let far = [v(3.0, -1.0), v(5.0, -1.0), v(5.0, 1.0)];
+        let vels = [v(4.0 * big, 0.0); 3];
+        let at = AtTime {
+            p: &far[..],
+            vels: &vels[..],
+            s: Vect2::ZERO,
+            v: Vect2::ZERO,
+            t,
+        };
+        assert!(at.terms(0).is_none());
+        assert_ne!(definitely_outside_rel(&at, 1.0), Tri::Yes);
     }
 }

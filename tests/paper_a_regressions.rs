@@ -4,7 +4,8 @@
 //! `class`, the class `harness::classify` gave it when it was recorded, and `why`, why it
 //! is there. The
 //! replay parses the line with the CLI's parser, runs engine, paper-exact and truth
-//! (`classify::compare`) and checks that the class still holds. A recorded failure
+//! (`classify::compare`) and checks that the class still holds and that no certified
+//! answer (yes or no) contradicts paper-exact. A recorded failure
 //! (`missed_detection`, `false_alarm_far`) that now comes out better is reported as fixed:
 //! update the line's class (and say so in its `why`), never delete it.
 
@@ -52,6 +53,12 @@ fn replay(file: &Path, line_no: usize, line: &str) -> Result<Class, String> {
     let verdict = compare(&RawCase::from_api(&case))
         .map_err(|e| format!("{at} ({id}): cannot be compared: {e:?}"))?;
     let now = verdict.class;
+    if verdict.certificate_breach {
+        return Err(format!(
+            "{at} ({id}): the engine certifies {} but paper-exact says {}: a certificate breach",
+            verdict.engine, verdict.paper
+        ));
+    }
     if now == recorded {
         return Ok(now);
     }

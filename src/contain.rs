@@ -848,4 +848,27 @@ mod tests {
         assert!(at.terms(0).is_none());
         assert_ne!(definitely_outside_rel(&at, 1.0), Tri::Yes);
     }
+
+    /// §II.B–C: a perturbed vertex keeps its exact terms. The triangle (0, −20),
+    /// (4, −2), (0, −5) seen from the point, BUFF 4:
+    /// - (4, −2) lies in the perturbation strip (|4| ≤ 4, −2 ≥ −4) and moves to (−4, −2);
+    /// - the perturbed edge to (0, −5) is then exactly BUFF from the point
+    ///   (|(−4, −2) × (4, −3)| / 5 = 4, its foot inside the edge), as is the unperturbed
+    ///   edge from (4, −2);
+    /// - every other edge is farther, and the triangle stays below the point, so the
+    ///   ray crosses nothing.
+    ///
+    /// The balls cannot tell the ties; exactly, near_edge is strict, so the point is
+    /// definitely outside. Terms shifted by −2/BUFF instead of −2·BUFF put the vertex at
+    /// (3.5, −2), whose edge passes within BUFF. That shift is the same when BUFF = 1,
+    /// so it survived mutation testing.
+    #[test]
+    fn a_perturbed_vertex_keeps_its_exact_terms() {
+        let s = v(0.5, 0.25);
+        let tri: Vec<Vect2> = [v(0.0, -20.0), v(4.0, -2.0), v(0.0, -5.0)]
+            .iter()
+            .map(|&q| q + s)
+            .collect();
+        assert!(definitely_outside(&tri[..], s, 4.0));
+    }
 }

@@ -40,7 +40,7 @@ use num_traits::{One, Signed, ToPrimitive, Zero};
 use crate::case::ExactCase;
 use crate::detect::{dot_nn_lin, slab_window, Interval, Sign as Side};
 use crate::field::{Arith, ExactField, V2};
-use crate::kernel::interval::{enclose, enclose2, Iv};
+use crate::kernel::interval::{self, edge_boxes, enclose, meeting_pairs, Iv, VertexBox};
 use crate::kernel::run::{Filtered, Resolve, Scene, Single, Unit};
 use crate::kernel::{
     all, all_of, and, any_of, certainly, not, or, Decided, Exact, Intervals, Kernel,
@@ -706,120 +706,11 @@ fn window<F: ExactField>(c: &ExactCase<F>) -> Option<(F, F)> {
     }
 }
 
-/// An axis-aligned box of floats, [lo₀, hi₀] × [lo₁, hi₁]: the broad phase of the
-/// truth's simplicity tests (§II's premise that P(t) is simple, checked pair by pair).
-#[derive(Clone, Copy, Debug)]
-struct FBox {
-    lo: [f64; 2],
-    hi: [f64; 2],
-}
-
-impl FBox {
-    /// The box of an interval vector.
-    fn of(p: &V2<Iv>) -> FBox {
-        FBox {
-            lo: [p.x.lo, p.y.lo],
-            hi: [p.x.hi, p.y.hi],
-        }
-    }
-
-    /// The smallest box holding both.
-    fn hull(self, o: FBox) -> FBox {
-        FBox {
-            lo: [self.lo[0].min(o.lo[0]), self.lo[1].min(o.lo[1])],
-            hi: [self.hi[0].max(o.hi[0]), self.hi[1].max(o.hi[1])],
-        }
-    }
-
-    /// Whether the closed boxes share a point. No rounding: the ends are compared as
-    /// they are, and an infinite end (an enclosure that certifies nothing) meets
-    /// everything on its side.
-    fn meets(self, o: FBox) -> bool {
-        (0..2).all(|k| self.lo[k] <= o.hi[k] && o.lo[k] <= self.hi[k])
-    }
-}
-
-/// Rigorous boxes of the vertices of the exact scene: where vertex k is at the
-/// scene's start (`swept` false), or anywhere in [0, T] (`swept` true; each
-/// coordinate is linear in t, so the box of the two end positions holds the whole
-/// motion). Each end is an outward-rounded enclosure of the exact position, so the
-/// exact vertex is in its box; the boxes only ever rule contacts out.
-///
-/// The motion is taken relative to vertex 0's velocity: whether a vertex meets an
-/// edge does not change when one velocity is subtracted from every vertex (both
-/// positions shift by the same vector at every time), and without the common
-/// translation a polygon's swept boxes stay as small as its warp.
-/// (Paper A §II's premise (P(t) simple): the broad phase's boxes.)
-fn vertex_boxes<F: ExactField>(sc: &Scene<'_, F>, swept: bool) -> Vec<FBox> {
-    let t = enclose(&*sc.t);
-    let common = sc
-        .vels
-        .first()
-        .map_or(V2::new(Iv::ZERO, Iv::ZERO), enclose2);
-    sc.p.iter()
-        .zip(sc.vels.iter())
-        .map(|(p, v)| {
-            let p0 = enclose2(p);
-            let at0 = FBox::of(&p0);
-            if !swept {
-                return at0;
-            }
-            let v = enclose2(v);
-            let (vx, vy) = (v.x.sub(common.x), v.y.sub(common.y));
-            let p1 = V2::new(p0.x.add(t.mul(vx)), p0.y.add(t.mul(vy)));
-            at0.hull(FBox::of(&p1))
-        })
-        .collect()
-}
-
-/// The boxes of the edges (edge i from vertex i to i + 1) from their ends' boxes.
-/// (Paper A §II's premise (P(t) simple): the broad phase's boxes.)
-fn edge_boxes(vertex: &[FBox]) -> Vec<FBox> {
-    let n = vertex.len();
-    (0..n)
-        .map(|i| vertex[i].hull(vertex[(i + 1) % n]))
-        .collect()
-}
-
-/// Every pair (i, m) with a[i] meeting b[m], in increasing order: a sort and sweep
-/// along the first axis, O((|a| + |b|) log + the pairs overlapping on that axis),
-/// in place of the |a|·|b| pairs (256² for the generators' largest outlines).
-/// (Paper A §II's premise (P(t) simple): the broad phase's pairs.)
-fn meeting_pairs(a: &[FBox], b: &[FBox]) -> Vec<(usize, usize)> {
-    // Events: every box by its low end on axis 0, the a's first on ties (either order
-    // finds the pair; this one is deterministic).
-    let mut order: Vec<(bool, usize)> = (0..a.len())
-        .map(|i| (false, i))
-        .chain((0..b.len()).map(|m| (true, m)))
-        .collect();
-    let of = |(in_b, i): (bool, usize)| if in_b { b[i] } else { a[i] };
-    order.sort_by(|&x, &y| {
-        of(x).lo[0]
-            .total_cmp(&of(y).lo[0])
-            .then(x.0.cmp(&y.0))
-            .then(x.1.cmp(&y.1))
-    });
-    let (mut open_a, mut open_b): (Vec<usize>, Vec<usize>) = (Vec::new(), Vec::new());
-    let mut pairs = Vec::new();
-    for (in_b, i) in order {
-        let bx = of((in_b, i));
-        // Boxes of the other set that end before this one starts meet nothing from here
-        // on (every later box starts at or after this one).
-        let (mine, other, other_boxes) = if in_b {
-            (&mut open_b, &mut open_a, a)
-        } else {
-            (&mut open_a, &mut open_b, b)
-        };
-        other.retain(|&j| other_boxes[j].hi[0] >= bx.lo[0]);
-        for &j in other.iter() {
-            if bx.meets(other_boxes[j]) {
-                pairs.push(if in_b { (j, i) } else { (i, j) });
-            }
-        }
-        mine.push(i);
-    }
-    pairs.sort_unstable();
-    pairs
+/// Rigorous boxes of the exact scene's vertices (paper A §II's premise, P(t) simple: the
+/// broad phase's boxes): where each is at the scene's start, or anywhere in [0, T]
+/// (`swept`), in the frame of vertex 0 ([`interval::vertex_boxes`]).
+fn vertex_boxes<F: ExactField>(sc: &Scene<'_, F>, swept: bool) -> Vec<VertexBox> {
+    interval::vertex_boxes(&sc.p, &sc.vels, &sc.t, swept)
 }
 
 /// The first pair of non-adjacent edges that meet at the scene's start, as vertex
@@ -1075,72 +966,5 @@ pub fn simple_on_window<F: ExactField>(c: &ExactCase<F>) -> Result<(), String> {
     match not_simple(&Filtered::new(&Intervals, sc), &F::zero()) {
         Some(why) => Err(why),
         None => Ok(()),
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::field::Q;
-    use proptest::prelude::*;
-
-    fn fbox() -> impl Strategy<Value = FBox> {
-        // Small integer grids make touching and shared ends common; an infinite end
-        // stands for an enclosure that certifies nothing.
-        let end = prop_oneof![8 => (-6i32..6).prop_map(f64::from), 1 => Just(f64::INFINITY)];
-        (end.clone(), end.clone(), 0i32..5, 0i32..5).prop_map(|(x, y, w, h)| FBox {
-            lo: [-x, -y],
-            hi: [
-                if x.is_finite() { -x + f64::from(w) } else { x },
-                -y + f64::from(h),
-            ],
-        })
-    }
-
-    proptest! {
-        // §II broad phase: the sweep finds exactly the pairs the |a|·|b| test finds.
-        #[test]
-        fn the_sweep_finds_every_meeting_pair(
-            a in proptest::collection::vec(fbox(), 0..12),
-            b in proptest::collection::vec(fbox(), 0..12),
-        ) {
-            let mut brute = Vec::new();
-            for (i, x) in a.iter().enumerate() {
-                for (m, y) in b.iter().enumerate() {
-                    if x.meets(*y) {
-                        brute.push((i, m));
-                    }
-                }
-            }
-            prop_assert_eq!(meeting_pairs(&a, &b), brute);
-        }
-
-        // The swept boxes hold the exact vertex, in the frame of vertex 0, at every
-        // sampled time of [0, T].
-        #[test]
-        fn swept_boxes_hold_the_exact_motion(
-            p in proptest::collection::vec((-1e9f64..1e9, -1e9f64..1e9, -1e3f64..1e3, -1e3f64..1e3), 3..6),
-            t in 1e-6f64..1e9,
-            k in 0u32..=16,
-        ) {
-            let q = |x: f64| crate::convert::f64_to_exact::<Q>(x);
-            let q_ = |x: f64| q(x).expect("finite");
-            let pos: Vec<V2<Q>> = p.iter().map(|&(x, y, _, _)| V2::new(q_(x), q_(y))).collect();
-            let vel: Vec<V2<Q>> = p.iter().map(|&(_, _, u, v)| V2::new(q_(u), q_(v))).collect();
-            let (tq, zero) = (q_(t), <Q as Arith>::zero());
-            let s = V2::new(zero.clone(), zero.clone());
-            let sc = Scene::new(&tq, &s, &s, &pos, &vel, &zero, &zero);
-            let at = tq.times(&<Q as Arith>::from_i64(i64::from(k))).quotient(&<Q as Arith>::from_i64(16)).expect("16 ≠ 0");
-            for (b, (p0, v)) in vertex_boxes(&sc, true).iter().zip(pos.iter().zip(vel.iter())) {
-                // In the frame that moves with vertex 0.
-                let x = p0.at(&v.minus(&vel[0]), &at);
-                for (c, axis) in [(&x.x, 0), (&x.y, 1)] {
-                    // Exact comparisons with the box's ends (an infinite end holds all).
-                    let above = |end: f64| q(end).is_none_or(|e| c.minus(&e).sign() != Ordering::Less);
-                    let below = |end: f64| q(end).is_none_or(|e| c.minus(&e).sign() != Ordering::Greater);
-                    prop_assert!(above(b.lo[axis]) && below(b.hi[axis]), "{:?} outside {:?}", x, b);
-                }
-            }
-        }
     }
 }

@@ -5,6 +5,9 @@
 //! Floats never decide anything here: they only prove signs, so every answer is the
 //! exact one.
 //!
+//! It also holds the truth's broad phase (`VertexBox`): outward-rounded boxes whose
+//! being apart proves that two exact objects never meet.
+//!
 //! This is the only module besides [`crate::convert`] that names a float type.
 //!
 //! Why it is rigorous (enclosures, outward rounding, decisions, roots):
@@ -508,6 +511,194 @@ pub fn enclose<F: ExactField>(x: &F) -> Iv {
 /// The enclosure of a vector.
 pub fn enclose2<F: ExactField>(p: &V2<F>) -> V2<Iv> {
     V2::new(enclose(&p.x), enclose(&p.y))
+}
+
+// ------------------------------------------------ the truth's broad phase
+
+/// An axis-aligned box of floats, [lo₀, hi₀] × [lo₁, hi₁], enclosing where a vertex
+/// (or an edge) can be: the broad phase of the truth's simplicity tests (paper A §II's
+/// premise that P(t) is simple, checked pair by pair). Boxes only ever rule contacts
+/// out: two boxes apart prove that the exact objects never meet, and meeting boxes
+/// send the pair to the exact test.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct VertexBox {
+    lo: [f64; 2],
+    hi: [f64; 2],
+}
+
+impl VertexBox {
+    /// The box of an interval vector.
+    fn of(p: &V2<Iv>) -> VertexBox {
+        VertexBox {
+            lo: [p.x.lo, p.y.lo],
+            hi: [p.x.hi, p.y.hi],
+        }
+    }
+
+    /// The smallest box holding both.
+    fn hull(self, o: VertexBox) -> VertexBox {
+        VertexBox {
+            lo: [self.lo[0].min(o.lo[0]), self.lo[1].min(o.lo[1])],
+            hi: [self.hi[0].max(o.hi[0]), self.hi[1].max(o.hi[1])],
+        }
+    }
+
+    /// Whether the closed boxes share a point. No rounding: the ends are compared as
+    /// they are, and an infinite end (an enclosure that certifies nothing) meets
+    /// everything on its side.
+    fn meets(self, o: VertexBox) -> bool {
+        (0..2).all(|k| self.lo[k] <= o.hi[k] && o.lo[k] <= self.hi[k])
+    }
+}
+
+/// Rigorous boxes of exact vertices p moving with velocities `vels`: where vertex k
+/// is at time 0 (`swept` false), or anywhere in [0, T] (`swept` true; each
+/// coordinate is linear in t, so the box of the two end positions holds the whole
+/// motion). Each end is an outward-rounded enclosure of the exact position, so the
+/// exact vertex is in its box; the boxes only ever rule contacts out.
+///
+/// The motion is taken relative to vertex 0's velocity: whether a vertex meets an
+/// edge does not change when one velocity is subtracted from every vertex (both
+/// positions shift by the same vector at every time), and without the common
+/// translation a polygon's swept boxes stay as small as its warp.
+/// (Paper A §II's premise (P(t) simple): the broad phase's boxes.)
+pub(crate) fn vertex_boxes<F: ExactField>(
+    p: &[V2<F>],
+    vels: &[V2<F>],
+    t: &F,
+    swept: bool,
+) -> Vec<VertexBox> {
+    let t = enclose(t);
+    let common = vels.first().map_or(V2::new(Iv::ZERO, Iv::ZERO), enclose2);
+    p.iter()
+        .zip(vels.iter())
+        .map(|(p, v)| {
+            let p0 = enclose2(p);
+            let at0 = VertexBox::of(&p0);
+            if !swept {
+                return at0;
+            }
+            let v = enclose2(v);
+            let (vx, vy) = (v.x.sub(common.x), v.y.sub(common.y));
+            let p1 = V2::new(p0.x.add(t.mul(vx)), p0.y.add(t.mul(vy)));
+            at0.hull(VertexBox::of(&p1))
+        })
+        .collect()
+}
+
+/// The boxes of the edges (edge i from vertex i to i + 1) from their ends' boxes.
+/// (Paper A §II's premise (P(t) simple): the broad phase's boxes.)
+pub(crate) fn edge_boxes(vertex: &[VertexBox]) -> Vec<VertexBox> {
+    let n = vertex.len();
+    (0..n)
+        .map(|i| vertex[i].hull(vertex[(i + 1) % n]))
+        .collect()
+}
+
+/// Every pair (i, m) with a[i] meeting b[m], in increasing order: a sort and sweep
+/// along the first axis, O((|a| + |b|) log + the pairs overlapping on that axis),
+/// in place of the |a|·|b| pairs (256² for the generators' largest outlines).
+/// (Paper A §II's premise (P(t) simple): the broad phase's pairs.)
+pub(crate) fn meeting_pairs(a: &[VertexBox], b: &[VertexBox]) -> Vec<(usize, usize)> {
+    // Events: every box by its low end on axis 0, the a's first on ties (either order
+    // finds the pair; this one is deterministic).
+    let mut order: Vec<(bool, usize)> = (0..a.len())
+        .map(|i| (false, i))
+        .chain((0..b.len()).map(|m| (true, m)))
+        .collect();
+    let of = |(in_b, i): (bool, usize)| if in_b { b[i] } else { a[i] };
+    order.sort_by(|&x, &y| {
+        of(x).lo[0]
+            .total_cmp(&of(y).lo[0])
+            .then(x.0.cmp(&y.0))
+            .then(x.1.cmp(&y.1))
+    });
+    let (mut open_a, mut open_b): (Vec<usize>, Vec<usize>) = (Vec::new(), Vec::new());
+    let mut pairs = Vec::new();
+    for (in_b, i) in order {
+        let bx = of((in_b, i));
+        // Boxes of the other set that end before this one starts meet nothing from here
+        // on (every later box starts at or after this one).
+        let (mine, other, other_boxes) = if in_b {
+            (&mut open_b, &mut open_a, a)
+        } else {
+            (&mut open_a, &mut open_b, b)
+        };
+        other.retain(|&j| other_boxes[j].hi[0] >= bx.lo[0]);
+        for &j in other.iter() {
+            if bx.meets(other_boxes[j]) {
+                pairs.push(if in_b { (j, i) } else { (i, j) });
+            }
+        }
+        mine.push(i);
+    }
+    pairs.sort_unstable();
+    pairs
+}
+
+#[cfg(test)]
+mod broad_phase_tests {
+    use super::*;
+    use crate::field::Q;
+    use proptest::prelude::*;
+
+    fn fbox() -> impl Strategy<Value = VertexBox> {
+        // Small integer grids make touching and shared ends common; an infinite end
+        // stands for an enclosure that certifies nothing.
+        let end = prop_oneof![8 => (-6i32..6).prop_map(f64::from), 1 => Just(f64::INFINITY)];
+        (end.clone(), end.clone(), 0i32..5, 0i32..5).prop_map(|(x, y, w, h)| VertexBox {
+            lo: [-x, -y],
+            hi: [
+                if x.is_finite() { -x + f64::from(w) } else { x },
+                -y + f64::from(h),
+            ],
+        })
+    }
+
+    proptest! {
+        // §II broad phase: the sweep finds exactly the pairs the |a|·|b| test finds.
+        #[test]
+        fn the_sweep_finds_every_meeting_pair(
+            a in proptest::collection::vec(fbox(), 0..12),
+            b in proptest::collection::vec(fbox(), 0..12),
+        ) {
+            let mut brute = Vec::new();
+            for (i, x) in a.iter().enumerate() {
+                for (m, y) in b.iter().enumerate() {
+                    if x.meets(*y) {
+                        brute.push((i, m));
+                    }
+                }
+            }
+            prop_assert_eq!(meeting_pairs(&a, &b), brute);
+        }
+
+        // The swept boxes hold the exact vertex, in the frame of vertex 0, at every
+        // sampled time of [0, T].
+        #[test]
+        fn swept_boxes_hold_the_exact_motion(
+            p in proptest::collection::vec((-1e9f64..1e9, -1e9f64..1e9, -1e3f64..1e3, -1e3f64..1e3), 3..6),
+            t in 1e-6f64..1e9,
+            k in 0u32..=16,
+        ) {
+            let q = |x: f64| crate::convert::f64_to_exact::<Q>(x);
+            let q_ = |x: f64| q(x).expect("finite");
+            let pos: Vec<V2<Q>> = p.iter().map(|&(x, y, _, _)| V2::new(q_(x), q_(y))).collect();
+            let vel: Vec<V2<Q>> = p.iter().map(|&(_, _, u, v)| V2::new(q_(u), q_(v))).collect();
+            let tq = q_(t);
+            let at = tq.times(&<Q as Arith>::from_i64(i64::from(k))).quotient(&<Q as Arith>::from_i64(16)).expect("16 ≠ 0");
+            for (b, (p0, v)) in vertex_boxes(&pos, &vel, &tq, true).iter().zip(pos.iter().zip(vel.iter())) {
+                // In the frame that moves with vertex 0.
+                let x = p0.at(&v.minus(&vel[0]), &at);
+                for (c, axis) in [(&x.x, 0), (&x.y, 1)] {
+                    // Exact comparisons with the box's ends (an infinite end holds all).
+                    let above = |end: f64| q(end).is_none_or(|e| c.minus(&e).sign() != Ordering::Less);
+                    let below = |end: f64| q(end).is_none_or(|e| c.minus(&e).sign() != Ordering::Greater);
+                    prop_assert!(above(b.lo[axis]) && below(b.hi[axis]), "{:?} outside {:?}", x, b);
+                }
+            }
+        }
+    }
 }
 
 #[cfg(test)]

@@ -871,4 +871,50 @@ mod tests {
             .collect();
         assert!(definitely_outside(&tri[..], s, 4.0));
     }
+
+    /// A frame of given balls and no exact terms: what a frame at an inexact time looks
+    /// like to §II.E.
+    struct Balls(Vec<BallV>);
+
+    impl RelPoly for Balls {
+        fn count(&self) -> usize {
+            self.0.len()
+        }
+        fn rel(&self, i: usize) -> BallV {
+            self.0[i]
+        }
+        fn terms(&self, _: usize) -> Option<Terms> {
+            None
+        }
+        fn at(&self, i: usize) -> Vect2 {
+            self.0[i].v
+        }
+        fn skip_margin(&self, _: f64) -> Option<f64> {
+            None
+        }
+    }
+
+    /// §II.B–E: an undecided perturbation leaves P*_BUFF unknown, so the answer cannot be
+    /// "definitely outside". The triangle (0.9, −1 ± 0.01), (5, 3), (3, −6) seen from the
+    /// point, BUFF 1:
+    /// - every edge of P is certainly farther than BUFF (1.34, 4.2, 1.35);
+    /// - vertex 0 is perturbed exactly when its y ≥ −1, which the ball cannot tell, and
+    ///   its perturbed edge to (5, 3) passes 0.23 from the point.
+    ///
+    /// So for some exact inputs in the balls the point is not definitely outside: `No` or
+    /// `Unsure`, never `Yes`. Reading "one end undecided" as "not perturbed" (a
+    /// mutation-test survivor: `||` → `&&`) answered `Yes`.
+    #[test]
+    fn an_undecided_perturbation_is_not_outside() {
+        let tri = Balls(vec![
+            BallV {
+                v: v(0.9, -1.0),
+                r: 0.01,
+            },
+            BallV::exact(v(5.0, 3.0)),
+            BallV::exact(v(3.0, -6.0)),
+        ]);
+        assert_eq!(pr::perturbs(tri.rel(0), || None, 1.0), Tri::Unsure);
+        assert_ne!(definitely_outside_rel(&tri, 1.0), Tri::Yes);
+    }
 }

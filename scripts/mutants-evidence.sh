@@ -1,0 +1,106 @@
+#!/usr/bin/env bash
+# The mutation run of the paper-A engine in pieces, recorded in the repository: it runs the
+# shards of scripts/mutants.sh that evidence/mutants/ holds no outcome for yet, one after
+# another, and files each finished shard's outcome there, to be committed. The whole run
+# takes about 5 hours of both cores, longer than a working session; what a session
+# finishes is kept, and the next session goes on from there.
+#
+#   scripts/mutants-evidence.sh [K ...]   # the given shards (default: every one not done)
+#   scripts/mutants-evidence.sh --score   # the score over the shards done so far
+#
+# evidence/mutants/list.txt is the list of mutants the run was started on (cargo mutants
+# --list). Outcomes of shards add up only over one list, so the script refuses to run when
+# the engine's mutated code no longer gives that list (a change to the engine starts the
+# run again: delete evidence/mutants/). New tests do not change it. Each shard runs at the
+# commit checked out (HEAD) in a separate worktree (target/mutants-work), with
+# cargo-mutants' --in-place, so the build is kept from shard to shard; its outcome records
+# that commit.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+ev=evidence/mutants
+shards=40
+files=(src/quad.rs src/contain.rs src/proximity.rs src/detect.rs src/well_formed.rs src/predicates.rs)
+file_args=()
+for f in "${files[@]}"; do file_args+=(--file "$f"); done
+
+score() {
+  local done=0 caught=0 missed=0 unviable=0 timeout=0
+  for d in "$ev"/shard-*/; do
+    [ -f "$d/commit" ] || continue
+    done=$((done + 1))
+    caught=$((caught + $(wc -l < "$d/caught.txt")))
+    missed=$((missed + $(wc -l < "$d/missed.txt")))
+    unviable=$((unviable + $(wc -l < "$d/unviable.txt")))
+    timeout=$((timeout + $(wc -l < "$d/timeout.txt")))
+  done
+  echo "shards done: $done of $shards ($(wc -l < "$ev/list.txt") mutants in all)"
+  echo "caught $caught, missed $missed, timeout $timeout, unviable $unviable"
+  if [ "$missed" -gt 0 ]; then
+    echo "missed (each is sorted in docs/mutation.md: equivalent, or killed by a later test):"
+    cat "$ev"/shard-*/missed.txt | sed 's/^/  /'
+  fi
+}
+
+if [ "${1:-}" = "--score" ]; then
+  score
+  exit 0
+fi
+
+if ! cargo mutants --version >/dev/null 2>&1; then
+  cargo install cargo-mutants --locked
+fi
+work="$root/target/mutants-work"
+if [ ! -d "$work" ]; then
+  git worktree add --detach "$work" HEAD >/dev/null
+else
+  # a session cut off mid-shard leaves a mutant in place: undo it first
+  git -C "$work" reset -q --hard
+  git -C "$work" checkout -q --detach "$(git rev-parse HEAD)"
+fi
+commit=$(git -C "$work" rev-parse HEAD)
+mkdir -p "$ev"
+list="$root/target/mutants-list.txt"
+(cd "$work" && cargo mutants --list --package polyguard "${file_args[@]}") > "$list"
+if [ -f "$ev/list.txt" ]; then
+  if ! cmp -s "$list" "$ev/list.txt"; then
+    diff "$ev/list.txt" "$list" | head -20 >&2
+    echo "mutants-evidence: the engine's mutants are no longer those of $ev/list.txt;" \
+      "outcomes of different lists do not add up (delete $ev to start again)" >&2
+    exit 2
+  fi
+else
+  cp "$list" "$ev/list.txt"
+  echo "$shards" > "$ev/shards"
+fi
+shards=$(cat "$ev/shards")
+
+todo=("$@")
+if [ ${#todo[@]} -eq 0 ]; then
+  for ((k = 0; k < shards; k++)); do todo+=("$k"); done
+fi
+for k in "${todo[@]}"; do
+  dir="$ev/shard-$k"
+  [ -f "$dir/commit" ] && continue
+  out="$root/target/mutants-out/shard-$k"
+  rm -rf "$out"
+  set +e
+  MUTANTS_OUT="$out" "$work/scripts/mutants.sh" --shard "$k/$shards" --in-place \
+    > "$root/target/mutants-out/shard-$k.log" 2>&1
+  code=$?
+  set -e
+  # cargo-mutants: 0 all caught, 2 some missed, 3 some timed out; anything else (a
+  # failing baseline, a usage error) is no outcome
+  if [ "$code" -ne 0 ] && [ "$code" -ne 2 ] && [ "$code" -ne 3 ]; then
+    echo "mutants-evidence: shard $k/$shards did not run (exit $code): target/mutants-out/shard-$k.log" >&2
+    exit "$code"
+  fi
+  mkdir -p "$dir"
+  for f in caught missed unviable timeout; do
+    sort "$out/mutants.out/$f.txt" > "$dir/$f.txt"
+  done
+  echo "$commit" > "$dir/commit"   # last: a shard with a commit file is complete
+  echo "shard $k/$shards: $(wc -l < "$dir/caught.txt") caught, $(wc -l < "$dir/missed.txt") missed," \
+    "$(wc -l < "$dir/timeout.txt") timeout, $(wc -l < "$dir/unviable.txt") unviable (at ${commit:0:7})"
+done
+score

@@ -83,7 +83,7 @@ for k in "${todo[@]}"; do
   dir="$ev/shard-$k"
   [ -f "$dir/commit" ] && continue
   out="$root/target/mutants-out/shard-$k"
-  rm -rf "$out"
+  rm -rf "$out" && mkdir -p "$root/target/mutants-out"
   set +e
   MUTANTS_OUT="$out" "$work/scripts/mutants.sh" --shard "$k/$shards" --in-place \
     > "$root/target/mutants-out/shard-$k.log" 2>&1

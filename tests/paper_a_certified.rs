@@ -2180,3 +2180,38 @@ fn canary_plain_misses_certified_does_not() {
         assert_eq!(sc.api_detect(), Some(true), "{kind:?}: api::detect misses");
     }
 }
+
+/// Found by the mutation run's baseline (a random case of
+/// `definitely_outside_at_the_threshold`): a square of side 1.012·10⁻³²⁰, the point
+/// BUFF = 7.51·10⁻³²¹ left of it and above its top, every number subnormal. The engine
+/// certified "outside" where paper A in exact arithmetic says not.
+#[test]
+fn definitely_outside_keeps_its_certificate_among_subnormals() {
+    let side = 1.012e-320;
+    let poly = [
+        Vect2::new(0.0, 0.0),
+        Vect2::new(side, 0.0),
+        Vect2::new(side, side),
+        Vect2::new(0.0, side),
+    ];
+    let vels = [Vect2::new(0.0, 0.0); 4];
+    let (s, buff) = (Vect2::new(-7.51e-321, 1.728e-320), 7.51e-321);
+    let exact: Vec<V2<Q>> = poly.iter().map(|&p| qv(p)).collect();
+    let want = oc::definitely_outside(&Exact, &exact, &qv(s), &q(buff)).decided();
+    let rel = AtTime {
+        p: &poly[..],
+        vels: &vels[..],
+        s,
+        v: Vect2::new(0.0, 0.0),
+        t: Ball::exact(0.0),
+    };
+    let tri = definitely_outside_rel(&rel, buff);
+    assert!(
+        check_tri(tri, want, "definitely_outside_rel").is_ok(),
+        "engine {tri:?}, paper-exact {want}"
+    );
+    assert!(
+        !definitely_outside(&poly[..], s, buff) || want,
+        "definitely_outside true, paper-exact false"
+    );
+}

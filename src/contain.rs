@@ -105,13 +105,16 @@ impl<P: VertexSeq + ?Sized, V: VertexSeq + ?Sized> RelPoly for AtTime<'_, P, V> 
         let w = BallV::diff(self.vels.vertex(i), self.v);
         d.add(w.scale(self.t))
     }
-    /// At t = 0 the only error is the rounding of p_i − s, relative: |x̃ − x| ≤ u|x|, so
-    /// x̃ ≥ BUFF·(1 + 4u) (itself rounded at most down to BUFF(1 + 3u)) gives
-    /// x ≥ BUFF·(1 + 3u)/(1 + u) > BUFF.
+    /// At t = 0 the only error is the rounding of p_i − s: |x̃ − x| ≤ u|x| for a normal
+    /// x̃, none for a subnormal one (subnormal differences are exact). The margin must
+    /// be strictly above BUFF, since a vertex exactly BUFF to the side is perturbed:
+    /// for a normal BUFF, BUFF·(1 + 4u) rounds to at least BUFF(1 + 3u), and x̃ ≥ that
+    /// gives x ≥ BUFF·(1 + 3u)/(1 + u) > BUFF; for a subnormal BUFF the product rounds
+    /// back to BUFF, and + ETA (2⁻¹⁰⁶⁵, added exactly) keeps it strictly above.
     #[inline(always)]
     fn skip_margin(&self, buff: f64) -> Option<f64> {
         if self.t.z == 0.0 && self.t.r == 0.0 {
-            Some(buff * (1.0 + 4.0 * crate::ball::U))
+            Some(buff * (1.0 + 4.0 * crate::ball::U) + crate::ball::ETA)
         } else {
             None
         }

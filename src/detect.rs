@@ -1671,4 +1671,183 @@ mod tests {
             1e-4
         ));
     }
+
+    /// Exact checks of [`root_bounds`]' contract: for float a ≠ 0, b, c with real roots
+    /// and any ball `disc` that holds b² − 4ac, each enclosure holds its exact root.
+    mod root_bounds_contract {
+        use super::*;
+        use polyguard_oracle::convert::q;
+        use polyguard_oracle::{Arith, ExactField, Q};
+        use proptest::prelude::*;
+        use std::cmp::Ordering;
+
+        fn exact(x: f64) -> Q {
+            q(x).expect("a finite float")
+        }
+
+        /// The order of x against the root (−b + s·√d)/(2a) (s = ±1, d ≥ 0), decided
+        /// exactly: with y = 2a·x + b, x ≤ root ⇔ y ≤ s·√d when a > 0, ⇔ y ≥ s·√d when
+        /// a < 0; y is compared with ±√d through its sign and y² against d.
+        fn cmp_root(x: &Q, a: &Q, b: &Q, d: &Q, s: i8) -> Ordering {
+            let y = a.twice().times(x).plus(b);
+            // y against s·√d
+            let y_vs = match (s > 0, y.sign()) {
+                (true, Ordering::Less) => Ordering::Less,
+                (true, _) => y.sq().cmp(d),
+                (false, Ordering::Greater) => Ordering::Greater,
+                (false, _) => d.cmp(&y.sq()),
+            };
+            if a.is_pos() {
+                y_vs
+            } else {
+                y_vs.reverse()
+            }
+        }
+
+        /// Some(reason) when the enclosures miss a root of a·t² + b·t + c.
+        fn breach(a: f64, b: f64, c: f64, disc: Ball) -> Option<String> {
+            let (qa, qb, qc) = (exact(a), exact(b), exact(c));
+            let d = qb.sq().minus(&Q::from_i64(4).times(&qa).times(&qc));
+            if d.is_neg() {
+                return None;
+            }
+            let [r1, r2] = root_bounds(a, b, c, disc)?;
+            // the smaller root takes −√d when a > 0, +√d when a < 0
+            let small = if a > 0.0 { -1 } else { 1 };
+            for (i, ((lo, hi), s)) in [(r1, small), (r2, -small)].into_iter().enumerate() {
+                let below = cmp_root(&exact(lo), &qa, &qb, &d, s) == Ordering::Greater;
+                let above = cmp_root(&exact(hi), &qa, &qb, &d, s) == Ordering::Less;
+                if below || above || lo.is_nan() || hi.is_nan() {
+                    return Some(format!("root {} not in [{lo:e}, {hi:e}]", i + 1));
+                }
+            }
+            None
+        }
+
+        /// The discriminant ball float_set computes, with its radius raised to `k`
+        /// times its own (k ≥ 1) or to |z|/m (m > 0: z/r = m, so m ≤ 4 leaves the fast
+        /// path and m ≤ 1 reaches below 0), and its centre shifted by j·(the radius
+        /// added)/2: a ball that holds b² − 4ac when the exact check says so (the
+        /// caller skips it otherwise).
+        fn disc_ball(a: f64, b: f64, c: f64, k: f64, m: f64, j: f64) -> Option<Ball> {
+            let d = Ball::exact(b)
+                .sq()
+                .sub(Ball::exact(a).mul(Ball::exact(c)).scale(4.0));
+            let r = if m > 0.0 {
+                d.r.max(d.z.abs() / m)
+            } else {
+                ball::up(d.r * k + f64::MIN_POSITIVE)
+            };
+            let z = d.z + j * (r - d.r) * 0.5;
+            let ball = Ball { z, r };
+            let (qa, qb, qc) = (exact(a), exact(b), exact(c));
+            let exact_d = qb.sq().minus(&Q::from_i64(4).times(&qa).times(&qc));
+            let (lo, hi) = (exact(z).minus(&exact(r)), exact(z).plus(&exact(r)));
+            (z.is_finite() && r.is_finite() && lo <= exact_d && exact_d <= hi).then_some(ball)
+        }
+
+        /// The roots over the disc, in floats (good to a few ulps), in the form
+        /// root_bounds uses: q = −(b + sgn(b)·√d)/2, roots q/a and c/q, for d = max(0,
+        /// disc.lo) and disc.hi (each is monotone in d, so these bound it over the disc;
+        /// at d = b² − 4ac they are the roots).
+        fn float_roots(a: f64, b: f64, c: f64, disc: Ball) -> [[f64; 2]; 2] {
+            let roots = |d: f64| {
+                let s = d.sqrt();
+                let q = -0.5 * (b + if b >= 0.0 { s } else { -s });
+                let (x1, x2) = (q / a, c / q);
+                (x1.min(x2), x1.max(x2))
+            };
+            let (l, h) = (roots(disc.lo().max(0.0)), roots(disc.hi()));
+            [[l.0, h.0], [l.1, h.1]]
+        }
+
+        /// Some(reason) when an enclosure is more than 6 times as wide as the roots'
+        /// own spread over the disc, beyond rounding (the fast path of well separated
+        /// roots is up to 4 times as wide: √d to r/s, and c/q doubles that).
+        fn too_wide(a: f64, b: f64, c: f64, disc: Ball) -> Option<String> {
+            let [r1, r2] = root_bounds(a, b, c, disc)?;
+            let ideal = float_roots(a, b, c, disc);
+            for (i, ((lo, hi), [x, y])) in [(r1, ideal[0]), (r2, ideal[1])].into_iter().enumerate()
+            {
+                let spread = (x - y).abs();
+                let scale = x.abs().max(y.abs());
+                let allowed = 6.0 * spread + 64.0 * ball::U * scale + 1e3 * f64::MIN_POSITIVE;
+                if !(allowed.is_finite() && (hi - lo).is_finite()) {
+                    continue;
+                }
+                if hi - lo > allowed {
+                    return Some(format!(
+                        "root {}: [{lo:e}, {hi:e}] is {:e} wide, its spread {spread:e}",
+                        i + 1,
+                        hi - lo
+                    ));
+                }
+            }
+            None
+        }
+
+        fn float(neg: bool, m: f64, e: i32) -> f64 {
+            let x = m * 2f64.powi(e);
+            if neg {
+                -x
+            } else {
+                x
+            }
+        }
+
+        /// a, b, c drawn three ways: independent (any magnitudes), from two close
+        /// roots (a double root up to rounding, where the discriminant cancels), and
+        /// with b = 0 or c = 0.
+        fn quadratic() -> impl Strategy<Value = (f64, f64, f64)> {
+            let part = || (any::<bool>(), 1.0..2.0f64, -200..200i32);
+            let free = (part(), part(), part()).prop_map(|(a, b, c)| {
+                (
+                    float(a.0, a.1, a.2),
+                    float(b.0, b.1, b.2),
+                    float(c.0, c.1, c.2),
+                )
+            });
+            let close = (part(), part(), -52..0i32, any::<bool>()).prop_map(|(a, r, gap, far)| {
+                let a = float(a.0, a.1, a.2 / 4);
+                let r1 = float(r.0, r.1, r.2 / 4);
+                let r2 = r1 * (1.0 + if far { 2f64.powi(gap) } else { 0.0 });
+                (a, -a * (r1 + r2), a * r1 * r2)
+            });
+            let zeros = (part(), part(), any::<bool>()).prop_map(|(a, x, b_zero)| {
+                let (a, x) = (float(a.0, a.1, a.2 / 4), float(x.0, x.1, x.2 / 4));
+                if b_zero {
+                    (a, 0.0, -a.abs() * x.abs() * a.signum())
+                } else {
+                    (a, x, 0.0)
+                }
+            });
+            prop_oneof![free, close, zeros]
+        }
+
+        proptest! {
+            #![proptest_config(ProptestConfig::with_cases(4096))]
+
+            #[test]
+            fn each_enclosure_holds_its_root(
+                (a, b, c) in quadratic(),
+                k in prop_oneof![Just(1.0), 1.0..4.0f64, 1e3..1e12f64],
+                m in prop_oneof![Just(0.0), 3.8..4.0f64, 1e-6..4.0f64],
+                j in -1.0..1.0f64,
+            ) {
+                prop_assume!(a != 0.0 && a.is_finite() && b.is_finite() && c.is_finite());
+                let disc = disc_ball(a, b, c, k, m, j);
+                prop_assume!(disc.is_some());
+                let disc = disc.expect("checked");
+                if let Some(why) = breach(a, b, c, disc) {
+                    prop_assert!(false, "a = {a:e}, b = {b:e}, c = {c:e}, disc {disc:?}: {why}");
+                }
+                let d = b * b - 4.0 * a * c;
+                // tightness where the roots exist and are not a cancelled b² − 4ac
+                // (where q/a and c/q need not be the roots' order: checked above only)
+                if let Some(why) = too_wide(a, b, c, disc).filter(|_| d > 0.0) {
+                    prop_assert!(false, "a = {a:e}, b = {b:e}, c = {c:e}, disc {disc:?}: {why}");
+                }
+            }
+        }
+    }
 }

@@ -476,19 +476,67 @@ impl RawCase {
     }
 
     /// The oracle's exact case: the rationals these f64 denote.
+    ///
+    /// A case far from unit scale (its largest number beyond 2^±64) is handed to the
+    /// oracle moved by a power of two to unit scale, when every number moves exactly.
+    /// Lengths, heights and velocities move, T and F do not: every decision of paper A
+    /// and of the truth compares quantities of one degree in length, so the answers and
+    /// the first entry time are the same. The oracle's float filter then decides as it
+    /// does at unit scale instead of failing on overflow or underflow, and its exact
+    /// numbers stay short (at 2⁻¹⁰⁷⁰ a case took 60 ms with num-rational).
     pub fn exact<F: polyguard_oracle::ExactField>(
         &self,
     ) -> Result<polyguard_oracle::ExactCase<F>, polyguard_oracle::OracleError> {
+        let unit = self.at_unit_scale();
+        let c = unit.as_ref().unwrap_or(self);
         polyguard_oracle::ExactCase::new(&polyguard_oracle::CaseInput {
-            lookahead: self.lookahead,
-            buff: self.buff,
-            fac: self.fac,
-            pos: &self.pos,
-            vel: &self.vel,
-            vertices: &self.vertices,
-            velocities: &self.velocities,
-            slab: self.slab,
+            lookahead: c.lookahead,
+            buff: c.buff,
+            fac: c.fac,
+            pos: &c.pos,
+            vel: &c.vel,
+            vertices: &c.vertices,
+            velocities: &c.velocities,
+            slab: c.slab,
         })
+    }
+
+    /// The case moved by 2^s to unit scale (its largest magnitude in [1, 2)), or `None`
+    /// when it is near unit scale already (|s| ≤ 64) or some number would not move
+    /// exactly (it would round, overflow or underflow).
+    fn at_unit_scale(&self) -> Option<RawCase> {
+        let mut all = self
+            .pos
+            .iter()
+            .chain(&self.vel)
+            .chain(self.vertices.iter().flatten())
+            .chain(self.velocities.iter().flatten())
+            .chain(self.slab.iter().flatten())
+            .chain(std::iter::once(&self.buff));
+        let largest = all.try_fold(0.0f64, |m, &x| x.is_finite().then(|| m.max(x.abs())))?;
+        if largest == 0.0 {
+            return None;
+        }
+        let s = -(largest.log2().floor() as i32);
+        if s.abs() <= 64 {
+            return None;
+        }
+        // by 2^s in two factors, each a normal power of two; a round trip checks exactness
+        let by = |x: f64, s: i32| x * 2f64.powi(s / 2) * 2f64.powi(s - s / 2);
+        let mut exact = true;
+        let mut mv = |x: &mut f64| {
+            let y = by(*x, s);
+            exact &= y.is_finite() && by(y, -s) == *x;
+            *x = y;
+        };
+        let mut c = self.clone();
+        mv(&mut c.buff);
+        c.pos.iter_mut().for_each(&mut mv);
+        c.vel.iter_mut().for_each(&mut mv);
+        c.vertices.iter_mut().flatten().for_each(&mut mv);
+        c.velocities.iter_mut().flatten().for_each(&mut mv);
+        c.slab.iter_mut().flatten().for_each(&mut mv);
+        exact.then_some(c)
     }
 
     /// The same case with BUFF and F multiplied by k (the "wide band" of classify).
@@ -535,6 +583,86 @@ impl RawCase {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The homogeneity [`RawCase::exact`] relies on: generated cases moved by 2⁻¹⁰⁰⁰
+    /// and by 2⁹⁰⁰ (exactly), handed to the oracle as they are, get paper A's answer,
+    /// the truth and the entry time of the case at its own scale.
+    #[test]
+    fn the_oracle_answers_alike_at_every_scale() {
+        use crate::harness::classify::Exact;
+        use crate::harness::gen::{any_case, SplitMix};
+        use polyguard_oracle::{paper_detect, truth, CaseInput, ExactCase};
+        // the entry time as a value (a + b·√d is written in more than one way)
+        let answers = |c: &ExactCase<Exact>| {
+            let t = match truth(c) {
+                polyguard_oracle::Truth::Enters { entry_time } => {
+                    Some(Some(entry_time.to_decimal_string(40)))
+                }
+                polyguard_oracle::Truth::Misses => Some(None),
+                polyguard_oracle::Truth::Undefined { .. } => None,
+            };
+            (paper_detect(c).detected, t)
+        };
+        let mut src = SplitMix(5);
+        let mut moved = 0;
+        for _ in 0..40 {
+            let raw = any_case(&mut src).raw;
+            let want = answers(&raw.exact().expect("a generated case is valid"));
+            for s in [-1000, 900] {
+                let by = |x: f64| x * 2f64.powi(s / 2) * 2f64.powi(s - s / 2);
+                let mut c = raw.clone();
+                c.buff = by(c.buff);
+                for x in c.pos.iter_mut().chain(c.vel.iter_mut()) {
+                    *x = by(*x);
+                }
+                for x in c
+                    .vertices
+                    .iter_mut()
+                    .chain(c.velocities.iter_mut())
+                    .flatten()
+                {
+                    *x = by(*x);
+                }
+                for x in c.slab.iter_mut().flatten() {
+                    *x = by(*x);
+                }
+                let mut back = c.clone();
+                let un = |x: f64| x * 2f64.powi(-s / 2) * 2f64.powi(-s + s / 2);
+                back.buff = un(back.buff);
+                for x in back.pos.iter_mut().chain(back.vel.iter_mut()) {
+                    *x = un(*x);
+                }
+                for x in back
+                    .vertices
+                    .iter_mut()
+                    .chain(back.velocities.iter_mut())
+                    .flatten()
+                {
+                    *x = un(*x);
+                }
+                for x in back.slab.iter_mut().flatten() {
+                    *x = un(*x);
+                }
+                if back != raw {
+                    continue; // the move rounded: not the same case
+                }
+                moved += 1;
+                let input = CaseInput {
+                    lookahead: c.lookahead,
+                    buff: c.buff,
+                    fac: c.fac,
+                    pos: &c.pos,
+                    vel: &c.vel,
+                    vertices: &c.vertices,
+                    velocities: &c.velocities,
+                    slab: c.slab,
+                };
+                let got = answers(&ExactCase::new(&input).expect("moved exactly"));
+                assert_eq!(got, want, "moved by 2^{s}: {c:?}");
+            }
+        }
+        assert!(moved >= 40, "only {moved} of 80 moves were exact");
+    }
 
     fn err(line: &str) -> String {
         match parse_line(line, 7).case {

@@ -22,7 +22,12 @@
 //! - the outline ([`Outline`]): star-shaped polygons of 3 … 12 vertices, of up to 256,
 //!   needles of aspect down to 10⁻⁸, near-collinear vertices, short edges beside long
 //!   ones;
-//! - in 3D, slabs from 10⁻⁶ to 10³ polygon sizes thick.
+//! - in 3D, slabs from 10⁻⁶ to 10³ polygon sizes thick;
+//! - the absolute scale: one case in eight is moved whole by a power of two to an end
+//!   of the float range, BUFF subnormal (2⁻¹⁰⁷² … 2⁻¹⁰⁴⁰, where coordinates round to
+//!   the subnormal grid and thresholds become exact ties) or the largest length near
+//!   2⁹⁰⁰ … 2¹⁰⁰⁰ ([`absolute_scale`]). A subnormal BUFF is how a skip margin that
+//!   rounded back to BUFF was found (tests/regressions/subnormal.jsonl).
 //!
 //! Warping polygons are drawn as an affine warp plus a jitter scaled to the outline's
 //! finest feature, with one edge whose ends move alike; the polygon's simplicity over
@@ -308,6 +313,9 @@ pub struct Drawn {
     pub eps: f64,
     /// The factor K the case was stretched by ([`stretch`]); 1 when it was not.
     pub stretch: f64,
+    /// The power of two the whole case was moved by to an end of the float range
+    /// (see [`absolute_scale`]); 0 when it was not.
+    pub scale_exp: i32,
 }
 
 impl Drawn {
@@ -555,6 +563,8 @@ pub fn case<S: Source>(src: &mut S, shape: Shape, mode: Mode, space: &Space) -> 
             (stretched && (w == 0.0 || simple_throughout(&raw))).then_some((raw, k_done))
         })
         .unwrap_or_else(|| make(0.0, Vect2::default()));
+    // Drawn last, so that the cases left at their scale are the same as before.
+    let (raw, scale_exp) = absolute_scale(src, raw, warping);
     Drawn {
         raw,
         shape,
@@ -562,6 +572,64 @@ pub fn case<S: Source>(src: &mut S, shape: Shape, mode: Mode, space: &Space) -> 
         outline,
         eps: e,
         stretch,
+        scale_exp,
+    }
+}
+
+/// One case in eight, moved whole by a power of two 2^j (exact, but for underflow) to
+/// the ends of the float range: half of them so that BUFF lies in 2⁻¹⁰⁷² … 2⁻¹⁰⁴⁰
+/// (subnormal: a few to 34 significant bits), where rounding has an absolute floor,
+/// products underflow and a threshold ε below the grid becomes an exact tie; half so that the largest length (a coordinate, BUFF, or a distance
+/// moved over T) lies in 2⁹⁰⁰ … 2¹⁰⁰⁰, where squares overflow. Lengths, heights and
+/// velocities scale, T and F do not, so the case is the same case at another scale. A
+/// move that breaks it (underflow collapsing the polygon, or a warping one no longer
+/// simple over [0, T]) is not made. Returns the case and j (0: not moved).
+fn absolute_scale<S: Source>(src: &mut S, raw: RawCase, warping: bool) -> (RawCase, i32) {
+    if src.below(8) != 0 {
+        return (raw, 0);
+    }
+    let tiny = src.coin();
+    let u = if tiny {
+        src.range(-1072.0, -1040.0)
+    } else {
+        src.range(900.0, 1000.0)
+    };
+    let t = raw.lookahead;
+    let mut largest = raw.buff;
+    let mut grow = |x: f64| largest = largest.max(x.abs());
+    raw.pos.iter().for_each(|&x| grow(x));
+    raw.vel.iter().for_each(|&x| grow(x * t));
+    raw.vertices.iter().flatten().for_each(|&x| grow(x));
+    raw.velocities.iter().flatten().for_each(|&x| grow(x * t));
+    raw.slab.iter().flatten().for_each(|&x| grow(x));
+    let anchor = if tiny { raw.buff } else { largest };
+    if !(anchor > 0.0 && anchor.is_finite()) {
+        return (raw, 0);
+    }
+    let j = (u - anchor.log2()).round() as i32;
+    // in two exact factors: 2^j alone under- or overflows for |j| beyond 1022
+    let (j1, j2) = (j / 2, j - j / 2);
+    let k = |x: f64| x * 2f64.powi(j1) * 2f64.powi(j2);
+    let mut moved = raw.clone();
+    moved.buff = k(moved.buff);
+    moved.pos.iter_mut().for_each(|x| *x = k(*x));
+    moved.vel.iter_mut().for_each(|x| *x = k(*x));
+    moved.vertices.iter_mut().flatten().for_each(|x| *x = k(*x));
+    moved
+        .velocities
+        .iter_mut()
+        .flatten()
+        .for_each(|x| *x = k(*x));
+    moved.slab.iter_mut().flatten().for_each(|x| *x = k(*x));
+    let verts: Vec<Vect2> = moved.vertices.iter().map(|&p| p.into()).collect();
+    let kept = moved.buff > 0.0
+        && moved.to_api().is_ok()
+        && polyguard::ring::simple_ccw(&verts)
+        && (!warping || simple_throughout(&moved));
+    if kept {
+        (moved, j)
+    } else {
+        (raw, 0)
     }
 }
 
@@ -798,7 +866,12 @@ mod tests {
     fn edge_buff_mode_is_at_buff_from_the_edge() {
         let mut src = SplitMix(3);
         for _ in 0..200 {
-            let Drawn { raw, eps: e, .. } = case(
+            let Drawn {
+                raw,
+                eps: e,
+                scale_exp,
+                ..
+            } = case(
                 &mut src,
                 Shape::Static,
                 Mode::EdgeBuff,
@@ -807,25 +880,82 @@ mod tests {
                     buff: (-7.0, -2.0),
                 },
             );
-            let s = Vect2::new(raw.pos[0], raw.pos[1]);
+            // A case moved to an end of the float range is measured moved back (by a
+            // power of two: exactly), where its squares do not overflow.
+            let back =
+                |x: f64| x * 2f64.powi(-scale_exp / 2) * 2f64.powi(-(scale_exp - scale_exp / 2));
+            let s = Vect2::new(back(raw.pos[0]), back(raw.pos[1]));
+            let vertex = |k: usize| Vect2::new(back(raw.vertices[k][0]), back(raw.vertices[k][1]));
+            let buff = back(raw.buff);
             // Distance to the nearest edge, relative to BUFF, is about 1 + ε.
             let n = raw.vertices.len();
             let dist = (0..n)
                 .map(|k| {
-                    let a = Vect2::from(raw.vertices[k]);
-                    let b = Vect2::from(raw.vertices[(k + 1) % n]);
+                    let a = vertex(k);
+                    let b = vertex((k + 1) % n);
                     let d = b - a;
                     let r = ((s - a).dot(d) / d.sq()).clamp(0.0, 1.0);
                     (a + d.scale(r) - s).sq().sqrt()
                 })
                 .fold(f64::INFINITY, f64::min);
-            let scale_err = 1e-6 + 1e-9 * raw.vertices[0][0].abs() / raw.buff;
+            // and, for a case moved to the subnormal range, the rounding of each
+            // coordinate there (2⁻¹⁰⁷⁵ a number, absolute)
+            let floor = if scale_exp < 0 {
+                8.0 * f64::from_bits(1)
+            } else {
+                0.0
+            };
+            let scale_err = 1e-6 + (1e-9 * raw.vertices[0][0].abs() + floor) / raw.buff;
             assert!(
-                (dist / raw.buff) <= 1.0 + e.abs() + scale_err,
-                "{dist} vs {}",
-                raw.buff
+                (dist / buff) <= 1.0 + e.abs() + scale_err,
+                "{dist} vs {buff} (moved by 2^{scale_exp})"
             );
         }
+    }
+
+    /// About one case in eight is moved to an end of the float range, both ends are
+    /// reached, and a moved case is still valid: BUFF subnormal or just above at the
+    /// small end, the largest length in 2⁸⁹⁹ … 2¹⁰⁰¹ at the large one.
+    #[test]
+    fn some_cases_move_to_the_ends_of_the_float_range() {
+        let mut src = SplitMix(11);
+        let (mut tiny, mut huge, total) = (0, 0, 2000);
+        for _ in 0..total {
+            let d = any_case(&mut src);
+            let r = &d.raw;
+            r.to_api().expect("a moved case is still valid");
+            let t = r.lookahead;
+            let largest = r
+                .pos
+                .iter()
+                .chain(r.vertices.iter().flatten())
+                .chain(r.slab.iter().flatten())
+                .copied()
+                .chain(
+                    r.vel
+                        .iter()
+                        .chain(r.velocities.iter().flatten())
+                        .map(|v| v * t),
+                )
+                .fold(r.buff, |m, x| m.max(x.abs()));
+            if d.scale_exp < 0 {
+                tiny += 1;
+                assert!(
+                    r.buff > 0.0 && r.buff < 2f64.powi(-520) * 2f64.powi(-519),
+                    "BUFF {:e}",
+                    r.buff
+                );
+            } else if d.scale_exp > 0 {
+                huge += 1;
+                let (lo, hi) = (2f64.powi(899), 2f64.powi(1001));
+                assert!((lo..=hi).contains(&largest), "largest {largest:e}");
+            }
+        }
+        let moved = tiny + huge;
+        assert!(
+            (total / 12..=total / 5).contains(&moved) && tiny > total / 40 && huge > total / 40,
+            "{tiny} tiny and {huge} huge in {total}"
+        );
     }
 
     #[test]

@@ -1850,4 +1850,160 @@ mod tests {
             }
         }
     }
+
+    /// Exact checks of [`float_set`]'s contract on [lo, hi] (0 ≤ lo ≤ hi): the inner
+    /// set holds only times where a·t² + b·t + c ≥ 0, the outer one every such time.
+    /// Checked at the window's ends, at each interval's ends and their neighbours, and
+    /// at interior points, with the quadratic evaluated exactly (BigRational).
+    mod float_set_contract {
+        use super::*;
+        use polyguard_oracle::convert::q;
+        use polyguard_oracle::{Arith, ExactField, Q};
+        use proptest::prelude::*;
+
+        fn exact(x: f64) -> Q {
+            q(x).expect("a finite float")
+        }
+
+        fn nonneg_at(a: f64, b: f64, c: f64, t: f64) -> bool {
+            let t = exact(t);
+            !exact(a)
+                .times(&t)
+                .plus(&exact(b))
+                .times(&t)
+                .plus(&exact(c))
+                .is_neg()
+        }
+
+        fn inside(set: &[Interval; 2], t: f64) -> bool {
+            set.iter().any(|i| i.lb <= t && t <= i.ub)
+        }
+
+        /// Some(reason) when a sample breaks the contract.
+        fn breach(a: f64, b: f64, c: f64, lo: f64, hi: f64) -> Option<String> {
+            let outer = float_set(a, b, c, lo, hi, true);
+            let inner = float_set(a, b, c, lo, hi, false);
+            let mut ts = vec![lo, hi];
+            for k in 1..16 {
+                ts.push(lo + (hi - lo) * (k as f64 / 16.0));
+            }
+            for i in outer.iter().chain(&inner) {
+                for e in [i.lb, i.ub] {
+                    if e.is_finite() {
+                        ts.extend([e, e.next_up(), e.next_down()]);
+                    }
+                }
+            }
+            for t in ts.into_iter().filter(|t| (lo..=hi).contains(t)) {
+                let ok = nonneg_at(a, b, c, t);
+                if inside(&inner, t) && !ok {
+                    return Some(format!(
+                        "t = {t:e}: in the inner set {inner:?}, but negative"
+                    ));
+                }
+                if ok && !inside(&outer, t) {
+                    return Some(format!(
+                        "t = {t:e}: ≥ 0, but not in the outer set {outer:?}"
+                    ));
+                }
+            }
+            None
+        }
+
+        fn float(neg: bool, m: f64, e: i32) -> f64 {
+            let x = m * 2f64.powi(e);
+            if neg {
+                -x
+            } else {
+                x
+            }
+        }
+
+        /// Coefficients of any magnitude up to overflow, with roots inside the window
+        /// (a from two roots in [lo, hi]), b or c zero, and a = 0.
+        fn coefficients() -> impl Strategy<Value = (f64, f64, f64, f64, f64)> {
+            let part = || (any::<bool>(), 1.0..2.0f64, -1074..1024i32);
+            let window = (0.0..1.0f64, 0.0..4.0f64, -60..60i32)
+                .prop_map(|(l, w, e)| (l * 2f64.powi(e), (l + w) * 2f64.powi(e)));
+            let free = (part(), part(), part(), window.clone()).prop_map(|(a, b, c, (lo, hi))| {
+                (
+                    float(a.0, a.1, a.2),
+                    float(b.0, b.1, b.2),
+                    float(c.0, c.1, c.2),
+                    lo,
+                    hi,
+                )
+            });
+            let rooted = (part(), 0.0..1.0f64, 0.0..1.0f64, window.clone()).prop_map(
+                |(a, u1, u2, (lo, hi))| {
+                    let a = float(a.0, a.1, a.2 / 2);
+                    let (r1, r2) = (lo + u1 * (hi - lo), lo + u2 * (hi - lo));
+                    (a, -a * (r1 + r2), a * r1 * r2, lo, hi)
+                },
+            );
+            let linear = (part(), part(), window).prop_map(|(b, c, (lo, hi))| {
+                (0.0, float(b.0, b.1, b.2), float(c.0, c.1, c.2), lo, hi)
+            });
+            prop_oneof![free, rooted, linear]
+        }
+
+        proptest! {
+            #![proptest_config(ProptestConfig::with_cases(512))]
+
+            #[test]
+            fn the_sets_enclose_the_nonnegative_times((a, b, c, lo, hi) in coefficients()) {
+                prop_assume!(a.is_finite() && b.is_finite() && c.is_finite());
+                prop_assume!(0.0 <= lo && lo <= hi && hi.is_finite());
+                if let Some(why) = breach(a, b, c, lo, hi) {
+                    prop_assert!(false, "a = {a:e}, b = {b:e}, c = {c:e}, [{lo:e}, {hi:e}]: {why}");
+                }
+            }
+        }
+
+        /// A coefficient that is not finite tells nothing: the outer set is the whole
+        /// window, the inner one is empty.
+        #[test]
+        fn a_coefficient_not_finite_tells_nothing() {
+            let bad = [f64::INFINITY, f64::NEG_INFINITY, f64::NAN];
+            for &x in &bad {
+                for &y in &[1.0, -1.0, 0.0] {
+                    for (a, b, c) in [(x, y, y), (y, x, y), (y, y, x), (x, x, y), (y, x, x)] {
+                        let outer = float_set(a, b, c, 0.0, 1.0, true);
+                        let inner = float_set(a, b, c, 0.0, 1.0, false);
+                        assert!(
+                            inside(&outer, 0.0) && inside(&outer, 1.0),
+                            "({a}, {b}, {c}): outer {outer:?}"
+                        );
+                        assert!(
+                            inner.iter().all(Interval::is_empty),
+                            "({a}, {b}, {c}): inner {inner:?}"
+                        );
+                    }
+                }
+            }
+        }
+
+        /// A linear function whose root overflows lies on one side of every window:
+        /// 10⁻³⁰⁰·t + 10³⁰⁰ (root below −f64::MAX) is ≥ 0 on all of [0, 1], and the
+        /// inner set says so; −10⁻³⁰⁰·t − 10³⁰⁰ is negative there, and the outer set is
+        /// empty.
+        #[test]
+        fn an_overflowed_linear_root_keeps_its_side() {
+            let inner = float_set(0.0, 1e-300, 1e300, 0.0, 1.0, false);
+            assert!(
+                inside(&inner, 0.0) && inside(&inner, 1.0),
+                "inner {inner:?}"
+            );
+            let outer = float_set(0.0, -1e-300, -1e300, 0.0, 1.0, true);
+            assert!(outer.iter().all(Interval::is_empty), "outer {outer:?}");
+            // and the root above f64::MAX: 10⁻³⁰⁰·t − 10³⁰⁰ is negative on [0, 1]
+            let outer = float_set(0.0, 1e-300, -1e300, 0.0, 1.0, true);
+            assert!(outer.iter().all(Interval::is_empty), "outer {outer:?}");
+            let inner = float_set(0.0, -1e-300, 1e300, 0.0, 1.0, false);
+            assert!(
+                inside(&inner, 0.0) && inside(&inner, 1.0),
+                "inner {inner:?}"
+            );
+        }
+    }
 }

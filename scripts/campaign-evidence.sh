@@ -12,7 +12,8 @@
 # (evidence/campaign-NAME/commit): the script builds that commit (with the GMP oracle,
 # --features rug) in a worktree, so every shard of one campaign judges the same engine
 # however far main has moved. A shard keeps its report.json, its log line, and the
-# counterexamples it kept (the merge takes the five lowest-indexed per class from them).
+# case files of the counterexamples it kept, without their pictures: the merge takes the
+# five lowest-indexed per class and draws their pictures again.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
@@ -55,6 +56,9 @@ for ((i = 0; i < shards; i++)); do
   # filed last and whole: a shard folder with a report.json is complete
   rm -rf "$ev/shard-$i.tmp"
   cp -r "$tmp" "$ev/shard-$i.tmp"
+  # the pictures stay behind (8 kB each, 10 a shard): the merge draws the ones it keeps
+  # again from their case files
+  rm -f "$ev/shard-$i.tmp"/counterexamples/*.svg
   tail -n 1 "$runs/shard-$i.log" > "$ev/shard-$i.tmp/verdict.txt"
   mv "$ev/shard-$i.tmp" "$ev/shard-$i"
   echo "shard $i/$shards: $(cat "$ev/shard-$i/verdict.txt")"

@@ -168,6 +168,28 @@ fn merges_are_exact_or_refused() {
             );
         }
     }
+    // Pictures left behind (as evidence/ files shards without them) are drawn again
+    // from their case files, the same as the unsharded run's, byte for byte.
+    let mut dropped = 0;
+    for dir in [&s0, &s1] {
+        for e in std::fs::read_dir(dir.join("counterexamples")).expect("kept cases") {
+            let path = e.expect("entry").path();
+            if path.extension().is_some_and(|x| x == "svg") {
+                std::fs::remove_file(&path).expect("remove a picture");
+                dropped += 1;
+            }
+        }
+    }
+    assert!(dropped > 0, "the shards kept no picture to drop");
+    let redrawn = out_dir("merge-redrawn");
+    let (code, out, err) = merge(&[&s0, &s1], &[], &redrawn);
+    assert!(code == 0 || code == 1, "{out}{err}");
+    for k in m["kept"].as_array().expect("kept") {
+        let name = k["svg_file"].as_str().expect("file name");
+        let again = std::fs::read(redrawn.join(name)).expect("a picture drawn again");
+        let first = std::fs::read(whole.join(name)).expect("the unsharded picture");
+        assert!(again == first, "{name} drawn again differs");
+    }
     // one shard alone; a shard twice; a shard of another campaign size
     let (code, _, err) = merge(&[&s0], &[], &out_dir("merge-bad-1"));
     assert_eq!(code, 2, "{err}");

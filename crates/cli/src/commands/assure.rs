@@ -248,6 +248,19 @@ fn write_counterexample(
         dir.join(&case_file),
         small.to_json_line(&stem, &extra) + "\n",
     )?;
+    fs::write(dir.join(&svg_file), draw(&small, &w, mode, hunted))?;
+    Ok(Kept {
+        index: k,
+        class: v.class,
+        method: v.method.name().into(),
+        mode: mode.into(),
+        case_file,
+        svg_file,
+    })
+}
+
+/// The picture of a kept case from its own verdict `w`.
+fn draw(small: &RawCase, w: &Verdict, mode: &str, hunted: Hunted) -> String {
     let title = format!("{} in {} ({mode})", w.class.name(), w.method.name());
     let pic = Picture {
         title: &title,
@@ -257,15 +270,21 @@ fn write_counterexample(
         truth: w.truth,
         entry_time: w.entry_time.as_deref().and_then(|t| t.parse::<f64>().ok()),
     };
-    fs::write(dir.join(&svg_file), picture(&small, &pic))?;
-    Ok(Kept {
-        index: k,
-        class: v.class,
-        method: v.method.name().into(),
-        mode: mode.into(),
-        case_file,
-        svg_file,
-    })
+    picture(small, &pic)
+}
+
+/// Draws again the picture of a kept case from its case file (a long campaign filed in
+/// a repository keeps its shards' case files but not their pictures: see
+/// evidence/README.md). The case is answered again by the same engine.
+fn redraw(case_file: &Path, mode: &str, hunted: Hunted) -> Result<String, String> {
+    let text = fs::read_to_string(case_file).map_err(|e| e.to_string())?;
+    let line = text.lines().next().unwrap_or_default();
+    let case = crate::case::parse_line(line, 1)
+        .case
+        .map_err(|e| e.to_string())?;
+    let small = RawCase::from_api(&case);
+    let w = compare_as(&small, hunted).map_err(|e| format!("{e:?}"))?;
+    Ok(draw(&small, &w, mode, hunted))
 }
 
 /// Runs `polyguard assure`.
@@ -516,9 +535,28 @@ fn merge(paths: &[PathBuf], out: &Path, partial: bool) -> ExitCode {
     // a case file that is not beside it.
     for (p, r) in paths.iter().zip(&reports) {
         let dir = p.parent().unwrap_or_else(|| Path::new("."));
+        let hunted = if r.engine == Hunted::Plain.name() {
+            Hunted::Plain
+        } else {
+            Hunted::Certified
+        };
         for k in r.kept.iter().filter(|k| merged.kept.contains(k)) {
             for f in [&k.case_file, &k.svg_file] {
                 let (from, to) = (dir.join(f), out.join(f));
+                // a picture left behind is drawn again from its case file
+                if f == &k.svg_file && !from.exists() && dir.join(&k.case_file).exists() {
+                    let drawn = redraw(&dir.join(&k.case_file), &k.mode, hunted)
+                        .and_then(|svg| fs::write(&to, svg).map_err(|e| e.to_string()));
+                    if let Err(e) = drawn {
+                        return fail(format!(
+                            "{} lists {}, which is missing and cannot be drawn again from {}: {e}",
+                            p.display(),
+                            from.display(),
+                            k.case_file
+                        ));
+                    }
+                    continue;
+                }
                 if from != to {
                     if let Err(e) = fs::copy(&from, &to) {
                         return fail(format!(

@@ -1960,6 +1960,88 @@ mod tests {
             }
         }
 
+        /// [`below_zero_on`] answers true only when the quadratic is negative all over
+        /// [lo, hi] (its largest value there, at an end or at the vertex, is checked
+        /// exactly), and does answer true when the quadratic is negative at both ends
+        /// with room to spare and its largest value is at an end.
+        fn below_zero_breach(a: f64, b: f64, c: f64, lo: f64, hi: f64) -> Option<String> {
+            let got = below_zero_on(a, b, c, lo, hi);
+            let (qa, qb, qc) = (exact(a), exact(b), exact(c));
+            let value = |t: &Q| qa.times(t).plus(&qb).times(t).plus(&qc);
+            let (l, h) = (exact(lo), exact(hi));
+            let mut largest = vec![value(&l), value(&h)];
+            // the vertex −b/(2a), when a < 0 puts it inside
+            if a < 0.0 {
+                if let Some(v) = qb.negated().quotient(&qa.twice()) {
+                    if l <= v && v <= h {
+                        largest.push(value(&v));
+                    }
+                }
+            }
+            let max = largest.into_iter().max().expect("two values at least");
+            if got && !max.is_neg() {
+                return Some(format!("true, but the quadratic reaches {max:?} ≥ 0"));
+            }
+            None
+        }
+
+        proptest! {
+            #![proptest_config(ProptestConfig::with_cases(512))]
+
+            #[test]
+            fn below_zero_is_certain((a, b, c, lo, hi) in coefficients()) {
+                prop_assume!(a.is_finite() && b.is_finite() && c.is_finite());
+                prop_assume!(0.0 <= lo && lo <= hi && hi.is_finite());
+                if let Some(why) = below_zero_breach(a, b, c, lo, hi) {
+                    prop_assert!(false, "a = {a:e}, b = {b:e}, c = {c:e}, [{lo:e}, {hi:e}]: {why}");
+                }
+            }
+
+            /// Concave quadratics negative at both ends, with the vertex anywhere: the
+            /// answer is true exactly when the vertex is outside the window (the largest
+            /// value at an end); inside, the slopes at the ends cannot tell, and the
+            /// answer is false (cases within 10⁻⁹ of a boundary are skipped).
+            #[test]
+            fn below_zero_sees_concave_quadratics(
+                vx in -2.0..3.0f64,
+                top in -1.0..1.0f64,
+                curv in 0.1..10.0f64,
+            ) {
+                // −curv·(t − vx)² + top on [0, 1]
+                let (a, b, c) = (-curv, 2.0 * curv * vx, top - curv * vx * vx);
+                let at = |t: f64| a * t * t + b * t + c;
+                prop_assume!(at(0.0) < -1e-9 && at(1.0) < -1e-9);
+                let max = if (0.0..=1.0).contains(&vx) { top } else { at(0.0).max(at(1.0)) };
+                prop_assume!(max.abs() > 1e-9 && vx.abs() > 1e-9 && (vx - 1.0).abs() > 1e-9);
+                // decidable from the slopes at the ends: the vertex outside the window
+                let want = vx < 0.0 || vx > 1.0;
+                prop_assert_eq!(below_zero_on(a, b, c, 0.0, 1.0), want, "vertex {} top {}", vx, top);
+                if let Some(why) = below_zero_breach(a, b, c, 0.0, 1.0) {
+                    prop_assert!(false, "{why}");
+                }
+            }
+        }
+
+        /// Clear cases: convex and negative at both ends; concave with its largest value
+        /// at an end (decreasing from lo, or increasing up to hi).
+        #[test]
+        fn below_zero_decides_clear_cases() {
+            assert!(below_zero_on(1.0, 0.0, -4.0, 0.0, 1.0), "t² − 4");
+            assert!(
+                below_zero_on(-1.0, -0.5, -1.0, 0.0, 1.0),
+                "−t² − t/2 − 1, largest at 0"
+            );
+            assert!(
+                below_zero_on(-1.0, 4.0, -10.0, 0.0, 1.0),
+                "−t² + 4t − 10, largest at 1"
+            );
+            assert!(
+                !below_zero_on(-1.0, 2.0, -0.5, 0.0, 2.0),
+                "−t² + 2t − 0.5 reaches 0.5"
+            );
+            assert!(!below_zero_on(1.0, 0.0, -4.0, 0.0, 3.0), "t² − 4 reaches 5");
+        }
+
         /// A coefficient that is not finite tells nothing: the outer set is the whole
         /// window, the inner one is empty.
         #[test]

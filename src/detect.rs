@@ -2014,7 +2014,7 @@ mod tests {
                 let max = if (0.0..=1.0).contains(&vx) { top } else { at(0.0).max(at(1.0)) };
                 prop_assume!(max.abs() > 1e-9 && vx.abs() > 1e-9 && (vx - 1.0).abs() > 1e-9);
                 // decidable from the slopes at the ends: the vertex outside the window
-                let want = vx < 0.0 || vx > 1.0;
+                let want = !(0.0..=1.0).contains(&vx);
                 prop_assert_eq!(below_zero_on(a, b, c, 0.0, 1.0), want, "vertex {} top {}", vx, top);
                 if let Some(why) = below_zero_breach(a, b, c, 0.0, 1.0) {
                     prop_assert!(false, "{why}");

@@ -2042,6 +2042,41 @@ mod tests {
             assert!(!below_zero_on(1.0, 0.0, -4.0, 0.0, 3.0), "t² − 4 reaches 5");
         }
 
+        proptest! {
+            #![proptest_config(ProptestConfig::with_cases(512))]
+
+            /// The sets decide what is clear: two roots well apart (a tenth of the window
+            /// or more) inside the window, at moderate magnitudes. Where the quadratic is
+            /// clearly positive (between the roots when a < 0, outside them when a > 0)
+            /// the inner set holds the point; where it is clearly negative the outer set
+            /// does not.
+            #[test]
+            fn the_sets_decide_what_is_clear(
+                neg in any::<bool>(),
+                am in 1.0..2.0f64,
+                ae in -100..100i32,
+                u1 in 0.1..0.4f64,
+                u2 in 0.6..0.9f64,
+                (lo, w) in (0.0..1.0f64, 0.5..4.0f64),
+                we in -30..30i32,
+            ) {
+                let (lo, hi) = (lo * 2f64.powi(we), (lo + w) * 2f64.powi(we));
+                let a = float(neg, am, ae);
+                let (r1, r2) = (lo + u1 * (hi - lo), lo + u2 * (hi - lo));
+                let (b, c) = (-a * (r1 + r2), a * r1 * r2);
+                let outer = float_set(a, b, c, lo, hi, true);
+                let inner = float_set(a, b, c, lo, hi, false);
+                let mid = 0.5 * (r1 + r2);
+                if a < 0.0 {
+                    prop_assert!(inside(&inner, mid), "inner {:?} misses {:e}", inner, mid);
+                    prop_assert!(!inside(&outer, lo) && !inside(&outer, hi), "outer {:?}", outer);
+                } else {
+                    prop_assert!(inside(&inner, lo) && inside(&inner, hi), "inner {:?}", inner);
+                    prop_assert!(!inside(&outer, mid), "outer {:?} holds {:e}", outer, mid);
+                }
+            }
+        }
+
         /// A coefficient that is not finite tells nothing: the outer set is the whole
         /// window, the inner one is empty.
         #[test]

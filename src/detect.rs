@@ -1681,7 +1681,7 @@ mod tests {
         use proptest::prelude::*;
         use std::cmp::Ordering;
 
-        fn exact(x: f64) -> Q {
+        pub(super) fn exact(x: f64) -> Q {
             q(x).expect("a finite float")
         }
 
@@ -1786,7 +1786,8 @@ mod tests {
             None
         }
 
-        fn float(neg: bool, m: f64, e: i32) -> f64 {
+        /// ±m·2^e.
+        pub(super) fn float(neg: bool, m: f64, e: i32) -> f64 {
             let x = m * 2f64.powi(e);
             if neg {
                 -x
@@ -1856,14 +1857,10 @@ mod tests {
     /// Checked at the window's ends, at each interval's ends and their neighbours, and
     /// at interior points, with the quadratic evaluated exactly (BigRational).
     mod float_set_contract {
+        use super::root_bounds_contract::{exact, float};
         use super::*;
-        use polyguard_oracle::convert::q;
         use polyguard_oracle::{Arith, ExactField, Q};
         use proptest::prelude::*;
-
-        fn exact(x: f64) -> Q {
-            q(x).expect("a finite float")
-        }
 
         fn nonneg_at(a: f64, b: f64, c: f64, t: f64) -> bool {
             let t = exact(t);
@@ -1908,15 +1905,6 @@ mod tests {
                 }
             }
             None
-        }
-
-        fn float(neg: bool, m: f64, e: i32) -> f64 {
-            let x = m * 2f64.powi(e);
-            if neg {
-                -x
-            } else {
-                x
-            }
         }
 
         /// Coefficients of any magnitude up to overflow, with roots inside the window

@@ -488,16 +488,22 @@ impl RawCase {
         &self,
     ) -> Result<polyguard_oracle::ExactCase<F>, polyguard_oracle::OracleError> {
         let unit = self.at_unit_scale();
-        let c = unit.as_ref().unwrap_or(self);
+        unit.as_ref().unwrap_or(self).exact_as_is()
+    }
+
+    /// The exact case of exactly these numbers, at whatever scale (see [`Self::exact`]).
+    pub fn exact_as_is<F: polyguard_oracle::ExactField>(
+        &self,
+    ) -> Result<polyguard_oracle::ExactCase<F>, polyguard_oracle::OracleError> {
         polyguard_oracle::ExactCase::new(&polyguard_oracle::CaseInput {
-            lookahead: c.lookahead,
-            buff: c.buff,
-            fac: c.fac,
-            pos: &c.pos,
-            vel: &c.vel,
-            vertices: &c.vertices,
-            velocities: &c.velocities,
-            slab: c.slab,
+            lookahead: self.lookahead,
+            buff: self.buff,
+            fac: self.fac,
+            pos: &self.pos,
+            vel: &self.vel,
+            vertices: &self.vertices,
+            velocities: &self.velocities,
+            slab: self.slab,
         })
     }
 
@@ -521,22 +527,24 @@ impl RawCase {
         if s.abs() <= 64 {
             return None;
         }
-        // by 2^s in two factors, each a normal power of two; a round trip checks exactness
-        let by = |x: f64, s: i32| x * 2f64.powi(s / 2) * 2f64.powi(s - s / 2);
-        let mut exact = true;
-        let mut mv = |x: &mut f64| {
-            let y = by(*x, s);
-            exact &= y.is_finite() && by(y, -s) == *x;
-            *x = y;
-        };
+        let c = self.times_pow2(s);
+        // a round trip checks that every number moved exactly
+        (c.times_pow2(-s) == *self).then_some(c)
+    }
+
+    /// The case with its lengths, heights and velocities multiplied by 2^s (T and F as
+    /// they are), in two factors so that no factor under- or overflows; a number rounds
+    /// only where the product does.
+    pub fn times_pow2(&self, s: i32) -> RawCase {
+        let by = |x: &mut f64| *x = *x * 2f64.powi(s / 2) * 2f64.powi(s - s / 2);
         let mut c = self.clone();
-        mv(&mut c.buff);
-        c.pos.iter_mut().for_each(&mut mv);
-        c.vel.iter_mut().for_each(&mut mv);
-        c.vertices.iter_mut().flatten().for_each(&mut mv);
-        c.velocities.iter_mut().flatten().for_each(&mut mv);
-        c.slab.iter_mut().flatten().for_each(&mut mv);
-        exact.then_some(c)
+        by(&mut c.buff);
+        c.pos.iter_mut().for_each(by);
+        c.vel.iter_mut().for_each(by);
+        c.vertices.iter_mut().flatten().for_each(by);
+        c.velocities.iter_mut().flatten().for_each(by);
+        c.slab.iter_mut().flatten().for_each(by);
+        c
     }
 
     /// The same case with BUFF and F multiplied by k (the "wide band" of classify).
@@ -591,7 +599,7 @@ mod tests {
     fn the_oracle_answers_alike_at_every_scale() {
         use crate::harness::classify::Exact;
         use crate::harness::gen::{any_case, SplitMix};
-        use polyguard_oracle::{paper_detect, truth, CaseInput, ExactCase};
+        use polyguard_oracle::{paper_detect, truth, ExactCase};
         // the entry time as a value (a + b·√d is written in more than one way)
         let answers = |c: &ExactCase<Exact>| {
             let t = match truth(c) {
@@ -609,55 +617,12 @@ mod tests {
             let raw = any_case(&mut src).raw;
             let want = answers(&raw.exact().expect("a generated case is valid"));
             for s in [-1000, 900] {
-                let by = |x: f64| x * 2f64.powi(s / 2) * 2f64.powi(s - s / 2);
-                let mut c = raw.clone();
-                c.buff = by(c.buff);
-                for x in c.pos.iter_mut().chain(c.vel.iter_mut()) {
-                    *x = by(*x);
-                }
-                for x in c
-                    .vertices
-                    .iter_mut()
-                    .chain(c.velocities.iter_mut())
-                    .flatten()
-                {
-                    *x = by(*x);
-                }
-                for x in c.slab.iter_mut().flatten() {
-                    *x = by(*x);
-                }
-                let mut back = c.clone();
-                let un = |x: f64| x * 2f64.powi(-s / 2) * 2f64.powi(-s + s / 2);
-                back.buff = un(back.buff);
-                for x in back.pos.iter_mut().chain(back.vel.iter_mut()) {
-                    *x = un(*x);
-                }
-                for x in back
-                    .vertices
-                    .iter_mut()
-                    .chain(back.velocities.iter_mut())
-                    .flatten()
-                {
-                    *x = un(*x);
-                }
-                for x in back.slab.iter_mut().flatten() {
-                    *x = un(*x);
-                }
-                if back != raw {
+                let c = raw.times_pow2(s);
+                if c.times_pow2(-s) != raw {
                     continue; // the move rounded: not the same case
                 }
                 moved += 1;
-                let input = CaseInput {
-                    lookahead: c.lookahead,
-                    buff: c.buff,
-                    fac: c.fac,
-                    pos: &c.pos,
-                    vel: &c.vel,
-                    vertices: &c.vertices,
-                    velocities: &c.velocities,
-                    slab: c.slab,
-                };
-                let got = answers(&ExactCase::new(&input).expect("moved exactly"));
+                let got = answers(&c.exact_as_is().expect("moved exactly"));
                 assert_eq!(got, want, "moved by 2^{s}: {c:?}");
             }
         }

@@ -607,20 +607,7 @@ fn absolute_scale<S: Source>(src: &mut S, raw: RawCase, warping: bool) -> (RawCa
         return (raw, 0);
     }
     let j = (u - anchor.log2()).round() as i32;
-    // in two exact factors: 2^j alone under- or overflows for |j| beyond 1022
-    let (j1, j2) = (j / 2, j - j / 2);
-    let k = |x: f64| x * 2f64.powi(j1) * 2f64.powi(j2);
-    let mut moved = raw.clone();
-    moved.buff = k(moved.buff);
-    moved.pos.iter_mut().for_each(|x| *x = k(*x));
-    moved.vel.iter_mut().for_each(|x| *x = k(*x));
-    moved.vertices.iter_mut().flatten().for_each(|x| *x = k(*x));
-    moved
-        .velocities
-        .iter_mut()
-        .flatten()
-        .for_each(|x| *x = k(*x));
-    moved.slab.iter_mut().flatten().for_each(|x| *x = k(*x));
+    let moved = raw.times_pow2(j);
     let verts: Vec<Vect2> = moved.vertices.iter().map(|&p| p.into()).collect();
     let kept = moved.buff > 0.0
         && moved.to_api().is_ok()

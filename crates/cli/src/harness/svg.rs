@@ -162,17 +162,30 @@ fn poly_at(raw: &RawCase, t: f64) -> Vec<Vect2> {
         .collect()
 }
 
-/// The nearest point of segment ab to s, and its distance.
+/// The nearest point of segment ab to s, and its distance. Computed on the vectors
+/// moved by a power of two to unit scale, so that squares neither overflow (cases near
+/// 2¹⁰⁰⁰) nor underflow (subnormal ones).
 fn nearest_on(a: Vect2, b: Vect2, s: Vect2) -> (Vect2, f64) {
-    let d = b - a;
-    let len2 = d.sq();
+    let (d, w) = (b - a, s - a);
+    let m = d.x.abs().max(d.y.abs()).max(w.x.abs()).max(w.y.abs());
+    if !(m > 0.0 && m.is_finite()) {
+        return (a, w.x.hypot(w.y));
+    }
+    let e = m.log2().floor() as i32;
+    let unit = |v: Vect2| v.scale(2f64.powi(-e / 2)).scale(2f64.powi(-e + e / 2));
+    let (du, wu) = (unit(d), unit(w));
+    let len2 = du.sq();
     let r = if len2 > 0.0 {
-        ((s - a).dot(d) / len2).clamp(0.0, 1.0)
+        (wu.dot(du) / len2).clamp(0.0, 1.0)
     } else {
         0.0
     };
     let q = a + d.scale(r);
-    (q, (s - q).sq().sqrt())
+    let gap = unit(s - q);
+    (
+        q,
+        gap.x.hypot(gap.y) * 2f64.powi(e / 2) * 2f64.powi(e - e / 2),
+    )
 }
 
 /// The nearest edge of P to s: (index, nearest point, distance).
@@ -555,12 +568,8 @@ fn inset(out: &mut String, raw: &RawCase, pe: &[Vect2], s_e: Vect2, v: Vect2, ev
         (edge + 1) % n.max(1),
         num(dist)
     ));
-    line(&format!(
-        "BUFF = {} ({:.1} px), distance/BUFF = {}",
-        num(raw.buff),
-        band / 2.0,
-        num(dist / raw.buff)
-    ));
+    line(&format!("BUFF = {} ({:.1} px)", num(raw.buff), band / 2.0));
+    line(&format!("distance/BUFF = {}", num(dist / raw.buff)));
     if half > wanted {
         line("BUFF is below f64 resolution at this offset:");
         line(&format!("the inset shows {} across", num(2.0 * half)));
@@ -722,6 +731,24 @@ fn heights(out: &mut String, raw: &RawCase, event: f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The distance the inset reports is right at both ends of the float range: a
+    /// point 3 units from an edge 8 long, moved whole by 2^±1000 (exactly), is 3·2^±1000
+    /// from it, the nearest point in the middle of the edge's span.
+    #[test]
+    fn the_inset_distance_holds_at_every_scale() {
+        for e in [-1000, 0, 1000] {
+            let k = |x: f64| x * 2f64.powi(e / 2) * 2f64.powi(e - e / 2);
+            let (a, b, s) = (
+                Vect2::new(k(-4.0), k(1.0)),
+                Vect2::new(k(4.0), k(1.0)),
+                Vect2::new(k(2.0), k(4.0)),
+            );
+            let (q, d) = nearest_on(a, b, s);
+            assert_eq!(d, k(3.0), "at 2^{e}");
+            assert_eq!(q, Vect2::new(k(2.0), k(1.0)), "at 2^{e}");
+        }
+    }
 
     fn square(offset: f64, size: f64, buff: f64) -> RawCase {
         RawCase {

@@ -1672,6 +1672,29 @@ mod tests {
         ));
     }
 
+    /// A window of one instant (t = 1) at which the point lies exactly on the boundary
+    /// of edge_detect_simp's perpendicular condition (|w × a| = F·‖a‖², the along one
+    /// holding with room): paper A says yes, so the engine must not certify "no". The
+    /// outer sets of the four quadratics then all shrink to the point [1, 1], and a
+    /// meeting of one point is still a meeting (first_meeting's `lb > ub` is strict).
+    #[test]
+    fn a_one_instant_window_on_the_boundary_is_not_missed() {
+        let e = BallV::exact;
+        for side in [0.5, -0.5] {
+            let tri = edge_detect_simp_tri(
+                Ball::exact(1.0),
+                Ball::exact(1.0),
+                e(v(-0.5, side)),
+                e(v(1.0, 0.0)),
+                e(v(1.0, 0.0)),
+                e(v(0.0, 0.0)),
+                true,
+                0.5,
+            );
+            assert_ne!(tri, Tri::No, "w(1) = (0.5, {side})");
+        }
+    }
+
     /// Exact checks of [`root_bounds`]' contract: for float a ≠ 0, b, c with real roots
     /// and any ball `disc` that holds b² − 4ac, each enclosure holds its exact root.
     mod root_bounds_contract {

@@ -584,7 +584,7 @@ pub fn case<S: Source>(src: &mut S, shape: Shape, mode: Mode, space: &Space) -> 
 /// velocities scale, T and F do not, so the case is the same case at another scale. A
 /// move that breaks it (underflow collapsing the polygon, or a warping one no longer
 /// simple over [0, T]) is not made. Returns the case and j (0: not moved).
-fn absolute_scale<S: Source>(src: &mut S, raw: RawCase, warping: bool) -> (RawCase, i32) {
+pub fn absolute_scale<S: Source>(src: &mut S, raw: RawCase, warping: bool) -> (RawCase, i32) {
     if src.below(8) != 0 {
         return (raw, 0);
     }

@@ -2134,4 +2134,293 @@ mod tests {
             );
         }
     }
+
+    /// Exact checks of [`simp_quadratics`]' contract (§II.I): for every exact w, v, a, b
+    /// within the balls ww, vv, aa, bb (each coordinate within its radius of the centre)
+    /// and every k within k1, the exact coefficients of F·‖a‖² ± w × a and
+    /// k·‖a‖² ± w·a (a = aa + t·bb, w = ww + t·vv) lie in the balls it returns. The
+    /// inputs are taken at corners of their boxes, where a product's deviation reaches the
+    /// bound's input terms exactly (n_x·r_y + n_y·r_x + 2·r_x·r_y), the corner chosen to
+    /// push each coefficient up and down in turn, and on exact inputs whose roundings are
+    /// as large as they get (mantissas just above a power of two, vectors on one axis, so
+    /// that ‖·‖₁² is no looser than the product it bounds).
+    mod simp_quadratics_contract {
+        use super::root_bounds_contract::{exact, float};
+        use super::*;
+        use polyguard_oracle::{Arith, ExactField, Q};
+        use proptest::prelude::*;
+
+        /// One call's arguments.
+        #[derive(Clone, Copy, Debug)]
+        struct Args {
+            /// ww, vv, aa, bb.
+            vecs: [BallV; 4],
+            k1: Ball,
+            f: f64,
+        }
+
+        impl Args {
+            /// The four centres as one array (w.x, w.y, v.x, v.y, a.x, a.y, b.x, b.y).
+            fn centres(&self) -> [f64; 8] {
+                core::array::from_fn(|m| {
+                    let v = self.vecs[m / 2].v;
+                    if m % 2 == 0 {
+                        v.x
+                    } else {
+                        v.y
+                    }
+                })
+            }
+
+            /// bb is exactly zero: the caller's `bb0`.
+            fn bb0(&self) -> bool {
+                self.vecs[3].v == Vect2::ZERO && self.vecs[3].r == 0.0
+            }
+        }
+
+        const W: usize = 0;
+        const V: usize = 2;
+        const A: usize = 4;
+        const B: usize = 6;
+
+        fn dot(c: &[Q; 8], p: usize, q: usize) -> Q {
+            c[p].times(&c[q]).plus(&c[p + 1].times(&c[q + 1]))
+        }
+
+        fn cross(c: &[Q; 8], p: usize, q: usize) -> Q {
+            c[p].times(&c[q + 1]).minus(&c[p + 1].times(&c[q]))
+        }
+
+        /// The exact coefficients (t², t, 1) of the four quadratics, in simp_quadratics'
+        /// order (F·g + y, F·g − y, k·g + x, k·g − x), at the exact inputs `c` and `k`.
+        fn exact_coefficients(c: &[Q; 8], k: &Q, f: &Q) -> [[Q; 3]; 4] {
+            let g = [dot(c, B, B), dot(c, A, B).twice(), dot(c, A, A)];
+            let x = [dot(c, V, B), dot(c, W, B).plus(&dot(c, V, A)), dot(c, W, A)];
+            let y = [
+                cross(c, V, B),
+                cross(c, W, B).plus(&cross(c, V, A)),
+                cross(c, W, A),
+            ];
+            let quad = |kk: &Q, h: &[Q; 3], plus: bool| -> [Q; 3] {
+                core::array::from_fn(|i| {
+                    let kg = kk.times(&g[i]);
+                    if plus {
+                        kg.plus(&h[i])
+                    } else {
+                        kg.minus(&h[i])
+                    }
+                })
+            };
+            [
+                quad(f, &y, true),
+                quad(f, &y, false),
+                quad(k, &x, true),
+                quad(k, &x, false),
+            ]
+        }
+
+        /// Adds α·∇(p·q) (or α·∇(p × q)) at the centres `c` to `g`.
+        fn add_grad(g: &mut [f64; 9], c: &[f64; 8], alpha: f64, p: usize, q: usize, cross: bool) {
+            if cross {
+                g[p] += alpha * c[q + 1];
+                g[p + 1] -= alpha * c[q];
+                g[q] -= alpha * c[p + 1];
+                g[q + 1] += alpha * c[p];
+            } else {
+                g[p] += alpha * c[q];
+                g[p + 1] += alpha * c[q + 1];
+                g[q] += alpha * c[p];
+                g[q + 1] += alpha * c[p + 1];
+            }
+        }
+
+        /// The gradient of coefficient i of quadratic j at the centres, over the eight
+        /// coordinates and k (a guide to the corner that pushes it furthest).
+        fn gradient(args: &Args, j: usize, i: usize) -> [f64; 9] {
+            let c = args.centres();
+            let mut g = [0.0; 9];
+            let (kappa, sigma, is_cross) = match j {
+                0 => (args.f, 1.0, true),
+                1 => (args.f, -1.0, true),
+                2 => (args.k1.z, 1.0, false),
+                _ => (args.k1.z, -1.0, false),
+            };
+            match i {
+                0 => add_grad(&mut g, &c, kappa, B, B, false),
+                1 => add_grad(&mut g, &c, 2.0 * kappa, A, B, false),
+                _ => add_grad(&mut g, &c, kappa, A, A, false),
+            }
+            match i {
+                0 => add_grad(&mut g, &c, sigma, V, B, is_cross),
+                1 => {
+                    add_grad(&mut g, &c, sigma, W, B, is_cross);
+                    add_grad(&mut g, &c, sigma, V, A, is_cross);
+                }
+                _ => add_grad(&mut g, &c, sigma, W, A, is_cross),
+            }
+            if j >= 2 {
+                let d = |p: usize, q: usize| c[p] * c[q] + c[p + 1] * c[q + 1];
+                g[8] = [d(B, B), 2.0 * d(A, B), d(A, A)][i];
+            }
+            g
+        }
+
+        /// The exact input at a corner: each coordinate (and k) at its centre minus, at,
+        /// or plus its radius (sign −1, 0, 1).
+        fn corner(args: &Args, s: &[i8; 9]) -> ([Q; 8], Q) {
+            let shift = |z: f64, r: f64, s: i8| match s {
+                1 => exact(z).plus(&exact(r)),
+                -1 => exact(z).minus(&exact(r)),
+                _ => exact(z),
+            };
+            let c = args.centres();
+            let coords = core::array::from_fn(|m| shift(c[m], args.vecs[m / 2].r, s[m]));
+            (coords, shift(args.k1.z, args.k1.r, s[8]))
+        }
+
+        /// The corners tried: the centre, each coefficient pushed up and down along its
+        /// gradient's signs (a zero component taking either sign), and all coordinates
+        /// at +r or −r together.
+        fn corners(args: &Args) -> Vec<[i8; 9]> {
+            let mut all = vec![[0; 9], [1; 9], [-1; 9]];
+            for j in 0..4 {
+                for i in 0..3 {
+                    let g = gradient(args, j, i);
+                    for dir in [1.0, -1.0] {
+                        for zero in [1, -1] {
+                            all.push(core::array::from_fn(|m| {
+                                let d = dir * g[m];
+                                if d > 0.0 {
+                                    1
+                                } else if d < 0.0 {
+                                    -1
+                                } else {
+                                    zero
+                                }
+                            }));
+                        }
+                    }
+                }
+            }
+            all.sort_unstable();
+            all.dedup();
+            all
+        }
+
+        /// Some(reason) when an exact coefficient at some corner lies outside its ball.
+        fn breach(args: &Args) -> Option<String> {
+            let [ww, vv, aa, bb] = args.vecs;
+            let got = simp_quadratics(ww, vv, aa, bb, args.bb0(), args.k1, args.f);
+            let f = exact(args.f);
+            for s in corners(args) {
+                let (c, k) = corner(args, &s);
+                let want = exact_coefficients(&c, &k, &f);
+                for (j, (balls, exact_c)) in got.iter().zip(&want).enumerate() {
+                    for (i, (ball, e)) in balls.iter().zip(exact_c).enumerate() {
+                        if !(ball.z.is_finite() && ball.r >= 0.0 && ball.r.is_finite()) {
+                            return Some(format!("quadratic {j} coefficient {i}: {ball:?}"));
+                        }
+                        let d = e.minus(&exact(ball.z));
+                        let d = if d.is_neg() { d.negated() } else { d };
+                        if d > exact(ball.r) {
+                            return Some(format!(
+                                "quadratic {j} coefficient {i} at corner {s:?}: {:e} off the \
+                                 centre {:e}, radius {:e}",
+                                polyguard_oracle::convert::to_float(&d),
+                                ball.z,
+                                ball.r
+                            ));
+                        }
+                    }
+                }
+            }
+            None
+        }
+
+        /// A coordinate: zero one time in four, else ±m·2^e.
+        fn coordinate(e: core::ops::Range<i32>) -> impl Strategy<Value = f64> {
+            prop_oneof![
+                1 => Just(0.0),
+                3 => (any::<bool>(), 1.0..2.0f64, e).prop_map(|(n, m, e)| float(n, m, e)),
+            ]
+        }
+
+        /// A ball vector: its radius exact zero one time in three, else 2^e from far below
+        /// the centre to above it.
+        fn ball_vector() -> impl Strategy<Value = BallV> {
+            (
+                coordinate(-20..20),
+                coordinate(-20..20),
+                prop_oneof![1 => Just(0.0), 2 => (-70..24i32).prop_map(|e| 2f64.powi(e))],
+            )
+                .prop_map(|(x, y, r)| BallV { v: v(x, y), r })
+        }
+
+        /// F ≥ 0, and k1 either as edge_detect_simp_tri makes it (1 + F and its rounding
+        /// error) or any ball of positive centre, whose radius may be as large as half
+        /// of it (the contract holds for every ball).
+        fn k_and_f() -> impl Strategy<Value = (Ball, f64)> {
+            (
+                prop_oneof![
+                    Just(0.0),
+                    (1.0..2.0f64, -60..4i32).prop_map(|(m, e)| float(false, m, e))
+                ],
+                prop_oneof![
+                    Just(None),
+                    (1.0..4.0f64, 1..60i32).prop_map(|(z, e)| Some(Ball {
+                        z,
+                        r: z * 2f64.powi(-e)
+                    })),
+                ],
+            )
+                .prop_map(|(f, k)| {
+                    let k1 = k.unwrap_or_else(|| {
+                        let (z, err) = crate::ball::exact::two_sum(1.0, f);
+                        Ball { z, r: err.abs() }
+                    });
+                    (k1, f)
+                })
+        }
+
+        /// A coordinate whose products round by nearly half an ulp: ±2^e·(1 + m·2⁻²⁷),
+        /// so that the product of two is 2^e'·(1 + … + m·m'·2⁻⁵⁴) with the last term
+        /// anywhere in an ulp.
+        fn rounding_coordinate() -> impl Strategy<Value = f64> {
+            (any::<bool>(), 1.0..2.0f64, -8..8i32)
+                .prop_map(|(n, m, e)| float(n, 1.0 + m * 2f64.powi(-27), e))
+        }
+
+        /// An exact vector on one axis (‖·‖₁ is then its length, the bound's tightest case).
+        fn rounding_vector() -> impl Strategy<Value = BallV> {
+            (any::<bool>(), rounding_coordinate())
+                .prop_map(|(on_x, z)| BallV::exact(if on_x { v(z, 0.0) } else { v(0.0, z) }))
+        }
+
+        proptest! {
+            #![proptest_config(ProptestConfig::with_cases(256))]
+
+            #[test]
+            fn the_balls_hold_the_exact_coefficients(
+                vecs in [ball_vector(), ball_vector(), ball_vector(), ball_vector()],
+                (k1, f) in k_and_f(),
+            ) {
+                let args = Args { vecs, k1, f };
+                if let Some(why) = breach(&args) {
+                    prop_assert!(false, "{:?}: {}", args, why);
+                }
+            }
+
+            #[test]
+            fn the_balls_hold_the_exact_coefficients_of_exact_inputs(
+                vecs in [rounding_vector(), rounding_vector(), rounding_vector(), rounding_vector()],
+                f in prop_oneof![Just(0.0), rounding_coordinate().prop_map(f64::abs)],
+            ) {
+                let (z, err) = crate::ball::exact::two_sum(1.0, f);
+                let args = Args { vecs, k1: Ball { z, r: err.abs() }, f };
+                if let Some(why) = breach(&args) {
+                    prop_assert!(false, "{:?}: {}", args, why);
+                }
+            }
+        }
+    }
 }

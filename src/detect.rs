@@ -1600,6 +1600,53 @@ mod tests {
         assert_eq!(slab_window(1.5, -4.0, 2.0, 0.0, 10.0, 0.0), None);
     }
 
+    /// §III step 1 among subnormals (the campaign's shard 7/100 of seed 1): the point
+    /// sinks from −142 units of 2⁻¹⁰⁷⁴ at 4 units per unit time toward a slab whose top
+    /// is at −607 units, reaching it at t = 465/4 = 116.25. Within T = 100 there is no
+    /// window (the sign of z1 − T·w, −65 units, lies below the static bound's ETA, so
+    /// only the exact sum can tell); within T = 200 the window is [116.25, 200].
+    #[test]
+    fn a_subnormal_slab_window_is_decided() {
+        let unit = f64::from_bits(1);
+        let (sz, vz, pmin, pmax) = (-142.0 * unit, -4.0 * unit, -6072.0 * unit, -607.0 * unit);
+        assert_eq!(slab_window_balls(100.0, sz, vz, pmin, pmax, 0.0), None);
+        assert_eq!(
+            slab_window(200.0, sz, vz, pmin, pmax, 0.0),
+            Some((116.25, 200.0))
+        );
+        // the same, climbing
+        assert_eq!(slab_window_balls(100.0, -sz, -vz, -pmax, -pmin, 0.0), None);
+        assert_eq!(
+            slab_window(200.0, -sz, -vz, -pmax, -pmin, 0.0),
+            Some((116.25, 200.0))
+        );
+    }
+
+    /// When the comparisons of §III step 1 cannot be decided (here T·w overflows), the
+    /// window's balls still enclose its ends: the outer window [a.lo, b.hi] holds the
+    /// true one, and the inner window [a.hi, b.lo] (times in the window whatever the
+    /// exact ends) lies inside it. Claiming the whole [0, T] exactly would let the 2D
+    /// detector certify a contact after the point has left the slab.
+    #[test]
+    fn an_undecided_slab_window_claims_nothing() {
+        // From height 0 at ±1e300 per unit, the slab [−1, 1] is left at t = 1e-300.
+        for vz in [1e300, -1e300] {
+            let (a, b) = slab_window_balls(1e300, 0.0, vz, -1.0, 1.0, 0.0).expect("a window");
+            assert!(
+                a.lo() <= 0.0 && b.hi() >= 1e-300,
+                "outer [{}, {}]",
+                a.lo(),
+                b.hi()
+            );
+            assert!(
+                a.hi() > b.lo() || (a.hi() >= 0.0 && b.lo() <= 1e-300),
+                "inner [{}, {}] outside [0, 1e-300]",
+                a.hi(),
+                b.lo()
+            );
+        }
+    }
+
     #[test]
     fn detect_3d_needs_both_horizontal_and_vertical_overlap() {
         let sq = [v(0.0, 0.0), v(2.0, 0.0), v(2.0, 2.0), v(0.0, 2.0)];

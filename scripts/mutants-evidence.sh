@@ -63,11 +63,37 @@ mkdir -p "$ev"
 list="$root/target/mutants-list.txt"
 (cd "$work" && cargo mutants --list --package polyguard "${file_args[@]}") > "$list"
 if [ -f "$ev/list.txt" ]; then
+  shards=$(cat "$ev/shards")
   if ! cmp -s "$list" "$ev/list.txt"; then
-    diff "$ev/list.txt" "$list" | head -20 >&2
-    echo "mutants-evidence: the engine's mutants are no longer those of $ev/list.txt;" \
-      "outcomes of different lists do not add up (delete $ev to start again)" >&2
-    exit 2
+    # The engine changed. cargo-mutants cuts the list into contiguous slices of
+    # ceil(N/shards) mutants, so a finished slice keeps its meaning when the slice size is
+    # the same and the list is unchanged, line for line, up to the slice's last mutant
+    # (the change lies after it). Then the new list replaces the old one; otherwise the
+    # outcomes would not add up, and the run must start again.
+    old_n=$(wc -l < "$ev/list.txt")
+    new_n=$(wc -l < "$list")
+    old_size=$(((old_n + shards - 1) / shards))
+    new_size=$(((new_n + shards - 1) / shards))
+    same=$(cmp "$ev/list.txt" "$list" 2>/dev/null | sed -n 's/.* line \([0-9]*\).*/\1/p')
+    same=$((${same:-$((old_n < new_n ? old_n : new_n)) + 1} - 1))   # identical leading lines
+    stale=()
+    for d in "$ev"/shard-*/; do
+      [ -f "$d/commit" ] || continue
+      k=$(basename "$d"); k=${k#shard-}
+      if [ "$old_size" -ne "$new_size" ] || [ $(((k + 1) * new_size)) -gt "$same" ]; then
+        stale+=("$k")
+      fi
+    done
+    if [ ${#stale[@]} -gt 0 ]; then
+      diff "$ev/list.txt" "$list" | head -20 >&2
+      echo "mutants-evidence: the engine's mutants changed within finished slices" \
+        "(${stale[*]}; slice size $old_size, now $new_size): outcomes of different lists do" \
+        "not add up (delete those slices, or $ev to start again)" >&2
+      exit 2
+    fi
+    echo "mutants-evidence: the list changed after its first $same mutants; the finished" \
+      "slices lie before that and are kept; $ev/list.txt is now the new list ($new_n mutants)" >&2
+    cp "$list" "$ev/list.txt"
   fi
 else
   cp "$list" "$ev/list.txt"

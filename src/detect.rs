@@ -1670,6 +1670,156 @@ mod tests {
         }
     }
 
+    /// Exact checks of [`slab_window_balls`]' contract (§III step 1) at every scale, from
+    /// subnormals to 2¹⁰⁰⁰: with W the exact set of t ∈ [0, T] where the height lies in
+    /// the slab, `None` only when W is empty; otherwise the outer window [a.lo, b.hi]
+    /// holds W and the inner window [a.hi, b.lo], when not empty, lies in W.
+    mod slab_window_contract {
+        use super::root_bounds_contract::{exact, float};
+        use super::*;
+        use polyguard_oracle::{Arith, ExactField, Q};
+        use proptest::prelude::*;
+
+        /// W = [lo, hi] exactly, or None when empty.
+        fn exact_window(
+            t: f64,
+            sz: f64,
+            vz: f64,
+            pmin: f64,
+            pmax: f64,
+            vsp: f64,
+        ) -> Option<(Q, Q)> {
+            let (t, sz) = (exact(t), exact(sz));
+            let w = exact(vz).minus(&exact(vsp));
+            let z0 = sz.minus(&exact(pmin)); // z0 + t·w ≥ 0
+            let z1 = exact(pmax).minus(&sz); // z1 − t·w ≥ 0
+            let (mut lo, mut hi) = (Q::zero(), t);
+            if w.is_zero_() {
+                if z0.is_neg() || z1.is_neg() {
+                    return None;
+                }
+            } else {
+                let from0 = z0.negated().quotient(&w).expect("w ≠ 0"); // −z0/w
+                let from1 = z1.quotient(&w).expect("w ≠ 0"); // z1/w
+                let (enter, leave) = if w.is_pos() {
+                    (from0, from1)
+                } else {
+                    (from1, from0)
+                };
+                lo = lo.max(enter);
+                hi = hi.min(leave);
+            }
+            (lo <= hi).then_some((lo, hi))
+        }
+
+        fn breach(t: f64, sz: f64, vz: f64, pmin: f64, pmax: f64, vsp: f64) -> Option<String> {
+            let got = slab_window_balls(t, sz, vz, pmin, pmax, vsp);
+            let want = exact_window(t, sz, vz, pmin, pmax, vsp);
+            match (got, want) {
+                (None, None) => None,
+                (None, Some((lo, hi))) => Some(format!("None, but W = [{lo}, {hi}]")),
+                (Some((a, b)), want) => {
+                    let (al, ah, bl, bh) = (a.lo(), a.hi(), b.lo(), b.hi());
+                    if [al, ah, bl, bh].iter().any(|x| x.is_nan()) {
+                        return Some(format!("NaN in {a:?}, {b:?}"));
+                    }
+                    let q = |x: f64| {
+                        if x.is_finite() {
+                            exact(x)
+                        } else if x > 0.0 {
+                            exact(f64::MAX).twice()
+                        } else {
+                            exact(f64::MAX).twice().negated()
+                        }
+                    };
+                    let inner = (ah <= bl).then(|| (q(ah), q(bl)));
+                    match (want, inner) {
+                        (None, Some((il, ih))) => {
+                            Some(format!("W is empty, but the inner window is [{il}, {ih}]"))
+                        }
+                        (Some((lo, hi)), inner) => {
+                            if q(al) > lo || q(bh) < hi {
+                                return Some(format!(
+                                    "outer [{al:e}, {bh:e}] misses W = [{lo}, {hi}]"
+                                ));
+                            }
+                            match inner {
+                                Some((il, ih)) if il < lo || ih > hi => {
+                                    Some(format!("inner [{ah:e}, {bl:e}] leaves W = [{lo}, {hi}]"))
+                                }
+                                _ => None,
+                            }
+                        }
+                        (None, None) => None,
+                    }
+                }
+            }
+        }
+
+        /// A height or speed at scale 2^e: zero one time in six, else ±m·2^(e + k), k small.
+        fn at_scale(e: i32) -> impl Strategy<Value = f64> {
+            prop_oneof![
+                1 => Just(0.0),
+                5 => (any::<bool>(), 1.0..2.0f64, -12..12i32)
+                    .prop_map(move |(n, m, k)| float(n, m, (e + k).clamp(-1074, 1000))),
+            ]
+        }
+
+        /// Heights and speeds at one scale (subnormal, small, unit, large, near overflow),
+        /// the lookahead from 2⁻²⁰ to 2⁶⁰; the slab's ends sorted.
+        fn slab() -> impl Strategy<Value = (f64, f64, f64, f64, f64, f64)> {
+            (
+                prop_oneof![
+                    Just(-1074),
+                    Just(-1060),
+                    Just(-1040),
+                    Just(-600),
+                    Just(0),
+                    Just(600),
+                    Just(980)
+                ],
+                (1.0..2.0f64, -20..60i32),
+            )
+                .prop_flat_map(|(e, (tm, te))| {
+                    (
+                        Just(float(false, tm, te)),
+                        at_scale(e),
+                        at_scale(e),
+                        at_scale(e),
+                        at_scale(e),
+                        at_scale(e),
+                    )
+                })
+                .prop_map(|(t, sz, vz, p1, p2, vsp)| (t, sz, vz, p1.min(p2), p1.max(p2), vsp))
+        }
+
+        proptest! {
+            #![proptest_config(ProptestConfig::with_cases(2048))]
+
+            #[test]
+            fn the_window_balls_enclose_the_exact_window((t, sz, vz, pmin, pmax, vsp) in slab()) {
+                prop_assume!([t, sz, vz, pmin, pmax, vsp].iter().all(|x| x.is_finite()));
+                if let Some(why) = breach(t, sz, vz, pmin, pmax, vsp) {
+                    prop_assert!(
+                        false,
+                        "T {t:e}, sz {sz:e}, vz {vz:e}, slab [{pmin:e}, {pmax:e}], vsp {vsp:e}: {why}"
+                    );
+                }
+            }
+        }
+
+        /// The campaign's case itself, and the undecided one.
+        #[test]
+        fn the_known_cases_keep_the_contract() {
+            let unit = f64::from_bits(1);
+            let (sz, vz, pmin, pmax) = (-142.0 * unit, -4.0 * unit, -6072.0 * unit, -607.0 * unit);
+            for t in [100.0, 116.25, 200.0] {
+                assert_eq!(breach(t, sz, vz, pmin, pmax, 0.0), None, "T = {t}");
+            }
+            assert_eq!(breach(1e300, 0.0, 1e300, -1.0, 1.0, 0.0), None);
+        }
+    }
+
     #[test]
     fn detect_3d_needs_both_horizontal_and_vertical_overlap() {
         let sq = [v(0.0, 0.0), v(2.0, 0.0), v(2.0, 2.0), v(0.0, 2.0)];

@@ -12,7 +12,7 @@ use std::time::Instant;
 
 use crate::case::RawCase;
 use crate::harness::classify::{check_contract, compare_as, Class, Hunted, Verdict};
-use crate::harness::gen::{any_case_in, bucket, Space, SplitMix};
+use crate::harness::gen::{any_case_in, bucket, Ends, Space, SplitMix};
 use crate::harness::minimise::minimise;
 use crate::harness::report::{Kept, Report};
 use crate::harness::svg::{picture, Picture};
@@ -55,18 +55,26 @@ pub struct AssureArgs {
     pub engine: EngineArg,
     /// Aim the campaign at part of the scale space: `path=1e3..1e7,buff=1e-12..1e-9`
     /// (relative path and BUFF per polygon size, as powers of ten; either may be left
-    /// out). The default is the whole space (path 1e-3..1e7, buff 1e-12..1e0).
+    /// out), and `ends=all` (or `tiny`, `huge`) to move every case to an end of the float
+    /// range (BUFF subnormal, or the largest length near 2^900..2^1000) instead of one in
+    /// eight. The default is the whole space (path 1e-3..1e7, buff 1e-12..1e0, ends=eighth).
     #[arg(long, value_parser = parse_aim)]
     pub aim: Option<Space>,
 }
 
-/// `--aim path=1eA..1eB,buff=1eC..1eD` → the narrowed scale space.
+/// `--aim path=1eA..1eB,buff=1eC..1eD,ends=E` → the narrowed scale space.
 fn parse_aim(s: &str) -> Result<Space, String> {
     let (mut path, mut buff) = (Space::FULL.path, Space::FULL.buff);
+    let mut ends = Ends::Eighth;
     for part in s.split(',') {
-        let (key, range) = part
-            .split_once('=')
-            .ok_or_else(|| format!("{part:?}: expected path=1eA..1eB or buff=1eC..1eD"))?;
+        let (key, range) = part.split_once('=').ok_or_else(|| {
+            format!("{part:?}: expected path=1eA..1eB, buff=1eC..1eD or ends=all|tiny|huge|eighth")
+        })?;
+        if key.trim() == "ends" {
+            ends = Ends::from_name(range.trim())
+                .ok_or_else(|| format!("ends: {range:?} is not one of eighth, all, tiny, huge"))?;
+            continue;
+        }
         let (lo, hi) = range
             .split_once("..")
             .ok_or_else(|| format!("{part:?}: expected a range lo..hi, e.g. 1e3..1e5"))?;
@@ -85,10 +93,10 @@ fn parse_aim(s: &str) -> Result<Space, String> {
         match key.trim() {
             "path" => path = r,
             "buff" => buff = r,
-            other => return Err(format!("unknown scale {other:?}: use path or buff")),
+            other => return Err(format!("unknown scale {other:?}: use path, buff or ends")),
         }
     }
-    Space::aimed(path, buff)
+    Ok(Space::aimed(path, buff)?.with_ends(ends))
 }
 
 /// `--engine` of `polyguard assure`.
@@ -590,6 +598,57 @@ mod tests {
                 "case {k} ({mode}): buff bucket 1e{b}"
             );
         }
+    }
+
+    /// `--aim ends=…` moves every case that can be moved to the chosen end of the float
+    /// range (a move that would break the case is not made), and says so in its label.
+    #[test]
+    fn aimed_at_the_ends_cases_go_there() {
+        assert_eq!(parse_aim("ends=all"), Ok(Space::FULL.with_ends(Ends::All)));
+        assert!(parse_aim("ends=middle").is_err());
+        assert_eq!(Space::FULL.label(), "path=1e-3..1e7,buff=1e-12..1e0");
+        for (name, want_tiny) in [("tiny", Some(true)), ("huge", Some(false)), ("all", None)] {
+            let space = parse_aim(&format!("path=1e-1..1e2,ends={name}")).expect("a valid aim");
+            assert!(space.label().ends_with(&format!(",ends={name}")));
+            let n = 200;
+            let (mut tiny, mut huge) = (0, 0);
+            for k in 0..n {
+                let (raw, _) = campaign_case(3, k, &space);
+                let largest = raw
+                    .vertices
+                    .iter()
+                    .flatten()
+                    .chain(&raw.pos)
+                    .fold(raw.buff, |m, x| m.max(x.abs()));
+                tiny += usize::from(raw.buff < f64::MIN_POSITIVE);
+                huge += usize::from(largest > 2f64.powi(890));
+            }
+            match want_tiny {
+                Some(true) => assert!(tiny >= 180 && huge == 0, "{name}: {tiny} tiny, {huge} huge"),
+                Some(false) => {
+                    assert!(huge >= 180 && tiny == 0, "{name}: {tiny} tiny, {huge} huge")
+                }
+                None => assert!(
+                    tiny >= 60 && huge >= 60 && tiny + huge >= 180,
+                    "{name}: {tiny} tiny, {huge} huge"
+                ),
+            }
+        }
+        // the default: about one case in eight
+        let (mut moved, n) = (0, 800);
+        for k in 0..n {
+            let (raw, _) = campaign_case(3, k, &Space::FULL);
+            let largest = raw
+                .vertices
+                .iter()
+                .flatten()
+                .fold(raw.buff, |m, x| m.max(x.abs()));
+            moved += usize::from(raw.buff < f64::MIN_POSITIVE || largest > 2f64.powi(890));
+        }
+        assert!(
+            (50..=150).contains(&moved),
+            "{moved} of {n} moved by default"
+        );
     }
 
     #[test]

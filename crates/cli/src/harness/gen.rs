@@ -257,6 +257,41 @@ pub struct Space {
     pub path: (f64, f64),
     /// log₁₀ of BUFF / (polygon size): within −12 … 0.
     pub buff: (f64, f64),
+    /// Which cases are moved to an end of the float range ([`absolute_scale`]).
+    pub ends: Ends,
+}
+
+/// How many cases [`absolute_scale`] moves to an end of the float range, and to which.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Ends {
+    /// One case in eight, to either end (the default campaign).
+    #[default]
+    Eighth,
+    /// Every case that can be moved, to either end.
+    All,
+    /// Every case that can be moved, BUFF subnormal.
+    Tiny,
+    /// Every case that can be moved, the largest length near 2⁹⁰⁰ … 2¹⁰⁰⁰.
+    Huge,
+}
+
+impl Ends {
+    /// The name `--aim ends=…` takes (`eighth`, `all`, `tiny`, `huge`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Ends::Eighth => "eighth",
+            Ends::All => "all",
+            Ends::Tiny => "tiny",
+            Ends::Huge => "huge",
+        }
+    }
+
+    /// The one of that name.
+    pub fn from_name(name: &str) -> Option<Ends> {
+        [Ends::Eighth, Ends::All, Ends::Tiny, Ends::Huge]
+            .into_iter()
+            .find(|e| e.name() == name)
+    }
 }
 
 impl Space {
@@ -264,10 +299,13 @@ impl Space {
     pub const FULL: Space = Space {
         path: (-3.0, 7.0),
         buff: (-12.0, 0.0),
+        ends: Ends::Eighth,
     };
 
     /// A space narrowed to `path` and `buff` (decimal exponents), or why it cannot be:
-    /// each range must lie within [`Space::FULL`]'s and not be empty.
+    /// each range must lie within [`Space::FULL`]'s and not be empty. One case in eight
+    /// goes to an end of the float range, as in the full space ([`Space::with_ends`]
+    /// changes that).
     pub fn aimed(path: (f64, f64), buff: (f64, f64)) -> Result<Space, String> {
         for (name, (lo, hi), (flo, fhi)) in [
             ("path", path, Space::FULL.path),
@@ -279,14 +317,28 @@ impl Space {
                 ));
             }
         }
-        Ok(Space { path, buff })
+        Ok(Space {
+            path,
+            buff,
+            ends: Ends::Eighth,
+        })
+    }
+
+    /// The same space with `ends` cases moved to the ends of the float range.
+    pub fn with_ends(self, ends: Ends) -> Space {
+        Space { ends, ..self }
     }
 
     /// The space as `assure --aim` writes it and reports record it:
-    /// `path=1e-3..1e7,buff=1e-12..1e0`.
+    /// `path=1e-3..1e7,buff=1e-12..1e0`, followed by `,ends=all` (or `tiny`, `huge`)
+    /// when the cases at the ends of the float range are not the default eighth.
     pub fn label(&self) -> String {
+        let ends = match self.ends {
+            Ends::Eighth => String::new(),
+            e => format!(",ends={}", e.name()),
+        };
         format!(
-            "path=1e{}..1e{},buff=1e{}..1e{}",
+            "path=1e{}..1e{},buff=1e{}..1e{}{ends}",
             self.path.0, self.path.1, self.buff.0, self.buff.1
         )
     }
@@ -564,7 +616,7 @@ pub fn case<S: Source>(src: &mut S, shape: Shape, mode: Mode, space: &Space) -> 
         })
         .unwrap_or_else(|| make(0.0, Vect2::default()));
     // Drawn last, so that the cases left at their scale are the same as before.
-    let (raw, scale_exp) = absolute_scale(src, raw, warping);
+    let (raw, scale_exp) = absolute_scale(src, raw, warping, space.ends);
     Drawn {
         raw,
         shape,
@@ -584,11 +636,22 @@ pub fn case<S: Source>(src: &mut S, shape: Shape, mode: Mode, space: &Space) -> 
 /// velocities scale, T and F do not, so the case is the same case at another scale. A
 /// move that breaks it (underflow collapsing the polygon, or a warping one no longer
 /// simple over [0, T]) is not made. Returns the case and j (0: not moved).
-pub fn absolute_scale<S: Source>(src: &mut S, raw: RawCase, warping: bool) -> (RawCase, i32) {
-    if src.below(8) != 0 {
+pub fn absolute_scale<S: Source>(
+    src: &mut S,
+    raw: RawCase,
+    warping: bool,
+    ends: Ends,
+) -> (RawCase, i32) {
+    // The default draws exactly as before `ends` existed, so seeded campaigns keep
+    // their cases.
+    if ends == Ends::Eighth && src.below(8) != 0 {
         return (raw, 0);
     }
-    let tiny = src.coin();
+    let tiny = match ends {
+        Ends::Tiny => true,
+        Ends::Huge => false,
+        Ends::Eighth | Ends::All => src.coin(),
+    };
     let u = if tiny {
         src.range(-1072.0, -1040.0)
     } else {
@@ -865,6 +928,7 @@ mod tests {
                 &Space {
                     path: (-3.0, 0.4),
                     buff: (-7.0, -2.0),
+                    ends: Ends::Eighth,
                 },
             );
             // A case moved to an end of the float range is measured moved back (by a

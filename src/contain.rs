@@ -875,6 +875,36 @@ mod tests {
         assert!(definitely_outside(&tri[..], s, 4.0));
     }
 
+    /// A perturbed vertex moves by exactly 2·BUFF, in its ball and in its exact terms.
+    /// With BUFF = 3/4, (0.75, −0.5) moves to (−0.75, −0.5), and its perturbed edge to
+    /// (2.25, −1.75) touches the circle of radius BUFF (the foot of the perpendicular
+    /// inside the edge): exactly BUFF from the point, a tie that only the exact terms
+    /// decide, so the point is still definitely outside (the other edges stay farther).
+    /// Terms moved by −2 + BUFF instead (a mutation-test survivor, the same as −2·BUFF
+    /// at BUFF = 2, as −2/BUFF is at BUFF = 1) put the vertex at (−0.5, −0.5), and that
+    /// edge's interior within BUFF.
+    #[test]
+    fn a_perturbed_vertex_moves_by_two_buff() {
+        let s = v(0.5, 0.25);
+        let tri: Vec<Vect2> = [v(3.0, -6.0), v(2.25, -1.75), v(0.75, -0.5)]
+            .iter()
+            .map(|&q| q + s)
+            .collect();
+        assert!(definitely_outside(&tri[..], s, 0.75));
+        // At t = 3, polygon and point moving alike: the same scene, with the frame's
+        // vertices as balls (p + 3·v − s − 3·v carries a rounding bound).
+        let vels = [v(1.0, 0.0); 3];
+        let at = AtTime {
+            p: &tri[..],
+            vels: &vels[..],
+            s,
+            v: v(1.0, 0.0),
+            t: crate::ball::Ball::exact(3.0),
+        };
+        assert!(at.rel(2).r > 0.0, "a ball, not an exact vertex");
+        assert_eq!(definitely_outside_rel(&at, 0.75), Tri::Yes);
+    }
+
     /// A frame of given balls and no exact terms: what a frame at an inexact time looks
     /// like to §II.E.
     struct Balls(Vec<BallV>);

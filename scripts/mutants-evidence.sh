@@ -54,8 +54,11 @@ work="$root/target/mutants-work"
 if [ ! -d "$work" ]; then
   git worktree add --detach "$work" HEAD >/dev/null
 else
-  # a session cut off mid-shard leaves a mutant in place: undo it first
+  # a session cut off mid-shard leaves a mutant in place: undo it first; and the tests
+  # of mutants leave proptest's seeds of their failures (untracked), which a checkout of
+  # a commit that tracks the same file refuses to overwrite
   git -C "$work" reset -q --hard
+  git -C "$work" clean -fdq
   git -C "$work" checkout -q --detach "$(git rev-parse HEAD)"
 fi
 commit=$(git -C "$work" rev-parse HEAD)

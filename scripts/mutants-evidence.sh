@@ -77,7 +77,7 @@ if [ -f "$ev/list.txt" ]; then
     new_n=$(wc -l < "$list")
     old_size=$(((old_n + shards - 1) / shards))
     new_size=$(((new_n + shards - 1) / shards))
-    same=$(cmp "$ev/list.txt" "$list" 2>/dev/null | sed -n 's/.* line \([0-9]*\).*/\1/p')
+    same=$({ cmp "$ev/list.txt" "$list" 2>/dev/null || true; } | sed -n 's/.* line \([0-9]*\).*/\1/p')
     same=$((${same:-$((old_n < new_n ? old_n : new_n)) + 1} - 1))   # identical leading lines
     stale=()
     for d in "$ev"/shard-*/; do

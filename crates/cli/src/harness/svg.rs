@@ -317,8 +317,9 @@ fn axes(out: &mut String, m: &Map, r: Rect, xname: &str, yname: &str) {
     }
 }
 
-/// A horizontal scale bar of a round world length in the lower left of `r`.
-fn scale_bar(out: &mut String, m: &Map, r: Rect) {
+/// A horizontal scale bar of a round world length in the lower left of `r`, labelled
+/// with that length in the case's own units (`back`, see [`picture`]).
+fn scale_bar(out: &mut String, m: &Map, r: Rect, back: &dyn Fn(f64) -> f64) {
     let world = tick_step(0.3 * r.w / m.kx, 1.0);
     let px = world * m.kx;
     let (x, y) = (r.x + 10.0, r.y + r.h - 12.0);
@@ -327,7 +328,7 @@ fn scale_bar(out: &mut String, m: &Map, r: Rect) {
         r##"<line x1="{x}" y1="{y}" x2="{:.1}" y2="{y}" stroke="#000" stroke-width="2"/>"##,
         x + px
     );
-    text(out, x, y - 5.0, 11.0, "start", &num(world));
+    text(out, x, y - 5.0, 11.0, "start", &num(back(world)));
 }
 
 /// The polygon (at t = 0 or at the event), its BUFF band, in map `m`.
@@ -418,6 +419,27 @@ fn yes(b: bool) -> &'static str {
 
 /// The SVG document for a counterexample.
 pub fn picture(raw: &RawCase, pic: &Picture) -> String {
+    let original = raw;
+    // A case near an end of the float range is drawn moved by a power of two to unit
+    // scale: lengths, heights and speeds scale, T and F do not, so it is the same case,
+    // and the world-to-pixel map neither overflows nor underflows. The axes say by how
+    // much; the numbers written out are the case's own.
+    let j = drawing_scale(raw);
+    let moved;
+    let raw: &RawCase = if j == 0 {
+        raw
+    } else {
+        moved = raw.times_pow2(j);
+        &moved
+    };
+    let back = move |x: f64| x * 2f64.powi(-j / 2) * 2f64.powi(-(j - j / 2));
+    let named = |name: &str| {
+        if j == 0 {
+            name.to_string()
+        } else {
+            format!("{name} · 2^{j}")
+        }
+    };
     let t = raw.lookahead;
     let three_d = raw.pos.len() == 3 && raw.slab.is_some();
     let height = if three_d { 920.0 } else { 660.0 };
@@ -450,7 +472,7 @@ pub fn picture(raw: &RawCase, pic: &Picture) -> String {
     let all: Vec<Vect2> = p0.iter().chain(&pe).copied().chain([s, s_t, s_e]).collect();
     let (lo, hi) = bounds(&all);
     let m = Map::fit(lo, hi, MAIN, true);
-    axes(&mut out, &m, MAIN, "x", "y");
+    axes(&mut out, &m, MAIN, &named("x"), &named("y"));
     out.push_str("<g clip-path=\"url(#main)\">\n");
     polygon(&mut out, &m, &p0, raw.buff, false);
     polygon(&mut out, &m, &pe, raw.buff, true);
@@ -468,19 +490,51 @@ pub fn picture(raw: &RawCase, pic: &Picture) -> String {
     );
     dot(&mut out, &m, s_e, "#e76f51", &format!("t = {}", num(event)));
     out.push_str("</g>\n");
-    scale_bar(&mut out, &m, MAIN);
+    scale_bar(&mut out, &m, MAIN, &back);
 
     // Inset: the point at the event and the nearest edge of P(event), BUFF visible.
-    inset(&mut out, raw, &pe, s_e, v, event);
+    inset(&mut out, raw, &pe, s_e, v, event, &back);
 
-    // Legend and verdicts.
-    legend(&mut out, raw, pic, event);
+    // Legend and verdicts, in the case's own numbers.
+    legend(&mut out, original, pic, event);
 
     if three_d {
-        heights(&mut out, raw, event);
+        heights(&mut out, raw, event, &named("z"));
     }
     out.push_str("</svg>\n");
     out
+}
+
+/// The power of two j that brings a case near an end of the float range to unit scale
+/// for drawing: its largest length (a coordinate, BUFF, a height, a distance moved over
+/// T) is then about 1. 0 for a case whose largest length lies within 2^±200, which f64
+/// draws as it is.
+fn drawing_scale(raw: &RawCase) -> i32 {
+    let t = raw.lookahead;
+    let lengths = raw
+        .pos
+        .iter()
+        .chain(raw.vertices.iter().flatten())
+        .chain(raw.slab.iter().flatten())
+        .map(|x| x.abs())
+        .chain(
+            raw.vel
+                .iter()
+                .chain(raw.velocities.iter().flatten())
+                .map(|x| (x * t).abs()),
+        );
+    let largest = lengths
+        .filter(|x| x.is_finite())
+        .fold(raw.buff.abs(), f64::max);
+    if !(largest > 0.0 && largest.is_finite()) {
+        return 0;
+    }
+    let e = largest.log2();
+    if (-200.0..=200.0).contains(&e) {
+        0
+    } else {
+        -(e.round() as i32)
+    }
 }
 
 fn bounds(pts: &[Vect2]) -> (Vect2, Vect2) {
@@ -499,7 +553,16 @@ fn bounds(pts: &[Vect2]) -> (Vect2, Vect2) {
     })
 }
 
-fn inset(out: &mut String, raw: &RawCase, pe: &[Vect2], s_e: Vect2, v: Vect2, event: f64) {
+/// `back` turns a drawn length into the case's own (see [`picture`]).
+fn inset(
+    out: &mut String,
+    raw: &RawCase,
+    pe: &[Vect2],
+    s_e: Vect2,
+    v: Vect2,
+    event: f64,
+    back: &dyn Fn(f64) -> f64,
+) {
     let (edge, q, dist) = nearest_edge(pe, s_e);
     let magnitude = pe
         .iter()
@@ -556,7 +619,7 @@ fn inset(out: &mut String, raw: &RawCase, pe: &[Vect2], s_e: Vect2, v: Vect2, ev
     dot(out, &m, s_e, "#e76f51", "");
     dot(out, &m, q, "#2a9d8f", "");
     out.push_str("</g>\n");
-    scale_bar(out, &m, INSET);
+    scale_bar(out, &m, INSET, back);
     let mut y = INSET.y + INSET.h + 16.0;
     let mut line = |s: &str| {
         text(out, INSET.x, y, 11.0, "start", s);
@@ -566,13 +629,17 @@ fn inset(out: &mut String, raw: &RawCase, pe: &[Vect2], s_e: Vect2, v: Vect2, ev
     line(&format!(
         "and edge {edge}-{} (red), {} apart",
         (edge + 1) % n.max(1),
-        num(dist)
+        num(back(dist))
     ));
-    line(&format!("BUFF = {} ({:.1} px)", num(raw.buff), band / 2.0));
+    line(&format!(
+        "BUFF = {} ({:.1} px)",
+        num(back(raw.buff)),
+        band / 2.0
+    ));
     line(&format!("distance/BUFF = {}", num(dist / raw.buff)));
     if half > wanted {
         line("BUFF is below f64 resolution at this offset:");
-        line(&format!("the inset shows {} across", num(2.0 * half)));
+        line(&format!("the inset shows {} across", num(back(2.0 * half))));
     }
 }
 
@@ -626,14 +693,10 @@ fn legend(out: &mut String, raw: &RawCase, pic: &Picture, event: f64) {
         (format!("paper A exact: {}", yes(pic.paper)), true),
         (truth, true),
         (
-            format!(
-                "T = {}, BUFF = {}, F = {}",
-                num(raw.lookahead),
-                num(raw.buff),
-                num(raw.fac)
-            ),
+            format!("T = {}, F = {}", num(raw.lookahead), num(raw.fac)),
             false,
         ),
+        (format!("BUFF = {}", num(raw.buff)), false),
         (
             format!(
                 "{} vertices; event at t = {}",
@@ -655,7 +718,7 @@ fn legend(out: &mut String, raw: &RawCase, pic: &Picture, event: f64) {
 
 /// The heights panel of a 3D case: the point's height, the slab's ends, the window
 /// where the point is in the slab, the event time.
-fn heights(out: &mut String, raw: &RawCase, event: f64) {
+fn heights(out: &mut String, raw: &RawCase, event: f64, zname: &str) {
     let t = raw.lookahead;
     let (Some([bottom, top, vsp]), Some(&z0), Some(&vz)) =
         (raw.slab, raw.pos.get(2), raw.vel.get(2))
@@ -682,7 +745,7 @@ fn heights(out: &mut String, raw: &RawCase, event: f64) {
         "start",
         "heights against time (3D)",
     );
-    axes(out, &m, HEIGHTS, "t", "z");
+    axes(out, &m, HEIGHTS, "t", zname);
     // The point is in the slab where bottom(t) ≤ z(t) ≤ top(t): sampled for the shading.
     let inside: Vec<f64> = (0..=400)
         .map(|k| t * k as f64 / 400.0)
@@ -820,6 +883,44 @@ mod tests {
             !svg.contains("heights against time"),
             "2D: no heights panel"
         );
+    }
+
+    /// A case at an end of the float range (a subnormal BUFF, or lengths near 2¹⁰⁰⁰) is
+    /// drawn as the same case at unit scale: the polygons, the path and the points land
+    /// on the same pixels as at scale 1 (the moves are exact for this case; the axes'
+    /// ticks differ, being round numbers), the axes say the power of two, and the
+    /// numbers written out are the case's own. Before, a subnormal case's map overflowed
+    /// and the main panel was empty.
+    #[test]
+    fn a_case_at_an_end_of_the_float_range_is_drawn() {
+        let case = square(0.0, 1.0, 0.25);
+        let picture_of = |raw: &RawCase| picture(raw, &pic("ends"));
+        let shapes = |svg: &str| -> Vec<String> {
+            svg.lines()
+                .filter(|l| l.starts_with("<path d=") || l.starts_with("<circle"))
+                .map(String::from)
+                .collect()
+        };
+        let unit = picture_of(&case);
+        assert!(unit.contains(">x</text>"), "unit scale: plain axes");
+        for e in [-1062, -1040, 1000] {
+            let moved = case.times_pow2(e);
+            let svg = picture_of(&moved);
+            assert_eq!(shapes(&svg), shapes(&unit), "at 2^{e}");
+            let j = drawing_scale(&moved);
+            assert!(
+                svg.contains(&format!("x · 2^{j}")),
+                "at 2^{e}: axes name the scale"
+            );
+            assert!((j + e).abs() <= 4, "at 2^{e}: drawn at 2^{j}");
+            assert!(
+                svg.contains(&format!("BUFF = {}", num(moved.buff))),
+                "at 2^{e}: BUFF in the case's own units"
+            );
+            for (name, x) in attributes(&svg) {
+                assert!(x.is_finite() && x.abs() <= 1e5, "at 2^{e}: {name} = {x}");
+            }
+        }
     }
 
     #[test]

@@ -36,10 +36,25 @@ score() {
   done
   echo "shards done: $done of $shards ($(wc -l < "$ev/list.txt") mutants in all)"
   echo "caught $caught, missed $missed, timeout $timeout, unviable $unviable"
-  if [ "$missed" -gt 0 ]; then
-    echo "missed (each is sorted in docs/mutation.md: equivalent, or killed by a later test):"
-    cat "$ev"/shard-*/missed.txt | sed 's/^/  /'
-  fi
+  # Each missed mutant is sorted in $ev/sorted.tsv (the arguments: docs/mutation.md):
+  # killed by a later test, equivalent, equivalent under the contract (speed only), or a
+  # survivor (rounding slack, less decisive). Timeouts count as caught (cargo-mutants'
+  # own rule: the mutant hangs the tests).
+  local missed_list=()
+  for d in "$ev"/shard-*/; do
+    [ -f "$d/commit" ] && missed_list+=("$d/missed.txt")
+  done
+  [ ${#missed_list[@]} -gt 0 ] || missed_list=(/dev/null)
+  awk -F'\t' -v caught=$((caught + timeout)) '
+    FNR == NR { if ($0 !~ /^#/) class[$1] = $2; next }
+    { c = ($0 in class) ? class[$0] : "unsorted"; n[c]++; if (c == "unsorted") u = u "\n  " $0 }
+    END {
+      killed = caught + n["killed"]
+      survivors = n["slack"] + n["decisive"] + n["unsorted"]
+      printf "missed: %d killed since by a test, %d equivalent, %d equivalent under the contract (speed only), %d rounding slack, %d less decisive, %d not yet sorted%s\n", n["killed"], n["equivalent"], n["contract"], n["slack"], n["decisive"], n["unsorted"], u
+      if (killed + survivors > 0)
+        printf "score: %d of %d non-equivalent mutants killed (%.1f %%); %.1f %% with the speed-only ones counted as survivors\n", killed, killed + survivors, 100 * killed / (killed + survivors), 100 * killed / (killed + survivors + n["contract"])
+    }' "$ev/sorted.tsv" "${missed_list[@]}"
 }
 
 if [ "${1:-}" = "--score" ]; then

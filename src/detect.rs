@@ -1447,6 +1447,25 @@ mod tests {
         }
     }
 
+    /// §II.I dot_nn_lin when vv = 0: (ww)·(aa + t·bb) is a line, its t² coefficient an
+    /// exact 0 (not a ball of radius ETA, which would make it a parabola with a second
+    /// root near |b|/ETA). Here the line is 2⁻⁷⁰·(5 − t), over a window reaching 2¹⁰⁰⁰:
+    /// the set where it is ≥ 0 is [0, 5], and no time near 2⁹⁹⁵, where the line is about
+    /// −2⁹²⁵, may be in either interval.
+    #[test]
+    fn a_line_stays_a_line_over_a_long_window() {
+        let k = 2f64.powi(-35);
+        let (ww, vv, aa, bb) = (v(k, 0.0), v(0.0, 0.0), v(5.0 * k, 0.0), v(-k, 0.0));
+        let t = 2f64.powi(1000);
+        let neg = dot_nn_lin(t, ww, vv, aa, bb, Sign::Neg);
+        let pos = dot_nn_lin(t, ww, vv, aa, bb, Sign::Pos);
+        assert!(
+            neg.lb <= 0.0 && neg.ub >= 5.0 && neg.ub < 5.0 + 1e-9,
+            "{neg:?}"
+        );
+        assert!(pos.is_empty(), "{pos:?}");
+    }
+
     #[test]
     fn dot_nn_lin_cases() {
         // A = 0, B = 0: f = C.

@@ -1762,6 +1762,74 @@ fn dot_nn_lin_encloses_the_exact_union() {
     });
 }
 
+/// §II.I edge_detect_simp_tri's last resort: cases where the middle of the outer sets'
+/// first meeting is not a certain yes, but the inner sets meet elsewhere, so only the
+/// last resort certifies the yes (without it the answer is `Unsure`). Found by a search
+/// over half-integer inputs (about one case in 2,000 reaches it); paper A in exact
+/// arithmetic says yes in each.
+#[test]
+fn edge_detect_simp_last_resort_certifies_yes() {
+    let v = Vect2::new;
+    let cases = [
+        (
+            1.0,
+            v(4.0, -1.5),
+            v(-1.5, -1.5),
+            v(-3.0, 0.0),
+            v(4.0, 2.5),
+            0.5,
+        ),
+        (
+            4.0,
+            v(-1.0, 4.0),
+            v(0.5, -1.0),
+            v(4.0, 4.0),
+            v(-1.0, -2.0),
+            1.0,
+        ),
+        (
+            1.0,
+            v(-4.0, 1.0),
+            v(-2.5, 2.5),
+            v(1.5, -2.5),
+            v(1.0, 3.0),
+            1.0,
+        ),
+        (
+            2.0,
+            v(0.0, -1.0),
+            v(3.5, -3.5),
+            v(-2.0, 0.0),
+            v(-0.5, 3.0),
+            0.5,
+        ),
+    ];
+    for (t, ww, vv, aa, bb, f) in cases {
+        let want = od::edge_detect_simp(&Exact, &q(t), &qv(ww), &qv(vv), &qv(aa), &qv(bb), &q(f))
+            .decided();
+        assert_eq!(
+            want, true,
+            "paper A, T {t} ww {ww:?} vv {vv:?} aa {aa:?} bb {bb:?}"
+        );
+        let e = BallV::exact;
+        let tri = edge_detect_simp_tri(
+            Ball::exact(0.0),
+            Ball::exact(t),
+            e(ww),
+            e(vv),
+            e(aa),
+            e(bb),
+            bb == Vect2::ZERO,
+            f,
+        );
+        assert_eq!(
+            tri,
+            Tri::Yes,
+            "T {t} ww {ww:?} vv {vv:?} aa {aa:?} bb {bb:?} F {f}"
+        );
+    }
+}
+
 /// §II.I edge_detect_simp: the three-valued form (exact balls) never contradicts the
 /// oracle, and the boolean is true whenever paper-exact is, on relative paths up to 10⁷
 /// edge lengths long meeting inequalities (1) exactly at their limits (λ = ±(1 + F),

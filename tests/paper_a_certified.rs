@@ -1807,8 +1807,8 @@ fn edge_detect_simp_last_resort_certifies_yes() {
     for (t, ww, vv, aa, bb, f) in cases {
         let want = od::edge_detect_simp(&Exact, &q(t), &qv(ww), &qv(vv), &qv(aa), &qv(bb), &q(f))
             .decided();
-        assert_eq!(
-            want, true,
+        assert!(
+            want,
             "paper A, T {t} ww {ww:?} vv {vv:?} aa {aa:?} bb {bb:?}"
         );
         let e = BallV::exact;

@@ -50,8 +50,8 @@ score() {
     { c = ($0 in class) ? class[$0] : "unsorted"; n[c]++; if (c == "unsorted") u = u "\n  " $0 }
     END {
       killed = caught + n["killed"]
-      survivors = n["slack"] + n["decisive"] + n["unsorted"]
-      printf "missed: %d killed since by a test, %d equivalent, %d equivalent under the contract (speed only), %d rounding slack, %d less decisive, %d not yet sorted%s\n", n["killed"], n["equivalent"], n["contract"], n["slack"], n["decisive"], n["unsorted"], u
+      survivors = n["slack"] + n["decisive"] + n["open"] + n["unsorted"]
+      printf "missed: %d killed since by a test, %d equivalent, %d equivalent under the contract (speed only), %d rounding slack, %d less decisive, %d open (may be unsound; no test yet), %d not yet sorted%s\n", n["killed"], n["equivalent"], n["contract"], n["slack"], n["decisive"], n["open"], n["unsorted"], u
       if (killed + survivors > 0)
         printf "score: %d of %d non-equivalent mutants killed (%.1f %%); %.1f %% with the speed-only ones counted as survivors\n", killed, killed + survivors, 100 * killed / (killed + survivors), 100 * killed / (killed + survivors + n["contract"])
     }' "$ev/sorted.tsv" "${missed_list[@]}"

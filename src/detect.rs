@@ -1934,6 +1934,68 @@ mod tests {
         }
     }
 
+    /// §II.I over a window whose ends are balls that overlap (ta, tb ∈ [0.75, 1.25]):
+    /// for ta = 1.25 and tb = 0.75 the window is empty, so no answer may be a certain
+    /// yes, even for a point sitting on the edge's midpoint all the time (every t meets
+    /// inequalities (1)). Looking for a certain time in an empty inner window (a mutation
+    /// survivor: `ilo <= ihi` → `>`) certified it.
+    #[test]
+    fn an_empty_inner_window_certifies_nothing() {
+        let e = BallV::exact;
+        let end = Ball { z: 1.0, r: 0.25 };
+        let tri = edge_detect_simp_tri(
+            end,
+            end,
+            e(v(0.0, 0.0)),
+            e(v(0.0, 0.0)),
+            e(v(1.0, 0.0)),
+            e(v(0.0, 0.0)),
+            true,
+            0.5,
+        );
+        assert_ne!(tri, Tri::Yes);
+        // the same scene over a window that is certainly not empty: a certain yes
+        let tri = edge_detect_simp_tri(
+            Ball::exact(0.5),
+            Ball::exact(1.5),
+            e(v(0.0, 0.0)),
+            e(v(0.0, 0.0)),
+            e(v(1.0, 0.0)),
+            e(v(0.0, 0.0)),
+            true,
+            0.5,
+        );
+        assert_eq!(tri, Tri::Yes);
+    }
+
+    /// §II.I with F = 0: the perpendicular conditions |w × a| ≤ 0 hold only at the one
+    /// instant t = 1 when the point crosses the edge's line (w = (−1 + t)·(0, 1) against
+    /// a = (2, 0)), inside the edge (w·a = 0), so paper A says yes, and the engine must
+    /// not settle the crossing's short meeting J as a certain no.
+    #[test]
+    fn a_one_point_crossing_is_not_settled_as_no() {
+        let e = BallV::exact;
+        let tri = edge_detect_simp_tri(
+            Ball::exact(0.0),
+            Ball::exact(2.0),
+            e(v(0.0, -1.0)),
+            e(v(0.0, 1.0)),
+            e(v(2.0, 0.0)),
+            e(v(0.0, 0.0)),
+            true,
+            0.0,
+        );
+        assert_ne!(tri, Tri::No);
+        assert!(edge_detect_simp(
+            2.0,
+            v(0.0, -1.0),
+            v(0.0, 1.0),
+            v(2.0, 0.0),
+            v(0.0, 0.0),
+            0.0
+        ));
+    }
+
     /// Exact checks of [`root_bounds`]' contract: for float a ≠ 0, b, c with real roots
     /// and any ball `disc` that holds b² − 4ac, each enclosure holds its exact root.
     mod root_bounds_contract {

@@ -1941,31 +1941,13 @@ mod tests {
     /// survivor: `ilo <= ihi` → `>`) certified it.
     #[test]
     fn an_empty_inner_window_certifies_nothing() {
-        let e = BallV::exact;
+        let (zero, a) = (BallV::exact(v(0.0, 0.0)), BallV::exact(v(1.0, 0.0)));
+        let over =
+            |ta: Ball, tb: Ball| edge_detect_simp_tri(ta, tb, zero, zero, a, zero, true, 0.5);
         let end = Ball { z: 1.0, r: 0.25 };
-        let tri = edge_detect_simp_tri(
-            end,
-            end,
-            e(v(0.0, 0.0)),
-            e(v(0.0, 0.0)),
-            e(v(1.0, 0.0)),
-            e(v(0.0, 0.0)),
-            true,
-            0.5,
-        );
-        assert_ne!(tri, Tri::Yes);
+        assert_ne!(over(end, end), Tri::Yes);
         // the same scene over a window that is certainly not empty: a certain yes
-        let tri = edge_detect_simp_tri(
-            Ball::exact(0.5),
-            Ball::exact(1.5),
-            e(v(0.0, 0.0)),
-            e(v(0.0, 0.0)),
-            e(v(1.0, 0.0)),
-            e(v(0.0, 0.0)),
-            true,
-            0.5,
-        );
-        assert_eq!(tri, Tri::Yes);
+        assert_eq!(over(Ball::exact(0.5), Ball::exact(1.5)), Tri::Yes);
     }
 
     /// §II.I with F = 0: the perpendicular conditions |w × a| ≤ 0 hold only at the one

@@ -1532,7 +1532,7 @@ mod tests {
         }
 
         proptest! {
-            #![proptest_config(ProptestConfig::with_cases(2048))]
+            #![proptest_config(ProptestConfig::with_cases(16384))]
 
             #[test]
             fn the_filter_drops_no_edge_paper_a_accepts(

@@ -290,7 +290,9 @@ pub fn svg(sc: &Scenario, objects: &[Object], conflicts: &[pipeline::Conflict]) 
         f64::NEG_INFINITY,
         f64::NEG_INFINITY,
     ];
-    for o in objects {
+    // each object once: its first copy on the Earth (Object::on_earth)
+    let objects: Vec<&Object> = objects.iter().filter(|o| o.copy == 0).collect();
+    for o in &objects {
         b[0] = b[0].min(o.aabb[0]);
         b[1] = b[1].min(o.aabb[1]);
         b[2] = b[2].max(o.aabb[2]);
@@ -316,7 +318,7 @@ pub fn svg(sc: &Scenario, objects: &[Object], conflicts: &[pipeline::Conflict]) 
     );
     // features take turns in the paper's colours (blue, green) and two more
     const PALETTE: [&str; 4] = ["blue", "green", "purple", "darkorange"];
-    for o in objects {
+    for o in &objects {
         let id = &sc.features[o.owner as usize].id;
         let colour = PALETTE[o.owner as usize % PALETTE.len()];
         match &o.motion {

@@ -11,11 +11,13 @@
 //!
 //! `--density-box`: the box keeps the paper's latitudes and stretches in longitude to
 //! `30° · N / 800` wide, so that 10× the objects cover 10× the area at the paper's density
-//! (800 objects per paper box). Past 10⁴ objects the box runs beyond ±180°: the engine's
-//! Mercator plane is the unrolled strip (longitudes are not wrapped), which keeps the
-//! density and the Mercator distortion of every object exactly as in the paper's box.
+//! (800 objects per paper box). Past 6,000 objects the box runs beyond 180° east, more
+//! than the Earth holds at that density: the scenario is then one of the unrolled strip
+//! (`"longitudes": "unrolled"`, [`Longitudes::Unrolled`]: longitudes are not wrapped),
+//! which keeps the density and the Mercator distortion of every object exactly as in the
+//! paper's box.
 
-use crate::scenario::{Area, Feature, Kind, Scenario, Track};
+use crate::scenario::{Area, Feature, Kind, Longitudes, Scenario, Track};
 use crate::sphere::{rhumb_destination, LonLat, RectDims};
 
 /// Paper B §VI.D: the generation box, degrees.
@@ -143,5 +145,14 @@ pub fn generate(n: usize, mix: Mix, density_box: bool, rng: &mut Bits<'_>) -> Sc
             }
         })
         .collect();
-    Scenario { features }
+    // past ±180° the box is the unrolled strip (see the module's documentation)
+    let longitudes = if bx.0 .1 > 180.0 {
+        Longitudes::Unrolled
+    } else {
+        Longitudes::Earth
+    };
+    Scenario {
+        features,
+        longitudes,
+    }
 }

@@ -65,11 +65,40 @@ pub struct Feature {
     pub extra: Map<String, Value>,
 }
 
+/// How a scenario's longitudes are read: the collection member `longitudes`
+/// (docs/scenario.md).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Longitudes {
+    /// `"earth"`, the default: the real Earth. A longitude is taken modulo 360° (190 is
+    /// the place −170 names), consecutive positions are joined the shorter way round (a
+    /// step from 179.5 to −179.5 crosses the antimeridian, 1° long), and objects meet
+    /// across ±180°.
+    #[default]
+    Earth,
+    /// `"unrolled"`: the unrolled Mercator strip that `generate --density-box` writes for
+    /// more objects than the Earth holds at the paper's density. Longitudes are not
+    /// wrapped (190 is 10° east of 180 and not the place −170 names), so the strip is as
+    /// long as the file needs; a step longer than 180° is an error there.
+    Unrolled,
+}
+
+impl Longitudes {
+    /// The member's value as written.
+    pub fn name(self) -> &'static str {
+        match self {
+            Longitudes::Earth => "earth",
+            Longitudes::Unrolled => "unrolled",
+        }
+    }
+}
+
 /// A whole scenario (valid features only, in file order).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Scenario {
     /// The features.
     pub features: Vec<Feature>,
+    /// How its longitudes were read (and are to be understood).
+    pub longitudes: Longitudes,
 }
 
 /// What [`parse`] read: the valid features, an error per rejected feature, and a
@@ -135,10 +164,23 @@ pub enum Problem {
     ZeroArea,
     /// `crs` names a system other than WGS 84 longitude/latitude.
     UnsupportedCrs(String),
-    /// Positions k−1 and k differ by more than 180° of longitude: the step crosses the
-    /// antimeridian, which this version does not model (it would be read the long way
-    /// round).
+    /// In a file of the unrolled plane ([`Longitudes::Unrolled`]), positions k−1 and k
+    /// differ by more than 180° of longitude (on the real Earth such a step is read the
+    /// shorter way, across the antimeridian).
     CrossesAntimeridian(usize),
+    /// Positions k−1 and k are exactly 180° of longitude apart: the rhumb line between
+    /// them could run east or west.
+    HalfTurnStep(usize),
+    /// The ring, its positions joined the shorter way round, comes back to its first
+    /// position a whole turn east or west: it circles a pole, and no ring on the
+    /// Mercator plane bounds it.
+    CirclesPole,
+    /// The ring's longitudes span a whole turn or more (the span, degrees): it would
+    /// overlap itself around the Earth.
+    SpansWholeTurn(f64),
+    /// The collection's `longitudes` member has a value other than `"earth"` or
+    /// `"unrolled"`.
+    UnknownLongitudes(String),
     /// A Polygon with interior rings (holes), which this version does not model (the
     /// hole would be read as part of the area).
     Holes(usize),
@@ -160,17 +202,31 @@ pub struct ScenarioError {
     pub problem: Problem,
 }
 
-/// A member kept but not read (a `properties` member the format does not define).
+/// Something read that the reader wants the user to know: a member kept but not read (a
+/// `properties` member the format does not define), or a longitude beyond ±180° read
+/// modulo 360°.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ScenarioWarning {
-    /// The 1-based line of the member.
+    /// The 1-based line of the member or position.
     pub line: usize,
     /// Index of the feature in the file.
     pub index: usize,
     /// `properties.id` when known.
     pub id: Option<String>,
-    /// JSON path of the member, e.g. `properties.colour`.
+    /// JSON path of the member or position, e.g. `properties.colour`.
     pub field: String,
+    /// What the warning is about.
+    pub what: Warning,
+}
+
+/// The kinds of [`ScenarioWarning`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Warning {
+    /// A member the format does not define, kept and written back, not read.
+    Kept,
+    /// A longitude beyond ±180° (as written) read on the real Earth as the place it
+    /// names (the value in (−180, 180]); the first such position of the feature.
+    Wrapped(f64, f64),
 }
 
 impl fmt::Display for ScenarioWarning {
@@ -179,11 +235,19 @@ impl fmt::Display for ScenarioWarning {
         if let Some(id) = &self.id {
             write!(f, " (id {id:?})")?;
         }
-        write!(
-            f,
-            ", {}: not defined by the scenario format; kept, not read",
-            self.field
-        )
+        match self.what {
+            Warning::Kept => write!(
+                f,
+                ", {}: not defined by the scenario format; kept, not read",
+                self.field
+            ),
+            Warning::Wrapped(lon, read) => write!(
+                f,
+                ", {}: longitude {lon} is beyond ±180°; read as {read}, the same place on \
+                 the Earth (a file of the unrolled plane says \"longitudes\": \"unrolled\")",
+                self.field
+            ),
+        }
     }
 }
 
@@ -239,10 +303,31 @@ impl fmt::Display for ScenarioError {
             Problem::ZeroArea => write!(f, "the vertices lie on one line; the area is empty"),
             Problem::CrossesAntimeridian(k) => write!(
                 f,
-                "positions {} and {k} are more than 180° of longitude apart: crossing the \
-                 antimeridian is not supported yet (it would be read the long way round)",
+                "positions {} and {k} are more than 180° of longitude apart, in a file of \
+                 the unrolled plane (\"longitudes\": \"unrolled\"), where longitudes do not \
+                 wrap; add positions between them",
                 k - 1
             ),
+            Problem::HalfTurnStep(k) => write!(
+                f,
+                "positions {} and {k} are exactly 180° of longitude apart: the line between \
+                 them could run east or west; add a position between them",
+                k - 1
+            ),
+            Problem::CirclesPole => write!(
+                f,
+                "the ring circles a pole (its positions, joined the shorter way round, end \
+                 a whole turn of longitude from where they start); no ring on the Mercator \
+                 plane bounds it"
+            ),
+            Problem::SpansWholeTurn(d) => write!(
+                f,
+                "the ring spans {d}° of longitude, a whole turn or more: it would overlap \
+                 itself around the Earth"
+            ),
+            Problem::UnknownLongitudes(v) => {
+                write!(f, "{v:?}: expected \"earth\" (the default) or \"unrolled\"")
+            }
             Problem::Holes(n) => write!(
                 f,
                 "{n} interior ring(s): holes are not supported yet (they would be read as \
@@ -298,13 +383,86 @@ fn checked(ctx: &Ctx, field: &str, k: usize, lon: f64, lat: f64) -> Result<LonLa
     Ok(LonLat::from_degrees(lon, lat))
 }
 
-/// The first step between consecutive positions longer than half a turn of longitude
-/// (in degrees as written, so the test is exact on the input).
-fn antimeridian_step(ctx: &Ctx, field: &str, pts: &[[f64; 2]]) -> Result<(), ScenarioError> {
-    match (1..pts.len()).find(|&k| (pts[k][0] - pts[k - 1][0]).abs() > 180.0) {
-        Some(k) => Err(ctx.err(format!("{field}[{k}]"), Problem::CrossesAntimeridian(k))),
-        None => Ok(()),
+/// A longitude (degrees) taken modulo 360° into (−180, 180], exactly: `%` is exact, and
+/// the one subtraction or addition of 360 that may follow is exact by Sterbenz's lemma
+/// (the remainder's magnitude is then within [180, 360)).
+pub fn normal_lon(lon: f64) -> f64 {
+    let r = lon % 360.0;
+    if r > 180.0 {
+        r - 360.0
+    } else if r <= -180.0 {
+        r + 360.0
+    } else {
+        r
     }
+}
+
+/// One line of positions (degrees as written: a ring, closing repeat included, or a
+/// track's waypoints) laid out on the plane of `mode`; also the index of the first
+/// position whose longitude lies beyond ±180° (it was wrapped, for a warning).
+///
+/// On the Earth the first longitude is taken modulo 360° into (−180, 180] and each next
+/// one is the value of its own longitude (mod 360°) nearest the previous one, so every
+/// step runs the shorter way round, across the antimeridian when that is shorter. The
+/// way is decided on the steps between the exact values in (−180, 180] (one rounding,
+/// which keeps the comparison with ±180 right except at a tie); a step of exactly 180°
+/// could run either way and is an error. The longitude written is then ℓ + 360°·m for
+/// the exact ℓ ∈ (−180, 180] and a whole m counted along the line: one rounding, none
+/// accumulated. A ring must come back to its first position with m = 0 (else it
+/// circles a pole) and span less than a turn. On the unrolled plane the longitudes are
+/// kept as written, and a step longer than 180° is an error.
+fn lay_out(
+    ctx: &Ctx,
+    field: &str,
+    pts: &[[f64; 2]],
+    mode: Longitudes,
+    ring: bool,
+) -> Result<(Vec<[f64; 2]>, Option<usize>), ScenarioError> {
+    let at = |k: usize, p: Problem| ctx.err(format!("{field}[{k}]"), p);
+    if mode == Longitudes::Unrolled {
+        return match (1..pts.len()).find(|&k| (pts[k][0] - pts[k - 1][0]).abs() > 180.0) {
+            Some(k) => Err(at(k, Problem::CrossesAntimeridian(k))),
+            None => Ok((pts.to_vec(), None)),
+        };
+    }
+    let mut out = Vec::with_capacity(pts.len());
+    let mut wrapped = None;
+    let (mut prev, mut turns) = (0.0, 0.0);
+    for (k, q) in pts.iter().enumerate() {
+        let l = normal_lon(q[0]);
+        if wrapped.is_none() && q[0].abs() > 180.0 {
+            wrapped = Some(k);
+        }
+        if k > 0 {
+            let step = l - prev;
+            if step.abs() == 180.0 {
+                return Err(at(k, Problem::HalfTurnStep(k)));
+            }
+            if step > 180.0 {
+                turns -= 1.0;
+            } else if step < -180.0 {
+                turns += 1.0;
+            }
+        }
+        prev = l;
+        out.push([if turns == 0.0 { l } else { l + 360.0 * turns }, q[1]]);
+    }
+    if ring && pts.len() > 1 {
+        let (first, last) = (pts[0], pts[pts.len() - 1]);
+        let closed = normal_lon(first[0]) == normal_lon(last[0]) && first[1] == last[1];
+        if closed && turns != 0.0 {
+            return Err(ctx.err(field, Problem::CirclesPole));
+        }
+        let (lo, hi) = out
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+                (lo.min(p[0]), hi.max(p[0]))
+            });
+        if hi - lo >= 360.0 {
+            return Err(ctx.err(field, Problem::SpansWholeTurn(hi - lo)));
+        }
+    }
+    Ok((out, wrapped))
 }
 
 /// The spec's area rules on a ring already read: closed, ≥ 3 distinct vertices, simple
@@ -418,7 +576,7 @@ fn track_from(
 
 /// The members each level may have. GeoJSON (RFC 7946) defines `type`, `bbox` and a
 /// Feature's `id`; `name` and `crs` are what GDAL/QGIS write on a collection.
-const COLLECTION_KEYS: [&str; 5] = ["type", "features", "bbox", "name", "crs"];
+const COLLECTION_KEYS: [&str; 6] = ["type", "features", "bbox", "name", "crs", "longitudes"];
 const FEATURE_KEYS: [&str; 5] = ["type", "properties", "geometry", "id", "bbox"];
 const GEOMETRY_KEYS: [&str; 3] = ["type", "coordinates", "bbox"];
 /// The properties this format defines, and which kind each belongs to.
@@ -442,6 +600,8 @@ const WGS84_NAMES: [&str; 4] = [
 /// line.
 struct Reader<'t> {
     lines: json::Lines,
+    /// The collection's `longitudes`.
+    longitudes: Longitudes,
     _text: std::marker::PhantomData<&'t str>,
 }
 
@@ -500,7 +660,14 @@ impl Reader<'_> {
         }
     }
 
-    fn positions(&self, ctx: &Ctx, node: &Node, field: &str) -> Result<Vec<LonLat>, ScenarioError> {
+    fn positions(
+        &self,
+        ctx: &Ctx,
+        node: &Node,
+        field: &str,
+        ring: bool,
+        warnings: &mut Vec<ScenarioWarning>,
+    ) -> Result<Vec<LonLat>, ScenarioError> {
         let arr = node.elements().ok_or_else(|| {
             self.at(
                 ctx,
@@ -537,13 +704,29 @@ impl Reader<'_> {
             .collect::<Result<Vec<_>, _>>()
             .and_then(|read| {
                 let raw: Vec<[f64; 2]> = read.iter().map(|&(_, c)| c).collect();
-                antimeridian_step(ctx, field, &raw).map_err(|mut e| {
-                    if let Problem::CrossesAntimeridian(k) = e.problem {
-                        e.line = self.line(arr[k].at);
-                    }
-                    e
-                })?;
-                Ok(read.into_iter().map(|(q, _)| q).collect())
+                let (laid, wrapped) =
+                    lay_out(ctx, field, &raw, self.longitudes, ring).map_err(|mut e| {
+                        e.line = match e.problem {
+                            Problem::CrossesAntimeridian(k) | Problem::HalfTurnStep(k) => {
+                                self.line(arr[k].at)
+                            }
+                            _ => self.line(node.at),
+                        };
+                        e
+                    })?;
+                if let Some(k) = wrapped {
+                    warnings.push(ScenarioWarning {
+                        line: self.lines.line(arr[k].at),
+                        index: ctx.index,
+                        id: ctx.id.map(str::to_owned),
+                        field: format!("{field}[{k}]"),
+                        what: Warning::Wrapped(raw[k][0], normal_lon(raw[k][0])),
+                    });
+                }
+                Ok(laid
+                    .into_iter()
+                    .map(|[lon, lat]| LonLat::from_degrees(lon, lat))
+                    .collect())
             })
     }
 
@@ -622,6 +805,7 @@ impl Reader<'_> {
                 index: ctx.index,
                 id: ctx.id.map(str::to_owned),
                 field,
+                what: Warning::Kept,
             });
         }
         let p = |k: &str| props.iter().find(|m| m.key == k).map(|m| &m.value);
@@ -643,7 +827,7 @@ impl Reader<'_> {
                     Problem::Holes(holes.len()),
                 ));
             }
-            let ring = self.positions(ctx, ring_v, "geometry.coordinates[0]")?;
+            let ring = self.positions(ctx, ring_v, "geometry.coordinates[0]", true, warnings)?;
             let tf = self.number(ctx, p("tf"), "properties.tf")?;
             let line_ctx = Ctx {
                 line: self.line(ring_v.at),
@@ -657,7 +841,7 @@ impl Reader<'_> {
             })?)
         } else {
             let coords = self.geometry(ctx, f, "LineString")?;
-            let waypoints = self.positions(ctx, coords, "geometry.coordinates")?;
+            let waypoints = self.positions(ctx, coords, "geometry.coordinates", false, warnings)?;
             let speed = self.number(ctx, p("speed_kn"), "properties.speed_kn")?;
             let dists = [
                 self.number(ctx, p("front_nm"), "properties.front_nm")?,
@@ -705,6 +889,7 @@ mod fast {
         pub bbox: Option<IgnoredAny>,
         #[allow(dead_code)]
         pub name: Option<IgnoredAny>,
+        pub longitudes: Option<String>,
     }
     #[derive(serde::Deserialize)]
     #[serde(deny_unknown_fields)]
@@ -746,7 +931,15 @@ pub fn fast_parse(text: &str) -> Option<Read> {
     if fc.ty != "FeatureCollection" {
         return None;
     }
-    let mut out = Scenario::default();
+    let longitudes = match fc.longitudes.as_deref() {
+        None | Some("earth") => Longitudes::Earth,
+        Some("unrolled") => Longitudes::Unrolled,
+        Some(_) => return None,
+    };
+    let mut out = Scenario {
+        features: Vec::new(),
+        longitudes,
+    };
     let mut seen = std::collections::HashSet::with_capacity(fc.features.len());
     for (index, f) in fc.features.into_iter().enumerate() {
         let p = f.properties;
@@ -758,11 +951,24 @@ pub fn fast_parse(text: &str) -> Option<Read> {
             id: Some(&p.id),
             line: None,
         };
-        let pts = |field: &str, v: &[[f64; 2]]| -> Result<Vec<LonLat>, ScenarioError> {
-            v.iter()
-                .enumerate()
-                .map(|(k, q)| checked(&ctx, field, k, q[0], q[1]))
-                .collect()
+        // None (to the general path) for a warning: a longitude wrapped
+        let pts = |field: &str,
+                   v: &[[f64; 2]],
+                   ring: bool|
+         -> Option<Result<Vec<LonLat>, ScenarioError>> {
+            for (k, q) in v.iter().enumerate() {
+                if let Err(e) = checked(&ctx, field, k, q[0], q[1]) {
+                    return Some(Err(e));
+                }
+            }
+            match lay_out(&ctx, field, v, longitudes, ring) {
+                Ok((_, Some(_))) => None,
+                Ok((laid, None)) => Some(Ok(laid
+                    .into_iter()
+                    .map(|[lon, lat]| LonLat::from_degrees(lon, lat))
+                    .collect())),
+                Err(e) => Some(Err(e)),
+            }
         };
         let kind = match (p.kind.as_str(), &f.geometry) {
             ("area", fast::Geometry::Polygon(rings))
@@ -773,14 +979,12 @@ pub fn fast_parse(text: &str) -> Option<Read> {
                     && p.side_nm.is_none() =>
             {
                 let r = rings.first()?;
-                antimeridian_step(&ctx, "geometry.coordinates[0]", r).ok()?;
-                pts("geometry.coordinates[0]", r)
+                pts("geometry.coordinates[0]", r, true)?
                     .and_then(|ring| area_from(&ctx, ring, p.t0, p.tf))
                     .map(Kind::Area)
             }
             ("track", fast::Geometry::LineString(line)) if p.tf.is_none() => {
-                antimeridian_step(&ctx, "geometry.coordinates", line).ok()?;
-                pts("geometry.coordinates", line)
+                pts("geometry.coordinates", line, false)?
                     .and_then(|w| {
                         track_from(
                             &ctx,
@@ -820,8 +1024,9 @@ pub fn parse(text: &str) -> Result<Read, ScenarioError> {
 /// [`parse`]'s general path over a tree that knows where each value starts: any JSON,
 /// every member checked by name (public for the differential fuzz target).
 pub fn parse_general(text: &str) -> Result<Read, ScenarioError> {
-    let r = Reader {
+    let mut r = Reader {
         lines: json::Lines::new(text),
+        longitudes: Longitudes::Earth,
         _text: std::marker::PhantomData,
     };
     let root = json::parse(text).map_err(|e| {
@@ -885,6 +1090,26 @@ pub fn parse_general(text: &str) -> Result<Read, ScenarioError> {
             }
         }
     }
+    if let Some(l) = root.get("longitudes") {
+        r.longitudes = match l.as_str() {
+            Some("earth") => Longitudes::Earth,
+            Some("unrolled") => Longitudes::Unrolled,
+            Some(v) => {
+                return Err(file_err(
+                    r.line(l.at),
+                    "longitudes",
+                    Problem::UnknownLongitudes(v.to_owned()),
+                ))
+            }
+            None => {
+                return Err(file_err(
+                    r.line(l.at),
+                    "longitudes",
+                    Problem::WrongType("a string, \"earth\" or \"unrolled\""),
+                ))
+            }
+        };
+    }
     let feats = root
         .get("features")
         .ok_or_else(|| file_err(r.line(root.at), "features", Problem::Missing))?;
@@ -892,6 +1117,7 @@ pub fn parse_general(text: &str) -> Result<Read, ScenarioError> {
         .elements()
         .ok_or_else(|| file_err(r.line(feats.at), "features", Problem::WrongType("an array")))?;
     let mut out = Read::default();
+    out.scenario.longitudes = r.longitudes;
     let mut seen = std::collections::HashSet::new();
     for (index, f) in feats.iter().enumerate() {
         let props_node = f.get("properties");
@@ -979,9 +1205,12 @@ pub fn parse_general(text: &str) -> Result<Read, ScenarioError> {
 }
 
 /// Paper B Sections III and V: the scenario's objects in the Mercator plane, one per area
-/// and one per track leg, `owner` = feature index in `scenario.features`.
+/// and one per track leg, `owner` = feature index in `scenario.features`. On the Earth an
+/// object that reaches past ±180° comes with its copies a turn away
+/// ([`Object::on_earth`]), so that stage 1 finds its meetings across the antimeridian.
 pub fn objects(scenario: &Scenario) -> Vec<Object> {
     use rayon::prelude::*;
+    let earth = scenario.longitudes == Longitudes::Earth;
     scenario
         .features
         .par_iter()
@@ -1000,14 +1229,25 @@ pub fn objects(scenario: &Scenario) -> Vec<Object> {
                     .map(|leg| Object::leg(owner, leg))
                     .collect(),
             };
-            v
+            v.into_iter().flat_map(move |o| {
+                if earth {
+                    o.on_earth()
+                } else {
+                    vec![o.on_plane()]
+                }
+            })
         })
         .collect()
 }
 
-fn pos(p: LonLat) -> Value {
+/// A position as written: on the Earth its longitude in (−180, 180] (RFC 7946), on the
+/// unrolled plane as it lies there.
+fn pos(p: LonLat, mode: Longitudes) -> Value {
     let (lon, lat) = p.to_degrees();
-    json!([lon, lat])
+    match mode {
+        Longitudes::Earth => json!([normal_lon(lon), lat]),
+        Longitudes::Unrolled => json!([lon, lat]),
+    }
 }
 
 /// The kept members after the defined ones.
@@ -1026,7 +1266,11 @@ pub fn to_geojson(scenario: &Scenario) -> Value {
         .iter()
         .map(|f| match &f.kind {
             Kind::Area(a) => {
-                let mut ring: Vec<Value> = a.ring.iter().map(|&p| pos(p)).collect();
+                let mut ring: Vec<Value> = a
+                    .ring
+                    .iter()
+                    .map(|&p| pos(p, scenario.longitudes))
+                    .collect();
                 if let Some(first) = ring.first().cloned() {
                     ring.push(first);
                 }
@@ -1042,7 +1286,11 @@ pub fn to_geojson(scenario: &Scenario) -> Value {
                        "geometry": {"type": "Polygon", "coordinates": [ring]}})
             }
             Kind::Track(t) => {
-                let line: Vec<Value> = t.waypoints.iter().map(|&p| pos(p)).collect();
+                let line: Vec<Value> = t
+                    .waypoints
+                    .iter()
+                    .map(|&p| pos(p, scenario.longitudes))
+                    .collect();
                 let mut props = json!({"id": f.id, "kind": "track", "speed_kn": t.speed_kn,
                                        "front_nm": t.dims.front, "back_nm": t.dims.back,
                                        "side_nm": t.dims.side, "t0": t.t0});
@@ -1052,7 +1300,11 @@ pub fn to_geojson(scenario: &Scenario) -> Value {
             }
         })
         .collect();
-    json!({"type": "FeatureCollection", "features": feats})
+    match scenario.longitudes {
+        Longitudes::Earth => json!({"type": "FeatureCollection", "features": feats}),
+        Longitudes::Unrolled => json!({"type": "FeatureCollection", "longitudes": "unrolled",
+                                       "features": feats}),
+    }
 }
 
 #[cfg(test)]
@@ -1362,15 +1614,33 @@ mod tests {
         assert_eq!(r.errors[0].line, Some(3));
     }
 
-    /// What this version cannot model yet is an error, never a silent misreading: a step
-    /// across the antimeridian (read the long way round), holes.
+    /// What cannot be read one way only is an error, never a silent misreading: a step of
+    /// exactly 180° of longitude (east or west?), a ring that circles a pole or spans a
+    /// whole turn, a step longer than 180° on the unrolled plane (where longitudes do not
+    /// wrap), holes (not modelled yet).
     #[test]
-    fn what_is_not_modelled_is_refused() {
+    fn what_is_ambiguous_or_not_modelled_is_refused() {
         let cases = [
             (
-                TRACK.replace("[[0,0],[1,1]]", "[[179.5,0],[-179.5,0]]"),
+                TRACK.replace("[[0,0],[1,1]]", "[[179.5,0],[-0.5,1]]"),
                 "geometry.coordinates[1]",
-                "positions 0 and 1 are more than 180° of longitude apart",
+                "positions 0 and 1 are exactly 180° of longitude apart",
+            ),
+            (
+                AREA.replace(
+                    "[[[0,0],[1,0],[1,1],[0,0]]]",
+                    "[[[0,60],[120,60],[-120,60],[0,60]]]",
+                ),
+                "geometry.coordinates[0]",
+                "the ring circles a pole",
+            ),
+            (
+                AREA.replace(
+                    "[[[0,0],[1,0],[1,1],[0,0]]]",
+                    "[[[0,0],[170,0],[340,0],[20,1],[-150,2],[40,3],[0,3],[0,0]]]",
+                ),
+                "geometry.coordinates[0]",
+                "spans 380° of longitude, a whole turn or more",
             ),
             (
                 AREA.replace(
@@ -1389,5 +1659,88 @@ mod tests {
             assert_eq!((e.line, e.field.as_str()), (Some(3), field), "{bad}");
             assert!(e.to_string().contains(message), "{e}");
         }
+        // the unrolled plane: a long step is an error, the file's other features are read
+        let unrolled = |feats: &[&str]| {
+            file(feats).replacen(
+                "\"type\":\"FeatureCollection\",",
+                "\"type\":\"FeatureCollection\",\"longitudes\":\"unrolled\",",
+                1,
+            )
+        };
+        let long = TRACK
+            .replace("[[0,0],[1,1]]", "[[179.5,0],[-179.5,0]]")
+            .replace(r#""id":"t""#, r#""id":"x""#);
+        let r = parse(&unrolled(&[AREA, &long])).expect("a collection");
+        assert_eq!(r.scenario.longitudes, Longitudes::Unrolled);
+        assert_eq!(r.scenario.features.len(), 1);
+        assert!(
+            r.errors[0]
+                .to_string()
+                .contains("more than 180° of longitude apart"),
+            "{}",
+            r.errors[0]
+        );
+        // an unknown value is a file error naming the member
+        let bad = file(&[AREA]).replacen(
+            "\"type\":\"FeatureCollection\",",
+            "\"type\":\"FeatureCollection\",\"longitudes\":\"flat\",",
+            1,
+        );
+        let e = parse(&bad).expect_err("a file error");
+        assert_eq!(e.field, "longitudes");
+        assert!(
+            e.to_string()
+                .contains("\"earth\" (the default) or \"unrolled\""),
+            "{e}"
+        );
+    }
+
+    /// On the Earth a step across the antimeridian is read the shorter way (1°, not 359°),
+    /// east-bound or west-bound; a longitude beyond ±180° names the same place as its
+    /// value in (−180, 180], with a warning naming the position; and the scenario is
+    /// written back with longitudes in (−180, 180] that read the same.
+    #[test]
+    fn longitudes_on_the_earth() {
+        let track = |coords: &str| {
+            TRACK
+                .replace("[[0,0],[1,1]]", coords)
+                .replace(r#""id":"t""#, r#""id":"x""#)
+        };
+        for (coords, lons) in [
+            ("[[179.5,0],[-179.5,0]]", [179.5, 180.5]),
+            ("[[-179.5,0],[179.5,0]]", [-179.5, -180.5]),
+            ("[[-180,0],[179,0]]", [180.0, 179.0]),
+            ("[[540.5,0],[-178.5,0]]", [-179.5, -178.5]),
+        ] {
+            let r = parse(&file(&[&track(coords)])).expect("a collection");
+            assert!(r.errors.is_empty(), "{coords}: {:?}", r.errors);
+            let Kind::Track(t) = &r.scenario.features[0].kind else {
+                panic!("a track")
+            };
+            let got: Vec<f64> = t.waypoints.iter().map(|p| p.to_degrees().0).collect();
+            assert_eq!(got, lons, "{coords}");
+            // the leg is 1° of longitude long, on the equator
+            let legs = sphere::track_legs(&t.waypoints, t.speed_kn, t.t0, t.dims);
+            assert_eq!(legs.len(), 1, "{coords}: {:?}", t.waypoints);
+            let nm = legs[0].length_nm;
+            assert!((nm - 60.04).abs() < 0.01, "{coords}: {nm} nm");
+        }
+        let r = parse(&file(&[&track("[[190,0],[191,1]]")])).expect("a collection");
+        assert_eq!(r.warnings.len(), 1, "{:?}", r.warnings);
+        let w = r.warnings[0].to_string();
+        assert!(
+            w.contains("geometry.coordinates[0]: longitude 190 is beyond ±180°; read as -170"),
+            "{w}"
+        );
+        let Kind::Track(t) = &r.scenario.features[0].kind else {
+            panic!("a track")
+        };
+        assert_eq!(t.waypoints[0].to_degrees().0, -170.0);
+        // written back in (−180, 180], read back the same
+        let across = parse(&file(&[&track("[[179.5,0],[-179.5,0]]")])).expect("a collection");
+        let text = to_geojson(&across.scenario).to_string();
+        assert!(text.contains("[-179.5,0.0]"), "{text}");
+        let again = parse(&text).expect("a collection");
+        assert_eq!(again.scenario, across.scenario);
     }
 }

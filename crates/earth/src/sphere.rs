@@ -258,6 +258,24 @@ impl Leg {
         }
     }
 
+    /// The same leg moved `dx` radians east (a whole turn, 2π·k, for the copies of an
+    /// object on the Earth's unrolled plane): its bearing, length, times and rectangle are
+    /// those of `self`, which depend on longitude differences only; only the ends' (and
+    /// so every point's) longitudes move, each by one rounding of `dx`'s sum.
+    pub fn shifted(&self, dx: f64) -> Leg {
+        let mv = |p: LonLat| LonLat {
+            lon: p.lon + dx,
+            lat: p.lat,
+        };
+        let (start, end) = (mv(self.start), mv(self.end));
+        Leg {
+            start,
+            end,
+            merc: [mercator(start), mercator(end)],
+            ..self.clone()
+        }
+    }
+
     /// Paper B eqs 23–24: the reference point `c_s(t)` (t clamped to the leg's life).
     pub fn reference_at(&self, t: f64) -> LonLat {
         self.reference_with_psi(t).0

@@ -100,6 +100,7 @@ mod tests {
                 assert!((3..=10).contains(&ar.ring.len()));
                 let o = polyguard_earth::scenario::objects(&Scenario {
                     features: vec![f.clone()],
+                    longitudes: a.longitudes,
                 });
                 // sorted angles with gaps ≤ π: a simple (star-shaped) ring
                 assert!(polyguard_earth::conflict::geom::signed_area(&o[0].sweep) > 0.0);

@@ -276,9 +276,102 @@ pub fn bbox(points: &[Merc]) -> [f64; 4] {
     b
 }
 
+/// Sutherland–Hodgman against one half-plane, x ≤ c (`west`) or x ≥ c: the part of the
+/// ring on that side, crossings placed on x = c exactly (their y one interpolation from
+/// exact). For a ring that crosses the line more than twice (a non-convex region) the
+/// parts are joined by zero-width stretches along the line.
+fn half_plane(ring: &[Merc], c: f64, west: bool) -> Vec<Merc> {
+    let inside = |p: Merc| if west { p[0] <= c } else { p[0] >= c };
+    let mut out = Vec::with_capacity(ring.len() + 2);
+    for (j, &p) in ring.iter().enumerate() {
+        let q = ring[(j + 1) % ring.len()];
+        if inside(p) {
+            out.push(p);
+        }
+        if (p[0] < c && q[0] > c) || (p[0] > c && q[0] < c) {
+            let s = (c - p[0]) / (q[0] - p[0]);
+            out.push([c, p[1] + s * (q[1] - p[1])]);
+        }
+    }
+    out
+}
+
+/// The rings of a region on the Earth, each within the strip [−π, π] of longitude, as
+/// RFC 7946 §3.1.9 asks of a geometry that crosses the antimeridian ("cut in two"). A
+/// ring is moved by whole turns (2π) so that its least x lies in [−π, π); a part beyond
+/// x = π is cut off along that line ([`half_plane`]) and moved a turn west. Exact
+/// repeats (a pair found in two copies, within [`super::stage1::WRAP_MARGIN`] of ±π) are
+/// dropped.
+pub fn earth_rings(rings: Vec<Vec<Merc>>) -> Vec<Vec<Merc>> {
+    use std::f64::consts::{PI, TAU};
+    let mut out: Vec<Vec<Merc>> = Vec::with_capacity(rings.len());
+    for ring in rings {
+        let b = bbox(&ring);
+        if !(b[0].is_finite() && b[2].is_finite()) {
+            out.push(ring);
+            continue;
+        }
+        let k = ((b[0] + PI) / TAU).floor();
+        let dx = -TAU * k;
+        let ring: Vec<Merc> = if k == 0.0 {
+            ring
+        } else {
+            ring.iter().map(|p| [p[0] + dx, p[1]]).collect()
+        };
+        if b[2] + dx <= PI {
+            out.push(ring);
+            continue;
+        }
+        for (west, shift) in [(true, 0.0), (false, -TAU)] {
+            let r: Vec<Merc> = half_plane(&ring, PI, west)
+                .into_iter()
+                .map(|p| [p[0] + shift, p[1]])
+                .collect();
+            if r.len() >= 3 && signed_area(&r) != 0.0 {
+                out.push(r);
+            }
+        }
+    }
+    let mut kept: Vec<Vec<Merc>> = Vec::with_capacity(out.len());
+    for r in out {
+        if !kept.contains(&r) {
+            kept.push(r);
+        }
+    }
+    kept
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A region across the antimeridian comes out as two rings within [−π, π] whose areas
+    /// add up to the region's; one found in a copy a turn away comes out once.
+    #[test]
+    fn regions_on_the_earth_are_cut_at_the_antimeridian() {
+        use std::f64::consts::{PI, TAU};
+        let sq = |x0: f64| vec![[x0, 0.0], [x0 + 0.2, 0.0], [x0 + 0.2, 0.1], [x0, 0.1]];
+        let across = sq(PI - 0.05);
+        let out = earth_rings(vec![across.clone(), sq(PI - 0.05 - TAU)]);
+        assert_eq!(out.len(), 2, "{out:?}");
+        let total: f64 = out.iter().map(|r| signed_area(r)).sum();
+        assert!(
+            (total - signed_area(&across)).abs() < 1e-12 * signed_area(&across),
+            "{total} {} {out:?}",
+            signed_area(&across)
+        );
+        for r in &out {
+            let b = bbox(r);
+            assert!(b[0] >= -PI && b[2] <= PI, "{r:?}");
+            assert!(signed_area(r) > 0.0);
+        }
+        // within the strip: unchanged
+        let inside = sq(1.0);
+        assert_eq!(earth_rings(vec![inside.clone()]), vec![inside]);
+        // a turn east: moved back
+        let moved = earth_rings(vec![sq(1.0 + TAU)]);
+        assert!((moved[0][0][0] - 1.0).abs() < 1e-15, "{moved:?}");
+    }
 
     #[test]
     fn hull_of_square_with_inner_point() {

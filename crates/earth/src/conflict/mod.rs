@@ -66,6 +66,13 @@ pub struct Object {
     pub paper_sweep: Vec<Merc>,
     /// For legs, stage 3's per-object constants (eqs 11–13), computed once.
     pub projection: Option<stage3::Projection>,
+    /// On the Earth ([`Object::on_earth`]): which of the object's copies this is, 0 for
+    /// the first (the one drawn); always 0 on a plane that does not wrap.
+    pub copy: u16,
+    /// Whether the plane wraps (x is longitude on the Earth, 2π one turn): stage 1 then
+    /// keeps each pair in one copy only ([`stage1::wanted`]). True for the constructors'
+    /// objects; [`Object::on_plane`] clears it.
+    pub earth: bool,
 }
 
 impl Object {
@@ -83,6 +90,8 @@ impl Object {
             aabb,
             paper_sweep: Vec::new(),
             projection: None,
+            copy: 0,
+            earth: true,
         }
     }
 
@@ -117,7 +126,62 @@ impl Object {
             aabb,
             paper_sweep,
             projection,
+            copy: 0,
+            earth: true,
         }
+    }
+
+    /// The object on a plane that does not wrap (the unrolled strip of
+    /// `generate --density-box`): x is a coordinate like any other.
+    pub fn on_plane(mut self) -> Object {
+        self.earth = false;
+        self
+    }
+
+    /// The object on the Earth, whose Mercator plane wraps every 2π of x (one turn of
+    /// longitude): its copies moved by whole turns, one for each k whose copy, moved by
+    /// −2π·k, reaches into the strip [−π, π] (with a margin of [`stage1::WRAP_MARGIN`]).
+    /// Every place the object covers lies in that strip in one of its copies; so when two
+    /// objects meet somewhere on the Earth, the two copies that put the place in the
+    /// strip meet there on the plane, and stage 1 finds them. An object inside (−π, π)
+    /// is its only copy, unchanged.
+    pub fn on_earth(self) -> Vec<Object> {
+        use std::f64::consts::{PI, TAU};
+        let reach = PI + stage1::WRAP_MARGIN;
+        let (lo, hi) = (self.aabb[0], self.aabb[2]);
+        if !(lo.is_finite() && hi.is_finite()) || (lo >= -PI && hi <= PI) {
+            return vec![self];
+        }
+        // k with lo − 2πk ≤ reach and hi − 2πk ≥ −reach
+        let k_lo = ((lo - reach) / TAU).ceil() as i64;
+        let k_hi = ((hi + reach) / TAU).floor() as i64;
+        let mut out = Vec::with_capacity((k_hi - k_lo + 1).max(0) as usize);
+        for k in k_lo..=k_hi {
+            let dx = -TAU * k as f64;
+            let mut o = if k == 0 {
+                self.clone()
+            } else {
+                self.shifted(dx)
+            };
+            o.copy = out.len() as u16;
+            out.push(o);
+        }
+        out
+    }
+
+    /// The object moved `dx` east on the plane (rebuilt from its moved geometry).
+    fn shifted(&self, dx: f64) -> Object {
+        let mut o = match &self.motion {
+            Motion::Static { ring, .. } => Object::area(
+                self.owner,
+                ring.iter().map(|p| [p[0] + dx, p[1]]).collect(),
+                self.t0,
+                self.t1,
+            ),
+            Motion::Moving(leg) => Object::leg(self.owner, leg.shifted(dx)),
+        };
+        o.earth = self.earth;
+        o
     }
 
     /// Is the object moving?

@@ -106,7 +106,16 @@ pub fn run(objects: &[Object], opts: Options) -> (Vec<Conflict>, Stats) {
             stage4::Method::AreaOverlap => {}
         }
     }
-    (merge(objects, intervals), stats)
+    let mut conflicts = merge(objects, intervals);
+    // on the Earth, every region within [−π, π] of longitude, cut at the antimeridian
+    if objects.iter().any(|o| o.earth) {
+        for c in &mut conflicts {
+            if !c.rings.is_empty() {
+                c.rings = super::geom::earth_rings(std::mem::take(&mut c.rings));
+            }
+        }
+    }
+    (conflicts, stats)
 }
 
 /// Merges object-pair intervals into feature-pair conflicts (legs of multi-waypoint

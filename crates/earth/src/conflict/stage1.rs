@@ -24,6 +24,31 @@ impl Candidates {
 
 type Entry = GeomWithData<Rectangle<[f64; 2]>, u32>;
 
+/// The margin (radians of x) by which an object's copies on the Earth reach past the
+/// strip [−π, π] ([`Object::on_earth`]) and by which [`wanted`] widens it: far above
+/// the rounding of a copy's coordinates (a few units of 2⁻⁵¹, from adding 2π·k), far
+/// below any geometry (10⁻⁹ rad is 6 mm on the Earth).
+pub const WRAP_MARGIN: f64 = 1e-9;
+
+/// Whether stage 1 keeps a pair whose boxes meet: different features, overlapping lives,
+/// and on the Earth the one copy of the pair whose boxes' common x-range starts in the
+/// strip [−π, π) (widened by [`WRAP_MARGIN`]). The copies of a pair moved together by a
+/// whole turn have common ranges 2π apart, so the widened strip holds the start of at
+/// least one (rounding moves them by far less than the margin) and of two only when it
+/// falls within the margin of ±π; [`Object::on_earth`] made every copy whose range
+/// reaches the strip, so the one kept exists.
+pub fn wanted(a: &Object, b: &Object) -> bool {
+    use std::f64::consts::PI;
+    if a.owner == b.owner || a.t0.max(b.t0) > a.t1.min(b.t1) {
+        return false;
+    }
+    if !(a.earth && b.earth) {
+        return true;
+    }
+    let start = a.aabb[0].max(b.aabb[0]);
+    (-PI - WRAP_MARGIN..PI + WRAP_MARGIN).contains(&start) || !start.is_finite()
+}
+
 /// Slabs per worker thread: a few more joins than threads balance the load.
 const SLABS_PER_THREAD: usize = 2;
 /// Below this many objects per slab one tree is cheaper than the extra joins.
@@ -31,7 +56,8 @@ const MIN_SLAB_OBJECTS: usize = 4096;
 
 /// Paper B Algorithm 2: bulk-load every object's AABB (eqs 3–6) into R-trees, find every
 /// pair of meeting AABBs, keep pairs whose time windows overlap (`max(t0) ≤ min(tf)`) and
-/// that do not belong to the same feature (legs of one track). The printed algorithm's
+/// that do not belong to the same feature (legs of one track), and on the Earth each pair
+/// in one copy ([`wanted`]). The printed algorithm's
 /// insert-then-query loop finds the same pairs (tested against brute force).
 pub fn candidates(objects: &[Object]) -> Candidates {
     // Objects go to SLABS_PER_THREAD × threads slabs by the x of their AABB centre, each
@@ -76,8 +102,7 @@ pub fn candidates(objects: &[Object]) -> Candidates {
                     if same && i >= j {
                         return None;
                     }
-                    let (a, o) = (&objects[i as usize], &objects[j as usize]);
-                    (a.owner != o.owner && a.t0.max(o.t0) <= a.t1.min(o.t1))
+                    wanted(&objects[i as usize], &objects[j as usize])
                         .then_some((i.min(j), i.max(j)))
                 })
                 .collect::<Vec<_>>()
@@ -96,7 +121,7 @@ pub fn candidates_brute(objects: &[Object]) -> Candidates {
                 && b.aabb[0] <= a.aabb[2]
                 && a.aabb[1] <= b.aabb[3]
                 && b.aabb[1] <= a.aabb[3];
-            if boxes && a.owner != b.owner && a.t0.max(b.t0) <= a.t1.min(b.t1) {
+            if boxes && wanted(a, b) {
                 pairs.push((i as u32, j as u32));
             }
         }

@@ -1447,6 +1447,23 @@ mod tests {
         }
     }
 
+    /// `decided_by` in the detect answer is [`Method::name`]: every method's name is one the
+    /// answer's schema (docs/schema/detect-answer.schema.json) allows, and each method has
+    /// its own.
+    #[test]
+    fn method_names_are_the_answer_schemas() {
+        let schema = include_str!("../docs/schema/detect-answer.schema.json");
+        let names =
+            [Method::DetectSame2d, Method::DetectDiff2d, Method::Detect3d].map(Method::name);
+        for n in names {
+            assert!(
+                !n.is_empty() && schema.contains(&format!("\"{n}\"")),
+                "{n:?}"
+            );
+        }
+        assert!(names[0] != names[1] && names[1] != names[2] && names[0] != names[2]);
+    }
+
     /// Paper A §II.I at a window of one instant (T = 0): edge_detect accepts a point on
     /// the bottom edge's line up to (1 + F)·‖aa‖ = 1.5 from its midpoint (aa the half
     /// edge): x = 2.5, on the boundary, included; far outside the polygon's BUFF, so
@@ -1949,6 +1966,35 @@ mod tests {
             a <= 116.25 && 116.25 - a < 1e-12 && b == 200.0,
             "[{a}, {b}]"
         );
+    }
+
+    /// §III step 1 with a height difference that is not a float: from 2⁻⁶⁰ below the
+    /// slab [1, 2] (pmin − sz = 1 − 2⁻⁶⁰ rounds to 1) climbing at 1, the point enters at
+    /// 1 − 2⁻⁶⁰ and leaves at 2 − 2⁻⁶⁰. The balls must hold those ends: the exact quotient
+    /// of the rounded differences (1/1) is not the entry, and a rounded quotient is not
+    /// an exact end.
+    #[test]
+    fn an_inexact_height_difference_is_not_claimed_exact() {
+        let tiny = 2f64.powi(-60);
+        for (sz, vz, pmin, pmax) in [(tiny, 1.0, 1.0, 2.0), (-tiny, -1.0, -2.0, -1.0)] {
+            let (a, b) = slab_window_balls(10.0, sz, vz, pmin, pmax, 0.0).expect("a window");
+            // 1 − 2⁻⁶⁰ lies strictly between the floats 1 − 2⁻⁵³ and 1; 2 − 2⁻⁶⁰ below 2
+            assert!(
+                a.lo() < 1.0 && a.hi() >= 1.0 - 2f64.powi(-53),
+                "entry {a:?}"
+            );
+            assert!(b.lo() < 2.0 && b.hi() >= 2.0, "exit {b:?}");
+        }
+    }
+
+    /// A point resting on the slab's floor or ceiling (no vertical speed relative to the
+    /// slab): in the slab the whole time, the window exactly [0, T].
+    #[test]
+    fn a_point_resting_on_the_slab_floor_is_decided() {
+        let (a, b) = slab_window_balls(3.0, 0.0, 0.0, 0.0, 1.0, 0.0).expect("a window");
+        assert_eq!((a, b), (Ball::exact(0.0), Ball::exact(3.0)));
+        let (a, b) = slab_window_balls(3.0, 1.0, 0.5, 0.0, 1.0, 0.5).expect("a window");
+        assert_eq!((a, b), (Ball::exact(0.0), Ball::exact(3.0)));
     }
 
     /// When the comparisons of §III step 1 cannot be decided (here T·w overflows), the

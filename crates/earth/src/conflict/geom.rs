@@ -299,7 +299,8 @@ fn half_plane(ring: &[Merc], c: f64, west: bool) -> Vec<Merc> {
 /// The rings of a region on the Earth, each within the strip [−π, π] of longitude, as
 /// RFC 7946 §3.1.9 asks of a geometry that crosses the antimeridian ("cut in two"). A
 /// ring is moved by whole turns (2π) so that its least x lies in [−π, π); a part beyond
-/// x = π is cut off along that line ([`half_plane`]) and moved a turn west. Exact
+/// x = π is cut off along that line (Sutherland–Hodgman against the half-plane, the
+/// crossings placed on x = π exactly) and moved a turn west. Exact
 /// repeats (a pair found in two copies, within [`super::stage1::WRAP_MARGIN`] of ±π) are
 /// dropped.
 pub fn earth_rings(rings: Vec<Vec<Merc>>) -> Vec<Vec<Merc>> {

@@ -292,20 +292,38 @@ pub fn svg(sc: &Scenario, objects: &[Object], conflicts: &[pipeline::Conflict]) 
     ];
     // each object once: its first copy on the Earth (Object::on_earth)
     let objects: Vec<&Object> = objects.iter().filter(|o| o.copy == 0).collect();
+    // On the Earth every object and region is drawn moved by whole turns to lie within
+    // half a turn of the scenario's mean longitude (its circular mean), so that objects
+    // meeting across the antimeridian are drawn side by side.
+    let mid = |r: [f64; 4]| 0.5 * (r[0] + r[2]);
+    let (sin, cos) = objects.iter().fold((0.0, 0.0), |(s, c), o| {
+        (s + mid(o.aabb).sin(), c + mid(o.aabb).cos())
+    });
+    let centre = sin.atan2(cos);
+    let earth = sc.longitudes == crate::scenario::Longitudes::Earth;
+    let turn = |x: f64| {
+        let k = ((x - centre) / std::f64::consts::TAU).round();
+        if earth && k.is_finite() {
+            -std::f64::consts::TAU * k
+        } else {
+            0.0
+        }
+    };
     for o in &objects {
-        b[0] = b[0].min(o.aabb[0]);
+        let dx = turn(mid(o.aabb));
+        b[0] = b[0].min(o.aabb[0] + dx);
         b[1] = b[1].min(o.aabb[1]);
-        b[2] = b[2].max(o.aabb[2]);
+        b[2] = b[2].max(o.aabb[2] + dx);
         b[3] = b[3].max(o.aabb[3]);
     }
     let size = 1000.0;
     let span = (b[2] - b[0]).max(b[3] - b[1]).max(f64::MIN_POSITIVE);
     let k = size / span;
-    let pt = |p: Merc| ((p[0] - b[0]) * k, (b[3] - p[1]) * k);
-    let path = |ring: &[Merc]| {
+    let pt = |p: Merc, dx: f64| ((p[0] + dx - b[0]) * k, (b[3] - p[1]) * k);
+    let path = |ring: &[Merc], dx: f64| {
         let mut s = String::new();
         for (i, &p) in ring.iter().enumerate() {
-            let (x, y) = pt(p);
+            let (x, y) = pt(p, dx);
             let _ = write!(s, "{}{x:.2},{y:.2} ", if i == 0 { "M" } else { "L" });
         }
         s.push('Z');
@@ -321,22 +339,23 @@ pub fn svg(sc: &Scenario, objects: &[Object], conflicts: &[pipeline::Conflict]) 
     for o in &objects {
         let id = &sc.features[o.owner as usize].id;
         let colour = PALETTE[o.owner as usize % PALETTE.len()];
+        let dx = turn(mid(o.aabb));
         match &o.motion {
             Motion::Static { ring, .. } => {
                 let _ = writeln!(
                     out,
                     "<path d=\"{}\" fill=\"none\" stroke=\"{colour}\"><title>{id}</title></path>",
-                    path(ring)
+                    path(ring, dx)
                 );
             }
             Motion::Moving(leg) => {
                 let _ = writeln!(
                     out,
                     "<path d=\"{}\" fill=\"none\" stroke=\"{colour}\" stroke-dasharray=\"4 3\"><title>{id}</title></path>",
-                    path(&o.sweep)
+                    path(&o.sweep, dx)
                 );
-                let (x0, y0) = pt(crate::sphere::mercator(leg.start));
-                let (x1, y1) = pt(crate::sphere::mercator(leg.end));
+                let (x0, y0) = pt(crate::sphere::mercator(leg.start), dx);
+                let (x1, y1) = pt(crate::sphere::mercator(leg.end), dx);
                 let _ = writeln!(
                     out,
                     "<line x1=\"{x0:.2}\" y1=\"{y0:.2}\" x2=\"{x1:.2}\" y2=\"{y1:.2}\" stroke=\"{colour}\"/>"
@@ -345,7 +364,7 @@ pub fn svg(sc: &Scenario, objects: &[Object], conflicts: &[pipeline::Conflict]) 
                     let _ = writeln!(
                         out,
                         "<path d=\"{}\" fill=\"none\" stroke=\"{colour}\"/>",
-                        path(&leg.merc_vertices_at(t))
+                        path(&leg.merc_vertices_at(t), dx)
                     );
                 }
             }
@@ -353,10 +372,11 @@ pub fn svg(sc: &Scenario, objects: &[Object], conflicts: &[pipeline::Conflict]) 
     }
     for c in conflicts {
         for r in &c.rings {
+            let dx = turn(mid(crate::conflict::geom::bbox(r)));
             let _ = writeln!(
                 out,
                 "<path d=\"{}\" fill=\"red\" fill-opacity=\"0.3\" stroke=\"red\" stroke-dasharray=\"2 2\"/>",
-                path(r)
+                path(r, dx)
             );
         }
     }

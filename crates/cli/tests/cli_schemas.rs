@@ -602,10 +602,18 @@ fn the_scenario_schema_rejects_the_canaries() {
         edit(SCENARIO, r#""id": "ship""#, r#""id": "storm""#),
         edit(SCENARIO, r#""tf": 4"#, r#""tf": 0.5"#),
         edit(SCENARIO, r#""tf": 4"#, r#""t_f": 4"#),
+        // exactly 180° of longitude apart: east or west? (200° apart reads as 160° across
+        // the antimeridian, which the reader accepts)
         edit(
             SCENARIO,
             r#"[[-1, 0.5], [2, 0.5]]"#,
-            r#"[[-100, 0.5], [100, 0.5]]"#,
+            r#"[[-100, 0.5], [80, 0.5]]"#,
+        ),
+        // a ring around the pole
+        edit(
+            SCENARIO,
+            r#"[[[0, 0], [1, 0], [1, 1], [0, 0]]]"#,
+            r#"[[[0, 60], [120, 60], [-120, 60], [0, 60]]]"#,
         ),
     ];
     for text in &beyond {

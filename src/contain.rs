@@ -905,6 +905,26 @@ mod tests {
         assert_eq!(definitely_outside_rel(&at, 0.75), Tri::Yes);
     }
 
+    #[test]
+    fn a_perturbed_edge_within_an_ulp_of_buff_is_decided_on_the_moved_vertex() {
+        // BUFF = 1/2 and the point at the origin. a = (1/4, y0) with y0 = −(1/2 − 2⁻⁵⁴)
+        // is moved by §II.B (|a_x| ≤ BUFF, a_y ≥ −BUFF) to a* = (−3/4, y0); the edge
+        // a* b, along y = y0, passes 1/2 − 2⁻⁵⁴ < BUFF below the point, so s is not
+        // definitely outside. The unmoved edge a b keeps its distance ‖a‖ > 0.55. The gap
+        // 2⁻⁵⁴ is below the balls' resolution: only the exact terms of a*, with their
+        // −2·BUFF term, see it.
+        let y0 = -(0.5 - 2f64.powi(-54));
+        let tri = [v(0.25, y0), v(2.0, y0), v(1.0, -3.0)];
+        assert!(!definitely_outside(&tri[..], v(0.0, 0.0), 0.5));
+        // One ulp of y0 further down the edge is exactly BUFF away: not closer, and the
+        // point is outside (the ray from it meets no edge).
+        assert!(definitely_outside(
+            &[v(0.25, -0.5), v(2.0, -0.5), v(1.0, -3.0)][..],
+            v(0.0, 0.0),
+            0.5
+        ));
+    }
+
     /// A frame of given balls and no exact terms: what a frame at an inexact time looks
     /// like to §II.E.
     struct Balls(Vec<BallV>);

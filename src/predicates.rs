@@ -819,6 +819,74 @@ mod tests {
     }
 
     #[test]
+    fn a_ray_crossing_at_a_tie_is_decided_on_the_moved_vertex() {
+        // BUFF = 1/2 and the point at the origin; a is moved by §II.B to a* = a − (1, 0).
+        // Each edge a* b runs exactly through the point (b × a* = 0): the crossing
+        // height is 0, on the ray, so the edge crosses. The balls see only a zero with
+        // an error bound; the exact terms decide, and must carry a's −2·BUFF term.
+        let buff = 0.5;
+        let t = |q: Vect2| move || Some(Terms::diff(q, Vect2::ZERO));
+        let shifted = |q: Vect2| bv(q.x - 2.0 * buff, q.y);
+        for (a, b) in [
+            // a below the point: unmoved, or moved right instead, b × a < 0.
+            (Vect2::new(0.5, -0.25), Vect2::new(1.0, 0.5)),
+            // a above it: moved further left (by 3/2 or by 4), b × a < 0.
+            (Vect2::new(0.5, 0.25), Vect2::new(1.0, -0.5)),
+        ] {
+            let (a_star, b_ball) = (shifted(a), bv(b.x, b.y));
+            assert_eq!(b.x * a_star.v.y - b.y * a_star.v.x, 0.0);
+            assert_eq!(
+                crosses_ray(a_star, b_ball, true, false, t(a), t(b), buff),
+                Tri::Yes,
+                "a = {a:?}, b = {b:?}"
+            );
+            // Without exact terms the tie is undecided.
+            assert_eq!(
+                crosses_ray(a_star, b_ball, true, false, || None, || None, buff),
+                Tri::Unsure
+            );
+        }
+    }
+
+    #[test]
+    fn segments_at_a_tie_are_decided_on_the_exact_terms() {
+        // d lies on segment e f: the orientation of d against e f is an exact zero,
+        // which the balls cannot sign. r* = 1 and t* = 1/2 lie in the closed box and the
+        // lines are not parallel: the segments cross (they meet at d).
+        let (c, d, e, f) = (
+            Vect2::new(0.0, -1.0),
+            Vect2::new(0.0, 0.0),
+            Vect2::new(-1.0, 0.0),
+            Vect2::new(1.0, 0.0),
+        );
+        let terms = || Some([c, d, e, f].map(|p| Terms::diff(p, c)));
+        let balls = [c, d, e, f].map(|p| BallV::diff(p, c));
+        let [bc, bd, be, bf] = balls;
+        assert_eq!(segments_cross(bc, bd, be, bf, || None), Tri::Unsure);
+        assert_eq!(segments_cross(bc, bd, be, bf, terms), Tri::Yes);
+        // d one step short of the line (−1/4 below it): certainly no crossing.
+        let d2 = Vect2::new(0.0, -0.25);
+        let terms2 = || Some([c, d2, e, f].map(|p| Terms::diff(p, c)));
+        let bd2 = BallV::diff(d2, c);
+        assert_eq!(segments_cross(bc, bd2, be, bf, terms2), Tri::No);
+        // d = (3, 3 − 2⁻⁵¹) just short of the line y = x through e f, on c's side: the
+        // orientation −6·2⁻⁵¹ is below the balls' resolution, and e, f are on opposite
+        // sides of line c d. The exact terms say c and d are on one side: no crossing,
+        // whichever way round the segments run.
+        let (d, e, f) = (
+            Vect2::new(3.0, 3.0 - 2f64.powi(-51)),
+            Vect2::new(-1.0, -1.0),
+            Vect2::new(5.0, 5.0),
+        );
+        for (c, d, e, f) in [(c, d, e, f), (c, d, f, e), (d, c, e, f), (d, c, f, e)] {
+            let terms = || Some([c, d, e, f].map(|p| Terms::diff(p, c)));
+            let [bc, bd, be, bf] = [c, d, e, f].map(|p| BallV::diff(p, c));
+            assert_eq!(segments_cross(bc, bd, be, bf, || None), Tri::Unsure);
+            assert_eq!(segments_cross(bc, bd, be, bf, terms), Tri::No);
+        }
+    }
+
+    #[test]
     fn exact_quad_agrees_with_hand_cases() {
         // (t − 1/2)² + 1: minimum 1.
         assert_eq!(quad_min_below_exact(1.0, -1.0, 1.25, 1.0), Some(false));

@@ -72,8 +72,8 @@ pub enum Winding {
     Clockwise,
 }
 
-/// Closed segments pq and rs share a point (exact).
-fn segments_meet(p: Vect2, q: Vect2, r: Vect2, s: Vect2) -> Option<bool> {
+/// Closed segments pq and rs share a point (exact); `None` as in [`orient`].
+pub fn segments_meet(p: Vect2, q: Vect2, r: Vect2, s: Vect2) -> Option<bool> {
     // Bounding boxes first: disjoint boxes cannot meet (comparisons of inputs, exact).
     if p.x.max(q.x) < r.x.min(s.x)
         || r.x.max(s.x) < p.x.min(q.x)

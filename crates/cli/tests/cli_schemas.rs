@@ -541,6 +541,31 @@ fn the_scenario_schema_rejects_the_canaries() {
     let v = schema("scenario.schema.json");
     scenario_reader_accepts(SCENARIO).expect("the base scenario reads");
     assert_valid(&v, "the base scenario", &parse("scenario", SCENARIO));
+    // a hole, and a MultiPolygon of two parts (one with a hole): both read, both valid
+    let square = r#"[[[0, 0], [1, 0], [1, 1], [0, 0]]]"#;
+    let holed = r#"[[[0, 0], [1, 0], [1, 1], [0, 1], [0, 0]], [[0.2, 0.2], [0.2, 0.4], [0.4, 0.4], [0.2, 0.2]]]"#;
+    for good in [
+        edit(SCENARIO, square, holed),
+        edit(
+            SCENARIO,
+            &format!(r#"{{"type": "Polygon", "coordinates": {square}}}"#),
+            &format!(
+                r#"{{"type": "MultiPolygon", "coordinates": [{square}, {}]}}"#,
+                holed
+                    .replace(
+                        "[0, 0], [1, 0], [1, 1], [0, 1], [0, 0]",
+                        "[3, 0], [4, 0], [4, 1], [3, 1], [3, 0]"
+                    )
+                    .replace(
+                        "0.2, 0.2], [0.2, 0.4], [0.4, 0.4], [0.2, 0.2",
+                        "3.2, 0.2], [3.2, 0.4], [3.4, 0.4], [3.2, 0.2"
+                    )
+            ),
+        ),
+    ] {
+        scenario_reader_accepts(&good).expect("a hole or a MultiPolygon reads");
+        assert_valid(&v, "a hole or a MultiPolygon", &parse("scenario", &good));
+    }
     let canaries = [
         // an unknown member at the Feature level (GeoJSON allows none there)
         edit(SCENARIO, r#""geometry""#, r#""style": {}, "geometry""#),
@@ -563,10 +588,16 @@ fn the_scenario_schema_rejects_the_canaries() {
             r#"[[[0, 0], [1, 0], [1, 1], [0, 0]]]"#,
             r#"[[[0, 0], [1, 0], [0, 0]]]"#,
         ),
+        // a hole of two positions; a MultiPolygon of nothing
         edit(
             SCENARIO,
             r#"[[[0, 0], [1, 0], [1, 1], [0, 0]]]"#,
-            r#"[[[0, 0], [1, 0], [1, 1], [0, 0]], [[0.5, 0.2], [0.6, 0.2], [0.6, 0.3], [0.5, 0.2]]]"#,
+            r#"[[[0, 0], [1, 0], [1, 1], [0, 0]], [[0.5, 0.2], [0.5, 0.2]]]"#,
+        ),
+        edit(
+            SCENARIO,
+            r#"{"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1], [0, 0]]]}"#,
+            r#"{"type": "MultiPolygon", "coordinates": []}"#,
         ),
         edit(SCENARIO, r#"[[-1, 0.5], [2, 0.5]]"#, r#"[[-1, 0.5]]"#),
         edit(SCENARIO, r#"[[-1, 0.5], [2, 0.5]]"#, r#"[[-1, 0.5], [2]]"#),
@@ -614,6 +645,17 @@ fn the_scenario_schema_rejects_the_canaries() {
             SCENARIO,
             r#"[[[0, 0], [1, 0], [1, 1], [0, 0]]]"#,
             r#"[[[0, 60], [120, 60], [-120, 60], [0, 60]]]"#,
+        ),
+        // a hole outside its exterior ring, and one that crosses it
+        edit(
+            SCENARIO,
+            r#"[[[0, 0], [1, 0], [1, 1], [0, 0]]]"#,
+            r#"[[[0, 0], [1, 0], [1, 1], [0, 0]], [[2, 0.2], [2.1, 0.2], [2.1, 0.3], [2, 0.2]]]"#,
+        ),
+        edit(
+            SCENARIO,
+            r#"[[[0, 0], [1, 0], [1, 1], [0, 0]]]"#,
+            r#"[[[0, 0], [1, 0], [1, 1], [0, 0]], [[0.5, 0.2], [1.5, 0.2], [1.5, 0.3], [0.5, 0.2]]]"#,
         ),
     ];
     for text in &beyond {

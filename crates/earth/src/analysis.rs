@@ -40,9 +40,13 @@ fn string(out: &mut String, s: &str) {
 /// shortest round-trip formatting on the megabytes of a large answer.
 const REGION_DECIMALS: u32 = 7;
 
-fn coord(out: &mut String, x: f64) {
+/// A coordinate in units of the last printed decimal.
+fn units(x: f64) -> i64 {
+    (x * 10i64.pow(REGION_DECIMALS) as f64).round() as i64
+}
+
+fn coord_units(out: &mut String, v: i64) {
     let scale = 10i64.pow(REGION_DECIMALS);
-    let v = (x * scale as f64).round() as i64;
     if v < 0 {
         out.push('-');
     }
@@ -69,17 +73,56 @@ fn push_digits(out: &mut String, mut n: u64, width: usize) {
     }
 }
 
-fn ring_lonlat(out: &mut String, ring: &[Merc]) {
+/// A region's ring as printed: longitude and latitude in units of the last decimal,
+/// with what rounding made of it repaired: repeated positions merged and spikes (a step
+/// that turns straight back along itself) removed, so that the printed ring stays a
+/// valid one. Empty when fewer than three positions are left.
+fn printed_ring(ring: &[Merc]) -> Vec<[i64; 2]> {
+    let mut r: Vec<[i64; 2]> = ring
+        .iter()
+        .map(|&m| {
+            let (lon, lat) = inverse_mercator(m).to_degrees();
+            [units(lon), units(lat)]
+        })
+        .collect();
+    loop {
+        r.dedup();
+        while r.len() > 1 && r.first() == r.last() {
+            r.pop();
+        }
+        let n = r.len();
+        if n < 3 {
+            return Vec::new();
+        }
+        // b is a spike's tip when a, b, c lie on one line and c turns back towards a
+        let spike = (0..n).find(|&i| {
+            let (a, b, c) = (r[(i + n - 1) % n], r[i], r[(i + 1) % n]);
+            let d1 = [i128::from(b[0] - a[0]), i128::from(b[1] - a[1])];
+            let d2 = [i128::from(c[0] - b[0]), i128::from(c[1] - b[1])];
+            d1[0] * d2[1] == d1[1] * d2[0] && d1[0] * d2[0] + d1[1] * d2[1] < 0
+        });
+        match spike {
+            Some(i) => {
+                r.remove(i);
+            }
+            None => return r,
+        }
+    }
+}
+
+/// A printed polygon: its exterior ring and its holes ([`printed_ring`]).
+type PrintedPolygon = (Vec<[i64; 2]>, Vec<Vec<[i64; 2]>>);
+
+fn ring_lonlat(out: &mut String, ring: &[[i64; 2]]) {
     out.push('[');
-    for (k, &m) in ring.iter().chain(ring.first()).enumerate() {
-        let (lon, lat) = inverse_mercator(m).to_degrees();
+    for (k, p) in ring.iter().chain(ring.first()).enumerate() {
         if k > 0 {
             out.push(',');
         }
         out.push('[');
-        coord(out, lon);
+        coord_units(out, p[0]);
         out.push(',');
-        coord(out, lat);
+        coord_units(out, p[1]);
         out.push(']');
     }
     out.push(']');
@@ -146,22 +189,43 @@ pub fn answer(
             out.push(']');
         }
         out.push_str(",\"region\":");
-        match if regions { c.rings.len() } else { 0 } {
-            0 => out.push_str("null"),
-            1 => {
-                out.push_str("{\"type\":\"Polygon\",\"coordinates\":[");
-                ring_lonlat(&mut out, &c.rings[0]);
-                out.push_str("]}");
+        // each counterclockwise ring starts a polygon, the clockwise ones after it are
+        // its holes (crate::conflict::geom::region)
+        let polys: Vec<PrintedPolygon> = if regions {
+            crate::conflict::geom::polygons(&c.rings)
+                .iter()
+                .map(|(ext, holes)| {
+                    let holes = holes.iter().map(|h| printed_ring(h));
+                    (printed_ring(ext), holes.filter(|h| !h.is_empty()).collect())
+                })
+                .filter(|(ext, _)| !ext.is_empty())
+                .collect()
+        } else {
+            Vec::new()
+        };
+        let polygon = |out: &mut String, (ext, holes): &PrintedPolygon| {
+            out.push('[');
+            ring_lonlat(out, ext);
+            for h in holes {
+                out.push(',');
+                ring_lonlat(out, h);
             }
-            _ => {
+            out.push(']');
+        };
+        match polys.as_slice() {
+            [] => out.push_str("null"),
+            [one] => {
+                out.push_str("{\"type\":\"Polygon\",\"coordinates\":");
+                polygon(&mut out, one);
+                out.push('}');
+            }
+            many => {
                 out.push_str("{\"type\":\"MultiPolygon\",\"coordinates\":[");
-                for (i, r) in c.rings.iter().enumerate() {
+                for (i, p) in many.iter().enumerate() {
                     if i > 0 {
                         out.push(',');
                     }
-                    out.push('[');
-                    ring_lonlat(&mut out, r);
-                    out.push(']');
+                    polygon(&mut out, p);
                 }
                 out.push_str("]}");
             }
@@ -341,11 +405,16 @@ pub fn svg(sc: &Scenario, objects: &[Object], conflicts: &[pipeline::Conflict]) 
         let colour = PALETTE[o.owner as usize % PALETTE.len()];
         let dx = turn(mid(o.aabb));
         match &o.motion {
-            Motion::Static { ring, .. } => {
+            Motion::Static { ring, holes, .. } => {
+                // the holes as more subpaths of the same path
+                let mut d = path(ring, dx);
+                for h in holes {
+                    d.push(' ');
+                    d.push_str(&path(h, dx));
+                }
                 let _ = writeln!(
                     out,
-                    "<path d=\"{}\" fill=\"none\" stroke=\"{colour}\"><title>{id}</title></path>",
-                    path(ring, dx)
+                    "<path d=\"{d}\" fill=\"none\" stroke=\"{colour}\"><title>{id}</title></path>"
                 );
             }
             Motion::Moving(leg) => {
@@ -371,12 +440,17 @@ pub fn svg(sc: &Scenario, objects: &[Object], conflicts: &[pipeline::Conflict]) 
         }
     }
     for c in conflicts {
-        for r in &c.rings {
-            let dx = turn(mid(crate::conflict::geom::bbox(r)));
+        // one path per polygon, its holes as subpaths (even-odd: a hole is not filled)
+        for (ext, holes) in crate::conflict::geom::polygons(&c.rings) {
+            let dx = turn(mid(crate::conflict::geom::bbox(&ext)));
+            let mut d = path(&ext, dx);
+            for h in &holes {
+                d.push(' ');
+                d.push_str(&path(h, dx));
+            }
             let _ = writeln!(
                 out,
-                "<path d=\"{}\" fill=\"red\" fill-opacity=\"0.3\" stroke=\"red\" stroke-dasharray=\"2 2\"/>",
-                path(r, dx)
+                "<path d=\"{d}\" fill=\"red\" fill-opacity=\"0.3\" fill-rule=\"evenodd\" stroke=\"red\" stroke-dasharray=\"2 2\"/>"
             );
         }
     }
@@ -401,7 +475,7 @@ mod tests {
             (1.0000001, "1.0000001"),
         ] {
             let mut s = String::new();
-            coord(&mut s, x);
+            coord_units(&mut s, units(x));
             assert_eq!(s, want, "{x}");
         }
     }

@@ -95,7 +95,8 @@ pub fn random_area(rng: &mut Bits<'_>, bx: ((f64, f64), (f64, f64))) -> Area {
         .collect();
     ring.reverse();
     Area {
-        ring,
+        shapes: vec![crate::scenario::Shape::plain(ring)],
+        multi: false,
         t0: None,
         tf: None,
     }

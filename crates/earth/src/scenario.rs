@@ -20,11 +20,36 @@ pub const MAX_ABS_LAT_DEG: f64 = 85.0;
 /// 240 nm (4°) of front/back + side.
 pub const MAX_RECT_LAT_DEG: f64 = 89.0;
 
-/// A static area (spec kind `area`).
+/// One polygon of an area: its boundary and its holes, each an open ring (the closing
+/// repeat removed) whose edges are rhumb lines (straight on the Mercator plane).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Shape {
+    /// The exterior ring, counterclockwise (RFC 7946 §3.1.6).
+    pub ring: Vec<LonLat>,
+    /// The holes (interior rings), clockwise: places inside `ring` that are not part of
+    /// the area (their boundaries are). Each lies inside `ring`, outside the others, and
+    /// no two rings of the shape share a point.
+    pub holes: Vec<Vec<LonLat>>,
+}
+
+impl Shape {
+    /// A shape without holes.
+    pub fn plain(ring: Vec<LonLat>) -> Shape {
+        Shape {
+            ring,
+            holes: Vec::new(),
+        }
+    }
+}
+
+/// A static area (spec kind `area`): a GeoJSON Polygon (one shape) or MultiPolygon (one
+/// or more shapes, which may touch or overlap: the area is their union).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Area {
-    /// Vertices (open ring, the closing repeat removed).
-    pub ring: Vec<LonLat>,
+    /// The shapes.
+    pub shapes: Vec<Shape>,
+    /// Written as a MultiPolygon (kept when the scenario is written back).
+    pub multi: bool,
     /// Start (h), `None` = always.
     pub t0: Option<f64>,
     /// End (h), `None` = always.
@@ -181,9 +206,22 @@ pub enum Problem {
     /// The collection's `longitudes` member has a value other than `"earth"` or
     /// `"unrolled"`.
     UnknownLongitudes(String),
-    /// A Polygon with interior rings (holes), which this version does not model (the
-    /// hole would be read as part of the area).
-    Holes(usize),
+    /// Two rings of one polygon share a point: this ring's edge a0→a1 meets edge b0→b1
+    /// of ring `ring` (0 the exterior, k ≥ 1 the k-th hole); indices into the rings as
+    /// written, from 0.
+    RingsMeet {
+        /// The other ring (its index in the polygon's coordinates).
+        ring: u32,
+        /// This ring's edge.
+        a: (u32, u32),
+        /// The other ring's edge.
+        b: (u32, u32),
+    },
+    /// A hole that does not lie inside its polygon's exterior ring.
+    HoleOutside,
+    /// A hole inside another hole (`k`, its index in the polygon's coordinates), or
+    /// containing it.
+    HoleInHole(usize),
 }
 
 /// A typed input error naming the line, the feature (index and id) and the field.
@@ -328,10 +366,19 @@ impl fmt::Display for ScenarioError {
             Problem::UnknownLongitudes(v) => {
                 write!(f, "{v:?}: expected \"earth\" (the default) or \"unrolled\"")
             }
-            Problem::Holes(n) => write!(
+            Problem::RingsMeet { ring, a, b } => write!(
                 f,
-                "{n} interior ring(s): holes are not supported yet (they would be read as \
-                 part of the area)"
+                "meets ring {ring} of the polygon: edge {}→{} of this ring and edge {}→{} of \
+                 that one share a point (rings of a polygon must not touch or cross)",
+                a.0, a.1, b.0, b.1
+            ),
+            Problem::HoleOutside => write!(
+                f,
+                "this hole does not lie inside the polygon's exterior ring (ring 0)"
+            ),
+            Problem::HoleInHole(k) => write!(
+                f,
+                "this hole and hole {k} of the polygon lie one inside the other"
             ),
             Problem::UnsupportedCrs(c) => write!(
                 f,
@@ -411,12 +458,16 @@ pub fn normal_lon(lon: f64) -> f64 {
 /// accumulated. A ring must come back to its first position with m = 0 (else it
 /// circles a pole) and span less than a turn. On the unrolled plane the longitudes are
 /// kept as written, and a step longer than 180° is an error.
+///
+/// `start` (whole turns, 0 but for a hole) starts the count m there: a hole is laid out
+/// in the same copy as its exterior ring.
 fn lay_out(
     ctx: &Ctx,
     field: &str,
     pts: &[[f64; 2]],
     mode: Longitudes,
     ring: bool,
+    start: f64,
 ) -> Result<(Vec<[f64; 2]>, Option<usize>), ScenarioError> {
     let at = |k: usize, p: Problem| ctx.err(format!("{field}[{k}]"), p);
     if mode == Longitudes::Unrolled {
@@ -427,7 +478,7 @@ fn lay_out(
     }
     let mut out = Vec::with_capacity(pts.len());
     let mut wrapped = None;
-    let (mut prev, mut turns) = (0.0, 0.0);
+    let (mut prev, mut turns) = (0.0, start);
     for (k, q) in pts.iter().enumerate() {
         let l = normal_lon(q[0]);
         if wrapped.is_none() && q[0].abs() > 180.0 {
@@ -450,7 +501,7 @@ fn lay_out(
     if ring && pts.len() > 1 {
         let (first, last) = (pts[0], pts[pts.len() - 1]);
         let closed = normal_lon(first[0]) == normal_lon(last[0]) && first[1] == last[1];
-        if closed && turns != 0.0 {
+        if closed && turns != start {
             return Err(ctx.err(field, Problem::CirclesPole));
         }
         let (lo, hi) = out
@@ -465,24 +516,33 @@ fn lay_out(
     Ok((out, wrapped))
 }
 
-/// The spec's area rules on a ring already read: closed, ≥ 3 distinct vertices, simple
-/// (on the Mercator plane, where paper B's rhumb-line edges are straight; exact
-/// orientation tests on the f64 Mercator vertices the stages use), `tf ≥ t0`. Either
-/// winding is accepted (RFC 7946 §3.1.6) and the ring is kept counterclockwise.
-fn area_from(
+/// The spec's rules for one ring already read (`field` names it): closed, ≥ 3 distinct
+/// vertices, simple (on the Mercator plane, where paper B's rhumb-line edges are
+/// straight; exact orientation tests on the f64 Mercator vertices the stages use).
+/// Either winding is accepted (RFC 7946 §3.1.6); the ring is kept counterclockwise, or
+/// clockwise for a `hole`.
+fn ring_from(
+    ctx: &Ctx,
+    ring: Vec<LonLat>,
+    field: &str,
+    hole: bool,
+) -> Result<Vec<LonLat>, ScenarioError> {
+    ring_indexed(ctx, ring, field, hole).map(|(r, _)| r)
+}
+
+/// [`ring_from`], with the index as written of each vertex kept.
+fn ring_indexed(
     ctx: &Ctx,
     mut ring: Vec<LonLat>,
-    t0: Option<f64>,
-    tf: Option<f64>,
-) -> Result<Area, ScenarioError> {
+    field: &str,
+    hole: bool,
+) -> Result<(Vec<LonLat>, Vec<usize>), ScenarioError> {
     use polyguard::ring::{check, collinear, RingFault, Winding};
-    use polyguard::vect2::Vect2;
-    const FIELD: &str = "geometry.coordinates[0]";
     if ring.len() < 2 || ring.first() != ring.last() {
         if ring.len() < 3 {
-            return Err(ctx.err(FIELD, Problem::TooFewVertices(ring.len())));
+            return Err(ctx.err(field, Problem::TooFewVertices(ring.len())));
         }
-        return Err(ctx.err(FIELD, Problem::UnclosedRing));
+        return Err(ctx.err(field, Problem::UnclosedRing));
     }
     ring.pop();
     let distinct = {
@@ -491,38 +551,177 @@ fn area_from(
         d.len() - usize::from(d.len() > 1 && d.first() == d.last())
     };
     if distinct < 3 {
-        return Err(ctx.err(FIELD, Problem::TooFewVertices(distinct)));
+        return Err(ctx.err(field, Problem::TooFewVertices(distinct)));
     }
-    let plane: Vec<Vect2> = ring
-        .iter()
-        .map(|&p| {
-            let [x, y] = sphere::mercator(p);
-            Vect2::new(x, y)
-        })
-        .collect();
+    let plane = merc_ring(&ring);
+    let want = if hole {
+        Winding::Clockwise
+    } else {
+        Winding::Counterclockwise
+    };
+    let mut index: Vec<usize> = (0..ring.len()).collect();
     match check(&plane) {
-        Ok(Winding::Counterclockwise) => {}
-        Ok(Winding::Clockwise) => ring.reverse(),
+        Ok(w) if w == want => {}
+        Ok(_) => {
+            ring.reverse();
+            index.reverse();
+        }
         Err(RingFault::Crossing { .. }) if collinear(&plane) => {
-            return Err(ctx.err(FIELD, Problem::ZeroArea))
+            return Err(ctx.err(field, Problem::ZeroArea))
         }
         Err(RingFault::Crossing { a, b }) => {
-            return Err(ctx.err(FIELD, Problem::SelfIntersecting(a, b)))
+            return Err(ctx.err(field, Problem::SelfIntersecting(a, b)))
         }
-        Err(RingFault::ZeroArea) => return Err(ctx.err(FIELD, Problem::ZeroArea)),
+        Err(RingFault::ZeroArea) => return Err(ctx.err(field, Problem::ZeroArea)),
         // beyond the exact check's range (no real position gets there): kept as given
         Err(RingFault::NotCheckable) => {}
     }
-    ring.dedup();
-    if ring.len() > 1 && ring.first() == ring.last() {
-        ring.pop();
+    let mut kept: Vec<(LonLat, usize)> = ring.into_iter().zip(index).collect();
+    kept.dedup_by(|b, a| a.0 == b.0);
+    if kept.len() > 1 && kept.first().map(|p| p.0) == kept.last().map(|p| p.0) {
+        kept.pop();
     }
+    Ok(kept.into_iter().unzip())
+}
+
+/// A ring's vertices on the Mercator plane, as the stages see them.
+fn merc_ring(ring: &[LonLat]) -> Vec<polyguard::vect2::Vect2> {
+    ring.iter()
+        .map(|&p| {
+            let [x, y] = sphere::mercator(p);
+            polyguard::vect2::Vect2::new(x, y)
+        })
+        .collect()
+}
+
+/// Is `p` strictly inside the ring? Exact crossing number (the orientation of each edge
+/// that straddles p's height); `p` must not lie on the ring. `None` when an exact
+/// product would over- or underflow.
+fn strictly_inside(p: polyguard::vect2::Vect2, ring: &[polyguard::vect2::Vect2]) -> Option<bool> {
+    let n = ring.len();
+    let mut inside = false;
+    for i in 0..n {
+        let (a, b) = (ring[i], ring[(i + 1) % n]);
+        if (a.y > p.y) != (b.y > p.y) {
+            // the edge crosses the horizontal line through p right of p exactly when p
+            // is left of the edge taken upward
+            let o = polyguard::ring::orient(a, b, p)?;
+            if (o > 0) == (b.y > a.y) {
+                inside = !inside;
+            }
+        }
+    }
+    Some(inside)
+}
+
+/// The rules between the rings of one polygon (each already checked by [`ring_from`]):
+/// no two share a point, every hole lies inside the exterior ring and outside the other
+/// holes. `Err((k, problem))` names the ring k at fault (a hole); the checks are exact on
+/// the Mercator vertices. O(n²) edge pairs, pruned by bounding boxes. `written` gives
+/// each ring's vertex indices as written (for the edges an error names).
+fn check_rings(
+    ring: &[LonLat],
+    holes: &[Vec<LonLat>],
+    written: &[Vec<usize>],
+) -> Result<(), (usize, Problem)> {
+    use polyguard::ring::segments_meet;
+    use polyguard::vect2::Vect2;
+    let rings: Vec<Vec<Vect2>> = std::iter::once(ring)
+        .chain(holes.iter().map(|h| h.as_slice()))
+        .map(merc_ring)
+        .collect();
+    let boxes: Vec<[f64; 4]> = rings
+        .iter()
+        .map(|r| {
+            r.iter().fold(
+                [
+                    f64::INFINITY,
+                    f64::INFINITY,
+                    f64::NEG_INFINITY,
+                    f64::NEG_INFINITY,
+                ],
+                |b, p| [b[0].min(p.x), b[1].min(p.y), b[2].max(p.x), b[3].max(p.y)],
+            )
+        })
+        .collect();
+    let apart = |a: [f64; 4], b: [f64; 4]| a[2] < b[0] || b[2] < a[0] || a[3] < b[1] || b[3] < a[1];
+    for k in 1..rings.len() {
+        for j in 0..k {
+            if apart(boxes[j], boxes[k]) {
+                continue;
+            }
+            let (r, q) = (&rings[k], &rings[j]);
+            for a in 0..r.len() {
+                let (a0, a1) = (r[a], r[(a + 1) % r.len()]);
+                for b in 0..q.len() {
+                    let (b0, b1) = (q[b], q[(b + 1) % q.len()]);
+                    // beyond the exact range (no real position gets there): not a meeting
+                    if segments_meet(a0, a1, b0, b1) == Some(true) {
+                        // each edge named in the direction it is written
+                        let edge = |w: &[usize], i: usize| {
+                            let (x, y) = (w[i], w[(i + 1) % w.len()]);
+                            if w.len() > 1 && w[0] > w[1] {
+                                (y, x)
+                            } else {
+                                (x, y)
+                            }
+                        };
+                        let (a, b) = (edge(&written[k], a), edge(&written[j], b));
+                        let n = |x: usize| u32::try_from(x).unwrap_or(u32::MAX);
+                        return Err((
+                            k,
+                            Problem::RingsMeet {
+                                ring: n(j),
+                                a: (n(a.0), n(a.1)),
+                                b: (n(b.0), n(b.1)),
+                            },
+                        ));
+                    }
+                }
+            }
+        }
+        // No ring meets another: a ring's first vertex tells on which side of another
+        // ring the whole of it lies.
+        if strictly_inside(rings[k][0], &rings[0]) == Some(false) {
+            return Err((k, Problem::HoleOutside));
+        }
+        for j in 1..k {
+            if strictly_inside(rings[k][0], &rings[j]) == Some(true)
+                || strictly_inside(rings[j][0], &rings[k]) == Some(true)
+            {
+                return Err((k, Problem::HoleInHole(j)));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The spec's area rules for a Polygon of one ring (the fast path's areas): the ring's
+/// rules ([`ring_from`]) and `tf ≥ t0`.
+fn area_from(
+    ctx: &Ctx,
+    ring: Vec<LonLat>,
+    t0: Option<f64>,
+    tf: Option<f64>,
+) -> Result<Area, ScenarioError> {
+    let ring = ring_from(ctx, ring, "geometry.coordinates[0]", false)?;
+    times_ok(ctx, t0, tf)?;
+    Ok(Area {
+        shapes: vec![Shape::plain(ring)],
+        multi: false,
+        t0,
+        tf,
+    })
+}
+
+/// An area's `tf ≥ t0`.
+fn times_ok(ctx: &Ctx, t0: Option<f64>, tf: Option<f64>) -> Result<(), ScenarioError> {
     if let (Some(a), Some(b)) = (t0, tf) {
         if b < a {
             return Err(ctx.err("properties.tf", Problem::EndBeforeStart));
         }
     }
-    Ok(Area { ring, t0, tf })
+    Ok(())
 }
 
 /// The spec's track rules on values already read: ≥ 2 waypoints, speed > 0, distances
@@ -666,6 +865,7 @@ impl Reader<'_> {
         node: &Node,
         field: &str,
         ring: bool,
+        start: f64,
         warnings: &mut Vec<ScenarioWarning>,
     ) -> Result<Vec<LonLat>, ScenarioError> {
         let arr = node.elements().ok_or_else(|| {
@@ -704,8 +904,8 @@ impl Reader<'_> {
             .collect::<Result<Vec<_>, _>>()
             .and_then(|read| {
                 let raw: Vec<[f64; 2]> = read.iter().map(|&(_, c)| c).collect();
-                let (laid, wrapped) =
-                    lay_out(ctx, field, &raw, self.longitudes, ring).map_err(|mut e| {
+                let (laid, wrapped) = lay_out(ctx, field, &raw, self.longitudes, ring, start)
+                    .map_err(|mut e| {
                         e.line = match e.problem {
                             Problem::CrossesAntimeridian(k) | Problem::HalfTurnStep(k) => {
                                 self.line(arr[k].at)
@@ -728,6 +928,81 @@ impl Reader<'_> {
                     .map(|[lon, lat]| LonLat::from_degrees(lon, lat))
                     .collect())
             })
+    }
+
+    /// One polygon of an area (`prefix` names its array of rings): its exterior ring and
+    /// holes, each checked ([`ring_from`]), and the rules between them ([`check_rings`]).
+    /// On the Earth each hole is laid out in the copy of its exterior ring (the one whose
+    /// longitudes are nearest the ring's middle).
+    fn shape(
+        &self,
+        ctx: &Ctx,
+        node: &Node,
+        prefix: &str,
+        warnings: &mut Vec<ScenarioWarning>,
+    ) -> Result<Shape, ScenarioError> {
+        let rings = node
+            .elements()
+            .ok_or_else(|| self.at(ctx, node.at, prefix, Problem::WrongType("array of rings")))?;
+        let first = rings
+            .first()
+            .ok_or_else(|| self.at(ctx, node.at, format!("{prefix}[0]"), Problem::Missing))?;
+        let at_ring = |n: &Node| Ctx {
+            line: self.line(n.at),
+            ..*ctx
+        };
+        let field = format!("{prefix}[0]");
+        let ring = self.positions(ctx, first, &field, true, 0.0, warnings)?;
+        let (ring, w0) = ring_indexed(&at_ring(first), ring, &field, false)?;
+        let mut written = vec![w0];
+        let mid = {
+            let (lo, hi) = ring
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), q| {
+                    (lo.min(q.lon), hi.max(q.lon))
+                });
+            (0.5 * (lo + hi)).to_degrees()
+        };
+        let mut holes = Vec::with_capacity(rings.len() - 1);
+        for (k, h) in rings.iter().enumerate().skip(1) {
+            let field = format!("{prefix}[{k}]");
+            let mut read = Vec::new();
+            let mut laid = self.positions(ctx, h, &field, true, 0.0, &mut read)?;
+            if self.longitudes == Longitudes::Earth {
+                if let Some(q) = laid.first() {
+                    let turns = ((mid - q.lon.to_degrees()) / 360.0).round();
+                    if turns != 0.0 {
+                        laid = self.positions(ctx, h, &field, true, turns, &mut Vec::new())?;
+                    }
+                }
+            }
+            warnings.extend(read);
+            let (hole, w) = ring_indexed(&at_ring(h), laid, &field, true)?;
+            holes.push(hole);
+            written.push(w);
+        }
+        check_rings(&ring, &holes, &written)
+            .map_err(|(k, problem)| self.at(ctx, rings[k].at, format!("{prefix}[{k}]"), problem))?;
+        Ok(Shape { ring, holes })
+    }
+
+    /// An area's geometry: a Polygon or a MultiPolygon (`true`), its coordinates.
+    fn area_geometry<'n>(&self, ctx: &Ctx, f: &'n Node) -> Result<(&'n Node, bool), ScenarioError> {
+        let multi = f
+            .get("geometry")
+            .and_then(|g| g.get("type"))
+            .and_then(|t| t.as_str())
+            == Some("MultiPolygon");
+        let ty = if multi { "MultiPolygon" } else { "Polygon" };
+        match self.geometry(ctx, f, ty) {
+            Ok(c) => Ok((c, multi)),
+            Err(mut e) => {
+                if e.problem == Problem::WrongType("Polygon") {
+                    e.problem = Problem::WrongType("Polygon or MultiPolygon");
+                }
+                Err(e)
+            }
+        }
     }
 
     /// The geometry's coordinates, its type checked.
@@ -811,37 +1086,51 @@ impl Reader<'_> {
         let p = |k: &str| props.iter().find(|m| m.key == k).map(|m| &m.value);
         let t0 = self.number(ctx, p("t0"), "properties.t0")?;
         let kind = if kind == "area" {
-            let coords = self.geometry(ctx, f, "Polygon")?;
-            let ring_v = coords.elements().and_then(|r| r.first()).ok_or_else(|| {
-                self.at(ctx, coords.at, "geometry.coordinates[0]", Problem::Missing)
-            })?;
-            if let Some(holes) = coords
-                .elements()
-                .and_then(|r| r.get(1..))
-                .filter(|h| !h.is_empty())
-            {
-                return Err(self.at(
-                    ctx,
-                    holes[0].at,
-                    "geometry.coordinates[1]",
-                    Problem::Holes(holes.len()),
-                ));
-            }
-            let ring = self.positions(ctx, ring_v, "geometry.coordinates[0]", true, warnings)?;
+            let (coords, multi) = self.area_geometry(ctx, f)?;
             let tf = self.number(ctx, p("tf"), "properties.tf")?;
-            let line_ctx = Ctx {
-                line: self.line(ring_v.at),
-                ..*ctx
-            };
-            Kind::Area(area_from(&line_ctx, ring, t0, tf).map_err(|mut e| {
-                if e.field == "properties.tf" {
-                    e.line = p("tf").and_then(|n| self.line(n.at));
+            let polygons: Vec<(&Node, String)> = if multi {
+                let parts = coords.elements().ok_or_else(|| {
+                    self.at(
+                        ctx,
+                        coords.at,
+                        "geometry.coordinates",
+                        Problem::WrongType("array of polygons"),
+                    )
+                })?;
+                if parts.is_empty() {
+                    return Err(self.at(
+                        ctx,
+                        coords.at,
+                        "geometry.coordinates[0]",
+                        Problem::Missing,
+                    ));
                 }
+                parts
+                    .iter()
+                    .enumerate()
+                    .map(|(k, n)| (n, format!("geometry.coordinates[{k}]")))
+                    .collect()
+            } else {
+                vec![(coords, "geometry.coordinates".to_owned())]
+            };
+            let mut shapes = Vec::with_capacity(polygons.len());
+            for (node, prefix) in polygons {
+                shapes.push(self.shape(ctx, node, &prefix, warnings)?);
+            }
+            times_ok(ctx, t0, tf).map_err(|mut e| {
+                e.line = p("tf").and_then(|n| self.line(n.at));
                 e
-            })?)
+            })?;
+            Kind::Area(Area {
+                shapes,
+                multi,
+                t0,
+                tf,
+            })
         } else {
             let coords = self.geometry(ctx, f, "LineString")?;
-            let waypoints = self.positions(ctx, coords, "geometry.coordinates", false, warnings)?;
+            let waypoints =
+                self.positions(ctx, coords, "geometry.coordinates", false, 0.0, warnings)?;
             let speed = self.number(ctx, p("speed_kn"), "properties.speed_kn")?;
             let dists = [
                 self.number(ctx, p("front_nm"), "properties.front_nm")?,
@@ -961,7 +1250,7 @@ pub fn fast_parse(text: &str) -> Option<Read> {
                     return Some(Err(e));
                 }
             }
-            match lay_out(&ctx, field, v, longitudes, ring) {
+            match lay_out(&ctx, field, v, longitudes, ring, 0.0) {
                 Ok((_, Some(_))) => None,
                 Ok((laid, None)) => Some(Ok(laid
                     .into_iter()
@@ -1217,13 +1506,23 @@ pub fn objects(scenario: &Scenario) -> Vec<Object> {
         .enumerate()
         .flat_map_iter(|(k, f)| {
             let owner = k as u32;
+            let merc = |r: &[LonLat]| -> Vec<[f64; 2]> {
+                r.iter().map(|&p| sphere::mercator(p)).collect()
+            };
             let v: Vec<Object> = match &f.kind {
-                Kind::Area(a) => vec![Object::area(
-                    owner,
-                    a.ring.iter().map(|&p| sphere::mercator(p)).collect(),
-                    a.t0.unwrap_or(f64::NEG_INFINITY),
-                    a.tf.unwrap_or(f64::INFINITY),
-                )],
+                Kind::Area(a) => a
+                    .shapes
+                    .iter()
+                    .map(|sh| {
+                        Object::area_with_holes(
+                            owner,
+                            merc(&sh.ring),
+                            sh.holes.iter().map(|h| merc(h)).collect(),
+                            a.t0.unwrap_or(f64::NEG_INFINITY),
+                            a.tf.unwrap_or(f64::INFINITY),
+                        )
+                    })
+                    .collect(),
                 Kind::Track(t) => sphere::track_legs(&t.waypoints, t.speed_kn, t.t0, t.dims)
                     .into_iter()
                     .map(|leg| Object::leg(owner, leg))
@@ -1266,14 +1565,28 @@ pub fn to_geojson(scenario: &Scenario) -> Value {
         .iter()
         .map(|f| match &f.kind {
             Kind::Area(a) => {
-                let mut ring: Vec<Value> = a
-                    .ring
-                    .iter()
-                    .map(|&p| pos(p, scenario.longitudes))
-                    .collect();
-                if let Some(first) = ring.first().cloned() {
-                    ring.push(first);
-                }
+                let ring = |r: &[LonLat]| {
+                    let mut v: Vec<Value> =
+                        r.iter().map(|&p| pos(p, scenario.longitudes)).collect();
+                    if let Some(first) = v.first().cloned() {
+                        v.push(first);
+                    }
+                    Value::Array(v)
+                };
+                let polygon = |sh: &Shape| {
+                    Value::Array(
+                        std::iter::once(ring(&sh.ring))
+                            .chain(sh.holes.iter().map(|h| ring(h)))
+                            .collect(),
+                    )
+                };
+                let geometry = if a.multi {
+                    json!({"type": "MultiPolygon",
+                           "coordinates": a.shapes.iter().map(polygon).collect::<Vec<_>>()})
+                } else {
+                    json!({"type": "Polygon",
+                           "coordinates": a.shapes.first().map(polygon).unwrap_or(json!([]))})
+                };
                 let mut props = json!({"id": f.id, "kind": "area"});
                 extend(&mut props, &f.extra);
                 if let Some(t0) = a.t0 {
@@ -1282,8 +1595,7 @@ pub fn to_geojson(scenario: &Scenario) -> Value {
                 if let Some(tf) = a.tf {
                     props["tf"] = json!(tf);
                 }
-                json!({"type": "Feature", "properties": props,
-                       "geometry": {"type": "Polygon", "coordinates": [ring]}})
+                json!({"type": "Feature", "properties": props, "geometry": geometry})
             }
             Kind::Track(t) => {
                 let line: Vec<Value> = t
@@ -1555,11 +1867,11 @@ mod tests {
             polyguard::ring::winding(&p)
         };
         assert_eq!(
-            turn(&a.ring),
+            turn(&a.shapes[0].ring),
             Ok(polyguard::ring::Winding::Counterclockwise)
         );
         assert_eq!(
-            turn(&b.ring),
+            turn(&b.shapes[0].ring),
             Ok(polyguard::ring::Winding::Counterclockwise)
         );
         assert_eq!(
@@ -1645,10 +1957,58 @@ mod tests {
             (
                 AREA.replace(
                     "[[[0,0],[1,0],[1,1],[0,0]]]",
-                    "[[[0,0],[3,0],[3,3],[0,3],[0,0]],[[1,1],[1,2],[2,2],[1,1]]]",
+                    "[[[0,0],[3,0],[3,3],[0,3],[0,0]],[[1,1],[4,1],[4,2],[1,1]]]",
                 ),
                 "geometry.coordinates[1]",
-                "1 interior ring(s): holes are not supported yet",
+                "meets ring 0 of the polygon: edge 0→1 of this ring and edge 1→2",
+            ),
+            (
+                // a hole touching the exterior at one point is refused too
+                AREA.replace(
+                    "[[[0,0],[1,0],[1,1],[0,0]]]",
+                    "[[[0,0],[3,0],[3,3],[0,3],[0,0]],[[1,1],[3,2],[1,2],[1,1]]]",
+                ),
+                "geometry.coordinates[1]",
+                "meets ring 0 of the polygon",
+            ),
+            (
+                AREA.replace(
+                    "[[[0,0],[1,0],[1,1],[0,0]]]",
+                    "[[[0,0],[3,0],[3,3],[0,3],[0,0]],[[4,1],[5,1],[5,2],[4,1]]]",
+                ),
+                "geometry.coordinates[1]",
+                "does not lie inside the polygon's exterior ring",
+            ),
+            (
+                AREA.replace(
+                    "[[[0,0],[1,0],[1,1],[0,0]]]",
+                    "[[[0,0],[9,0],[9,9],[0,9],[0,0]],[[1,1],[1,8],[8,8],[8,1],[1,1]],\
+                     [[2,2],[2,3],[3,3],[2,2]]]",
+                ),
+                "geometry.coordinates[2]",
+                "this hole and hole 1 of the polygon lie one inside the other",
+            ),
+            (
+                AREA.replace(
+                    "[[[0,0],[1,0],[1,1],[0,0]]]",
+                    "[[[0,0],[9,0],[9,9],[0,9],[0,0]],[[1,1],[3,3],[3,1],[1,3],[1,1]]]",
+                ),
+                "geometry.coordinates[1]",
+                "edges 0–1 and 2–3 cross",
+            ),
+            (
+                AREA.replace(r#""type":"Polygon""#, r#""type":"MultiPolygon""#)
+                    .replace(
+                        "[[[0,0],[1,0],[1,1],[0,0]]]",
+                        "[[[[0,0],[1,0],[1,1],[0,0]]],[[[5,5],[6,5],[6,6]]]]",
+                    ),
+                "geometry.coordinates[1][0]",
+                "ring not closed",
+            ),
+            (
+                AREA.replace(r#""type":"Polygon""#, r#""type":"Point""#),
+                "geometry.type",
+                "expected Polygon or MultiPolygon",
             ),
         ];
         for (bad, field, message) in cases {

@@ -163,7 +163,14 @@ fn turned(sc: &Scenario, deg: f64) -> Scenario {
     let mut out = sc.clone();
     for f in &mut out.features {
         match &mut f.kind {
-            Kind::Area(a) => a.ring = a.ring.iter().map(mv).collect(),
+            Kind::Area(a) => {
+                for sh in &mut a.shapes {
+                    sh.ring = sh.ring.iter().map(mv).collect();
+                    for h in &mut sh.holes {
+                        *h = h.iter().map(mv).collect();
+                    }
+                }
+            }
             Kind::Track(t) => t.waypoints = t.waypoints.iter().map(mv).collect(),
         }
     }

@@ -97,7 +97,7 @@ mod tests {
         assert_eq!(tracks, 25);
         for f in &a.features {
             if let Kind::Area(ar) = &f.kind {
-                assert!((3..=10).contains(&ar.ring.len()));
+                assert!((3..=10).contains(&ar.shapes[0].ring.len()));
                 let o = polyguard_earth::scenario::objects(&Scenario {
                     features: vec![f.clone()],
                     longitudes: a.longitudes,

@@ -38,7 +38,10 @@ pub enum Motion {
     Static {
         /// The ring.
         ring: Vec<Merc>,
-        /// Whether the ring is convex (enables the fast convex paths).
+        /// The holes (clockwise, not closed): inside `ring`, not part of the area (their
+        /// boundaries are).
+        holes: Vec<Vec<Merc>>,
+        /// Whether the ring is convex and has no holes (enables the fast convex paths).
         convex: bool,
     },
     /// One leg of a track: a Table 2 rectangle on a rhumb line.
@@ -78,15 +81,41 @@ pub struct Object {
 impl Object {
     /// A static area alive over `[t0, t1]`; `ring` in the Mercator plane, any orientation.
     pub fn area(owner: u32, ring: Vec<Merc>, t0: f64, t1: f64) -> Object {
+        Object::area_with_holes(owner, ring, Vec::new(), t0, t1)
+    }
+
+    /// A static area with holes (GeoJSON interior rings), alive over `[t0, t1]`; any
+    /// orientation. The holes must lie inside `ring` without touching it or each other
+    /// (as the scenario reader checks). `Γ` is the exterior ring; the holes take part in
+    /// stage 2's decision and region and in stage 4's distances.
+    pub fn area_with_holes(
+        owner: u32,
+        ring: Vec<Merc>,
+        holes: Vec<Vec<Merc>>,
+        t0: f64,
+        t1: f64,
+    ) -> Object {
         let ring = geom::ccw(ring);
-        let convex = geom::is_convex(&ring);
+        let holes: Vec<Vec<Merc>> = holes
+            .into_iter()
+            .map(|h| {
+                let mut h = geom::ccw(h);
+                h.reverse();
+                h
+            })
+            .collect();
+        let convex = holes.is_empty() && geom::is_convex(&ring);
         let aabb = geom::bbox(&ring);
         Object {
             owner,
             t0,
             t1,
             sweep: ring.clone(),
-            motion: Motion::Static { ring, convex },
+            motion: Motion::Static {
+                ring,
+                holes,
+                convex,
+            },
             aabb,
             paper_sweep: Vec::new(),
             projection: None,
@@ -172,16 +201,28 @@ impl Object {
     /// The object moved `dx` east on the plane (rebuilt from its moved geometry).
     fn shifted(&self, dx: f64) -> Object {
         let mut o = match &self.motion {
-            Motion::Static { ring, .. } => Object::area(
-                self.owner,
-                ring.iter().map(|p| [p[0] + dx, p[1]]).collect(),
-                self.t0,
-                self.t1,
-            ),
+            Motion::Static { ring, holes, .. } => {
+                let mv = |r: &[Merc]| r.iter().map(|p| [p[0] + dx, p[1]]).collect();
+                Object::area_with_holes(
+                    self.owner,
+                    mv(ring),
+                    holes.iter().map(|h| mv(h)).collect(),
+                    self.t0,
+                    self.t1,
+                )
+            }
             Motion::Moving(leg) => Object::leg(self.owner, leg.shifted(dx)),
         };
         o.earth = self.earth;
         o
+    }
+
+    /// The holes of a static area (clockwise); none for a leg.
+    pub fn holes(&self) -> &[Vec<Merc>] {
+        match &self.motion {
+            Motion::Static { holes, .. } => holes,
+            Motion::Moving(_) => &[],
+        }
     }
 
     /// Is the object moving?

@@ -3,6 +3,7 @@
 
 use super::{stage1, stage2, stage3, stage4, Object};
 use crate::sphere::Merc;
+use rayon::prelude::*;
 use std::time::Instant;
 
 /// Options of the pipeline.
@@ -106,15 +107,24 @@ pub fn run(objects: &[Object], opts: Options) -> (Vec<Conflict>, Stats) {
             stage4::Method::AreaOverlap => {}
         }
     }
-    let mut conflicts = merge(objects, intervals);
-    // on the Earth, every region within [−π, π] of longitude, cut at the antimeridian
-    if objects.iter().any(|o| o.earth) {
-        for c in &mut conflicts {
-            if !c.rings.is_empty() {
-                c.rings = super::geom::earth_rings(std::mem::take(&mut c.rings));
-            }
+    // the answer's regions where an object is not convex: exact pieces instead of the
+    // clip stage 3 used (see stage2::exact_rings)
+    let mut intervals = intervals;
+    intervals.intervals.par_iter_mut().for_each(|iv| {
+        let (a, b) = (&objects[iv.pair.0 as usize], &objects[iv.pair.1 as usize]);
+        if !iv.rings.is_empty() && a.is_convex() != b.is_convex() {
+            iv.rings = stage2::exact_rings(a, b);
         }
-    }
+    });
+    let mut conflicts = merge(objects, intervals);
+    // the reported regions valid: pieces united; on the Earth every region within
+    // [−π, π] of longitude, cut at the antimeridian
+    let earth = objects.iter().any(|o| o.earth);
+    conflicts.par_iter_mut().for_each(|c| {
+        if !c.rings.is_empty() {
+            c.rings = super::geom::region(std::mem::take(&mut c.rings), earth);
+        }
+    });
     (conflicts, stats)
 }
 

@@ -2,7 +2,7 @@
 
 use super::{geom, stage1::Candidates, Object};
 use crate::sphere::Merc;
-use geo::{BooleanOps, Intersects, LineString, Polygon};
+use geo::{BooleanOps, LineString, Polygon};
 use rayon::prelude::*;
 
 /// Stage 2's output for one surviving pair: `A^{ij} = Γ^i ∩ Γ^j` (eq 9) as rings whose
@@ -23,12 +23,16 @@ pub struct Regions {
     pub regions: Vec<Region>,
 }
 
-fn to_geo(ring: &[Merc]) -> Polygon<f64> {
+fn line(ring: &[Merc]) -> LineString<f64> {
     let mut pts: Vec<(f64, f64)> = ring.iter().map(|p| (p[0], p[1])).collect();
     if let Some(&first) = pts.first() {
         pts.push(first);
     }
-    Polygon::new(LineString::from(pts), vec![])
+    LineString::from(pts)
+}
+
+fn to_geo(ring: &[Merc], holes: &[Vec<Merc>]) -> Polygon<f64> {
+    Polygon::new(line(ring), holes.iter().map(|h| line(h)).collect())
 }
 
 /// Paper B eq 9 for one pair: `None` when the closed regions are disjoint. Convex–convex
@@ -53,43 +57,74 @@ pub fn region(a: &Object, b: &Object, static_region: bool) -> Option<Vec<Vec<Mer
         let rings = if c.len() >= 3 { vec![c] } else { vec![] };
         return Some(rings);
     }
-    // A non-convex area against a convex region: Sutherland–Hodgman with the convex one
-    // as clipper. The output ring may contain zero-width bridges along the clipper's
-    // edges where the true intersection has several pieces; its vertices include every
-    // vertex of the true intersection (plus, possibly, clipper corners on a bridge, inside
-    // the convex region), so stage 3's projections (eq 10) stay conservative.
+    // A non-convex area (perhaps with holes) against a convex region: Sutherland–Hodgman
+    // with the convex one as clipper, on the exterior ring and on each hole. The output
+    // ring may contain zero-width bridges along the clipper's edges where the true
+    // intersection has several pieces; its vertices include every vertex of the true
+    // intersection (plus, possibly, clipper corners on a bridge, inside the convex
+    // region), so stage 3's projections (eq 10) stay conservative. The clipped holes
+    // follow as clockwise rings.
     if a.is_convex() || b.is_convex() {
         let (subject, clipper) = if b.is_convex() { (a, b) } else { (b, a) };
-        if !geom::rings_intersect(&subject.sweep, &clipper.sweep) {
+        if !geom::areas_meet(&subject.sweep, subject.holes(), &clipper.sweep, &[]) {
             return None;
         }
         if both_static && !static_region {
             return Some(Vec::new());
         }
         let c = geom::clip_convex(&subject.sweep, &clipper.sweep);
-        let rings = if c.len() >= 3 { vec![c] } else { vec![] };
+        let mut rings = if c.len() >= 3 { vec![c] } else { vec![] };
+        if !rings.is_empty() {
+            rings.extend(
+                subject
+                    .holes()
+                    .iter()
+                    .map(|h| geom::clip_convex(h, &clipper.sweep))
+                    .filter(|h| h.len() >= 3),
+            );
+        }
         return Some(rings);
     }
-    if !static_region {
-        return geom::rings_intersect(&a.sweep, &b.sweep).then(Vec::new);
-    }
-    let (pa, pb) = (to_geo(&a.sweep), to_geo(&b.sweep));
-    if !pa.intersects(&pb) {
+    if !geom::areas_meet(&a.sweep, a.holes(), &b.sweep, b.holes()) {
         return None;
     }
+    if !static_region {
+        return Some(Vec::new());
+    }
+    Some(exact_rings(a, b))
+}
+
+/// Paper B eq 9 by `geo`'s boolean operations: `Γ^i ∩ Γ^j`, holes included, as
+/// counter-clockwise exteriors each followed by its clockwise holes. For the answer's
+/// region where an object is not convex (the Sutherland–Hodgman clip stage 3 uses may
+/// carry zero-width bridges, which no union removes once rounding has given them a
+/// width); also stage 2's region of two non-convex static areas.
+pub fn exact_rings(a: &Object, b: &Object) -> Vec<Vec<Merc>> {
+    let (pa, pb) = (to_geo(&a.sweep, a.holes()), to_geo(&b.sweep, b.holes()));
     let mp = pa.intersection(&pb);
-    let rings =
-        mp.0.iter()
-            .map(|p| {
-                let mut r: Vec<Merc> = p.exterior().coords().map(|c| [c.x, c.y]).collect();
-                if r.len() > 1 && r.first() == r.last() {
-                    r.pop();
-                }
-                geom::ccw(r)
-            })
-            .filter(|r| r.len() >= 3)
-            .collect();
-    Some(rings)
+    let open = |l: &LineString<f64>| {
+        let mut r: Vec<Merc> = l.coords().map(|c| [c.x, c.y]).collect();
+        if r.len() > 1 && r.first() == r.last() {
+            r.pop();
+        }
+        r
+    };
+    let mut rings = Vec::new();
+    for p in &mp.0 {
+        let r = geom::ccw(open(p.exterior()));
+        if r.len() < 3 {
+            continue;
+        }
+        rings.push(r);
+        for h in p.interiors() {
+            let mut h = geom::ccw(open(h));
+            h.reverse();
+            if h.len() >= 3 {
+                rings.push(h);
+            }
+        }
+    }
+    rings
 }
 
 /// Paper B Section IV-C over all candidates, in parallel (rayon). `static_regions`: see

@@ -148,7 +148,7 @@ fn advance(a: &Object, b: &Object, from: f64, to: f64, tol: f64) -> Option<f64> 
     loop {
         a.vertices_at(t, &mut va);
         b.vertices_at(t, &mut vb);
-        let Some((d, n)) = geom::closest(&va, &vb, convex) else {
+        let Some((d, n)) = geom::closest_holed(&va, a.holes(), &vb, b.holes(), convex) else {
             return Some(t);
         };
         let mut step = d / rate_any;

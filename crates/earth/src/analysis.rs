@@ -1,7 +1,7 @@
 //! Paper B Algorithm 1 on a scenario GeoJSON (docs/scenario.md): the conflicts answer of
 //! that spec, and an SVG drawing of the scenario and its conflicts.
 
-use crate::conflict::{pipeline, stage4::Method, Motion, Object};
+use crate::conflict::{pipeline, stage4::Method, Object};
 use crate::scenario::{self, Scenario, ScenarioError, ScenarioWarning};
 use crate::sphere::{inverse_mercator, Merc};
 use serde_json::{json, Value};
@@ -343,119 +343,6 @@ pub fn analyse_with(
         objects,
         conflicts,
     })
-}
-
-/// An SVG drawing in the Mercator plane: areas blue, track rectangles' swept hulls dashed
-/// green with the reference track solid, conflict regions red.
-pub fn svg(sc: &Scenario, objects: &[Object], conflicts: &[pipeline::Conflict]) -> String {
-    let mut b = [
-        f64::INFINITY,
-        f64::INFINITY,
-        f64::NEG_INFINITY,
-        f64::NEG_INFINITY,
-    ];
-    // each object once: its first copy on the Earth (Object::on_earth)
-    let objects: Vec<&Object> = objects.iter().filter(|o| o.copy == 0).collect();
-    // On the Earth every object and region is drawn moved by whole turns to lie within
-    // half a turn of the scenario's mean longitude (its circular mean), so that objects
-    // meeting across the antimeridian are drawn side by side.
-    let mid = |r: [f64; 4]| 0.5 * (r[0] + r[2]);
-    let (sin, cos) = objects.iter().fold((0.0, 0.0), |(s, c), o| {
-        (s + mid(o.aabb).sin(), c + mid(o.aabb).cos())
-    });
-    let centre = sin.atan2(cos);
-    let earth = sc.longitudes == crate::scenario::Longitudes::Earth;
-    let turn = |x: f64| {
-        let k = ((x - centre) / std::f64::consts::TAU).round();
-        if earth && k.is_finite() {
-            -std::f64::consts::TAU * k
-        } else {
-            0.0
-        }
-    };
-    for o in &objects {
-        let dx = turn(mid(o.aabb));
-        b[0] = b[0].min(o.aabb[0] + dx);
-        b[1] = b[1].min(o.aabb[1]);
-        b[2] = b[2].max(o.aabb[2] + dx);
-        b[3] = b[3].max(o.aabb[3]);
-    }
-    let size = 1000.0;
-    let span = (b[2] - b[0]).max(b[3] - b[1]).max(f64::MIN_POSITIVE);
-    let k = size / span;
-    let pt = |p: Merc, dx: f64| ((p[0] + dx - b[0]) * k, (b[3] - p[1]) * k);
-    let path = |ring: &[Merc], dx: f64| {
-        let mut s = String::new();
-        for (i, &p) in ring.iter().enumerate() {
-            let (x, y) = pt(p, dx);
-            let _ = write!(s, "{}{x:.2},{y:.2} ", if i == 0 { "M" } else { "L" });
-        }
-        s.push('Z');
-        s
-    };
-    let mut out = format!(
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"-10 -10 {} {}\">\n",
-        size + 20.0,
-        size + 20.0
-    );
-    // features take turns in the paper's colours (blue, green) and two more
-    const PALETTE: [&str; 4] = ["blue", "green", "purple", "darkorange"];
-    for o in &objects {
-        let id = &sc.features[o.owner as usize].id;
-        let colour = PALETTE[o.owner as usize % PALETTE.len()];
-        let dx = turn(mid(o.aabb));
-        match &o.motion {
-            Motion::Static { ring, holes, .. } => {
-                // the holes as more subpaths of the same path
-                let mut d = path(ring, dx);
-                for h in holes {
-                    d.push(' ');
-                    d.push_str(&path(h, dx));
-                }
-                let _ = writeln!(
-                    out,
-                    "<path d=\"{d}\" fill=\"none\" stroke=\"{colour}\"><title>{id}</title></path>"
-                );
-            }
-            Motion::Moving(leg) => {
-                let _ = writeln!(
-                    out,
-                    "<path d=\"{}\" fill=\"none\" stroke=\"{colour}\" stroke-dasharray=\"4 3\"><title>{id}</title></path>",
-                    path(&o.sweep, dx)
-                );
-                let (x0, y0) = pt(crate::sphere::mercator(leg.start), dx);
-                let (x1, y1) = pt(crate::sphere::mercator(leg.end), dx);
-                let _ = writeln!(
-                    out,
-                    "<line x1=\"{x0:.2}\" y1=\"{y0:.2}\" x2=\"{x1:.2}\" y2=\"{y1:.2}\" stroke=\"{colour}\"/>"
-                );
-                for t in [leg.t0, leg.t1] {
-                    let _ = writeln!(
-                        out,
-                        "<path d=\"{}\" fill=\"none\" stroke=\"{colour}\"/>",
-                        path(&leg.merc_vertices_at(t), dx)
-                    );
-                }
-            }
-        }
-    }
-    for c in conflicts {
-        // one path per polygon, its holes as subpaths (even-odd: a hole is not filled)
-        for (ext, holes) in crate::conflict::geom::polygons(&c.rings) {
-            let dx = turn(mid(crate::conflict::geom::bbox(&ext)));
-            let mut d = path(&ext, dx);
-            for h in &holes {
-                d.push(' ');
-                d.push_str(&path(h, dx));
-            }
-            let _ = writeln!(
-                out,
-                "<path d=\"{d}\" fill=\"red\" fill-opacity=\"0.3\" fill-rule=\"evenodd\" stroke=\"red\" stroke-dasharray=\"2 2\"/>"
-            );
-        }
-    }
-    out.push_str("</svg>\n");
-    out
 }
 
 #[cfg(test)]

@@ -19,6 +19,7 @@ pub mod analysis;
 pub mod conflict;
 pub mod generate;
 pub mod json;
+pub mod picture;
 pub mod reference;
 pub mod scenario;
 pub mod sphere;

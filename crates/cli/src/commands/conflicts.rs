@@ -1,7 +1,8 @@
 //! `polyguard conflicts SCENARIO`: Paper B Algorithm 1 on a scenario GeoJSON
 //! (docs/scenario.md), writing the answer JSON of that spec.
 
-use polyguard_earth::analysis::{analyse_with, svg, Analysis, Progress};
+use polyguard_earth::analysis::{analyse_with, Analysis, Progress};
+use polyguard_earth::picture;
 use serde_json::Value;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -22,9 +23,14 @@ pub struct ConflictsArgs {
     /// Write the answer here instead of standard output.
     #[arg(long, short)]
     pub output: Option<PathBuf>,
-    /// Draw areas, tracks, swept hulls and conflict regions (like the paper's Figs 2–5).
+    /// Draw areas, tracks, swept hulls and conflict regions with their windows, on a
+    /// longitude–latitude graticule with a legend (like the paper's Figs 2–5).
     #[arg(long)]
     pub svg: Option<PathBuf>,
+    /// In the --svg picture, also stage 1's bounding boxes and stage 3's projections of
+    /// the regions onto the tracks.
+    #[arg(long, requires = "svg")]
+    pub svg_detail: bool,
     /// Stage 4 time tolerance in seconds.
     #[arg(long, default_value_t = 1.0)]
     pub tolerance_s: f64,
@@ -133,7 +139,17 @@ pub fn run(args: &ConflictsArgs) -> ExitCode {
         return ExitCode::from(EXIT_FATAL);
     }
     if let Some(p) = &args.svg {
-        if let Err(e) = std::fs::write(p, svg(&sc, &objects, &conflicts)) {
+        if let Err(e) = std::fs::write(
+            p,
+            picture::svg(
+                &sc,
+                &objects,
+                &conflicts,
+                picture::Options {
+                    detail: args.svg_detail,
+                },
+            ),
+        ) {
             eprintln!("polyguard conflicts: writing {}: {e}", p.display());
             return ExitCode::from(EXIT_FATAL);
         }

@@ -480,6 +480,9 @@ fn scenarios_and_their_conflicts_answers_validate() {
             assert_valid(&answer, &format!("the answer for {what} {extra:?}"), &value);
             n_answers += 1;
             for c in value["conflicts"].as_array().expect("conflicts") {
+                // --no-regions drops the member; otherwise it is always there
+                let has = c.as_object().is_some_and(|o| o.contains_key("region"));
+                assert_eq!(has, extra.is_empty(), "{what} {extra:?}: {c}");
                 n_conflicts += 1;
                 regions.insert(c["region"]["type"].as_str().unwrap_or("null").to_owned());
             }

@@ -142,96 +142,128 @@ pub fn answer(
 ) -> String {
     let per = if regions { 640 } else { 200 };
     let mut out = String::with_capacity(1024 + conflicts.len() * per);
-    out.push_str("{\"conflicts\":[");
+    out.push_str(ANSWER_HEAD);
     for (k, c) in conflicts.iter().enumerate() {
         if k > 0 {
             out.push(',');
         }
-        let (decided_by, method) = match c.method {
-            Method::AreaOverlap => ("area_overlap", "area_overlap"),
-            Method::Linear => ("time_of_intersection", "exact_linear"),
-            Method::Advancement => ("time_of_intersection", "certified_advancement"),
-        };
-        out.push_str("\n{\"a\":");
-        string(&mut out, &scenario.features[c.a as usize].id);
-        out.push_str(",\"b\":");
-        string(&mut out, &scenario.features[c.b as usize].id);
-        out.push_str(",\"t_start\":");
-        num(&mut out, c.t_start);
-        out.push_str(",\"t_end\":");
-        num(&mut out, c.t_end);
-        let _ = write!(
-            out,
-            ",\"decided_by\":\"{decided_by}\",\"method\":\"{method}\",\"projection_windows\":"
-        );
-        // not computed with --no-regions: null, not a pair of "no window"s
-        if !regions {
-            out.push_str("null");
-        } else {
-            out.push('[');
-        }
-        for (i, w) in c.paper.iter().enumerate().filter(|_| regions) {
-            if i > 0 {
-                out.push(',');
-            }
-            match w {
-                Some((a, b)) => {
-                    out.push('[');
-                    num(&mut out, *a);
-                    out.push(',');
-                    num(&mut out, *b);
-                    out.push(']');
-                }
-                None => out.push_str("null"),
-            }
-        }
-        if regions {
-            out.push(']');
-        }
-        out.push_str(",\"region\":");
-        // each counterclockwise ring starts a polygon, the clockwise ones after it are
-        // its holes (crate::conflict::geom::region)
-        let polys: Vec<PrintedPolygon> = if regions {
-            crate::conflict::geom::polygons(&c.rings)
-                .iter()
-                .map(|(ext, holes)| {
-                    let holes = holes.iter().map(|h| printed_ring(h));
-                    (printed_ring(ext), holes.filter(|h| !h.is_empty()).collect())
-                })
-                .filter(|(ext, _)| !ext.is_empty())
-                .collect()
-        } else {
-            Vec::new()
-        };
-        let polygon = |out: &mut String, (ext, holes): &PrintedPolygon| {
-            out.push('[');
-            ring_lonlat(out, ext);
-            for h in holes {
-                out.push(',');
-                ring_lonlat(out, h);
-            }
-            out.push(']');
-        };
-        match polys.as_slice() {
-            [] => out.push_str("null"),
-            [one] => {
-                out.push_str("{\"type\":\"Polygon\",\"coordinates\":");
-                polygon(&mut out, one);
-                out.push('}');
-            }
-            many => {
-                out.push_str("{\"type\":\"MultiPolygon\",\"coordinates\":[");
-                for (i, p) in many.iter().enumerate() {
-                    if i > 0 {
-                        out.push(',');
-                    }
-                    polygon(&mut out, p);
-                }
-                out.push_str("]}");
-            }
-        }
-        out.push('}');
+        conflict_json(&mut out, scenario, c, regions);
     }
+    answer_tail(
+        &mut out,
+        scenario,
+        conflicts.len(),
+        stats,
+        errors,
+        warnings,
+        extra_ms,
+    );
+    out
+}
+
+/// How the answer starts.
+const ANSWER_HEAD: &str = "{\"conflicts\":[";
+
+/// One conflict of the answer, on a line of its own (the comma before it is the caller's).
+fn conflict_json(out: &mut String, scenario: &Scenario, c: &pipeline::Conflict, regions: bool) {
+    let (decided_by, method) = match c.method {
+        Method::AreaOverlap => ("area_overlap", "area_overlap"),
+        Method::Linear => ("time_of_intersection", "exact_linear"),
+        Method::Advancement => ("time_of_intersection", "certified_advancement"),
+    };
+    out.push_str("\n{\"a\":");
+    string(out, &scenario.features[c.a as usize].id);
+    out.push_str(",\"b\":");
+    string(out, &scenario.features[c.b as usize].id);
+    out.push_str(",\"t_start\":");
+    num(out, c.t_start);
+    out.push_str(",\"t_end\":");
+    num(out, c.t_end);
+    let _ = write!(
+        out,
+        ",\"decided_by\":\"{decided_by}\",\"method\":\"{method}\",\"projection_windows\":"
+    );
+    // not computed with --no-regions: null, not a pair of "no window"s
+    if !regions {
+        out.push_str("null");
+    } else {
+        out.push('[');
+    }
+    for (i, w) in c.paper.iter().enumerate().filter(|_| regions) {
+        if i > 0 {
+            out.push(',');
+        }
+        match w {
+            Some((a, b)) => {
+                out.push('[');
+                num(out, *a);
+                out.push(',');
+                num(out, *b);
+                out.push(']');
+            }
+            None => out.push_str("null"),
+        }
+    }
+    if regions {
+        out.push(']');
+    }
+    // --no-regions: no region member at all (the answer of a dense scenario is
+    // gigabytes of `"region": null` otherwise)
+    if !regions {
+        out.push('}');
+        return;
+    }
+    out.push_str(",\"region\":");
+    // each counterclockwise ring starts a polygon, the clockwise ones after it are
+    // its holes (crate::conflict::geom::region)
+    let polys: Vec<PrintedPolygon> = crate::conflict::geom::polygons(&c.rings)
+        .iter()
+        .map(|(ext, holes)| {
+            let holes = holes.iter().map(|h| printed_ring(h));
+            (printed_ring(ext), holes.filter(|h| !h.is_empty()).collect())
+        })
+        .filter(|(ext, _)| !ext.is_empty())
+        .collect();
+    let polygon = |out: &mut String, (ext, holes): &PrintedPolygon| {
+        out.push('[');
+        ring_lonlat(out, ext);
+        for h in holes {
+            out.push(',');
+            ring_lonlat(out, h);
+        }
+        out.push(']');
+    };
+    match polys.as_slice() {
+        [] => out.push_str("null"),
+        [one] => {
+            out.push_str("{\"type\":\"Polygon\",\"coordinates\":");
+            polygon(out, one);
+            out.push('}');
+        }
+        many => {
+            out.push_str("{\"type\":\"MultiPolygon\",\"coordinates\":[");
+            for (i, p) in many.iter().enumerate() {
+                if i > 0 {
+                    out.push(',');
+                }
+                polygon(out, p);
+            }
+            out.push_str("]}");
+        }
+    }
+    out.push('}');
+}
+
+/// The answer after its conflicts: stats, errors, warnings.
+fn answer_tail(
+    out: &mut String,
+    scenario: &Scenario,
+    conflicts: usize,
+    stats: &pipeline::Stats,
+    errors: &[ScenarioError],
+    warnings: &[ScenarioWarning],
+    extra_ms: (f64, f64, f64),
+) {
     let (parse_ms, objects_ms, total_ms) = extra_ms;
     let stats_v = json!({
         "objects": scenario.features.len(),
@@ -242,7 +274,7 @@ pub fn answer(
         "interval_pairs": stats.interval_pairs,
         "exact_linear_pairs": stats.linear_pairs,
         "advancement_pairs": stats.advancement_pairs,
-        "conflicts": conflicts.len(),
+        "conflicts": conflicts,
         "rejected_features": errors.len(),
         "timings_ms": {
             "parse": parse_ms,
@@ -274,7 +306,100 @@ pub fn answer(
         Value::from(errors_v),
         Value::from(warnings_v)
     );
-    out
+}
+
+/// What [`analyse_into`] gives back: everything but the conflicts, which went to the
+/// writer.
+#[derive(Debug)]
+pub struct Summary {
+    /// Rejected features.
+    pub errors: Vec<ScenarioError>,
+    /// Members kept but not read.
+    pub warnings: Vec<ScenarioWarning>,
+    /// How many conflicts were written.
+    pub conflicts: usize,
+    /// The pipeline's counts and timings.
+    pub stats: pipeline::Stats,
+}
+
+/// [`analyse_with`], the answer written to `out` as each block of features is done
+/// ([`pipeline::run_blocks`]): memory holds one block's conflicts, never the whole answer
+/// (issue "any density in bounded memory"). The text written is the answer
+/// [`analyse_with`] gives, timings apart. `Err` when the text is not a collection
+/// (nothing is written then); the inner `Err` when writing fails (the answer is cut).
+pub fn analyse_into(
+    text: &str,
+    tolerance_h: f64,
+    regions: bool,
+    out: &mut dyn std::io::Write,
+    progress: &mut dyn Progress,
+) -> Result<std::io::Result<Summary>, ScenarioError> {
+    let t_all = Instant::now();
+    let scenario::Read {
+        scenario: sc,
+        errors,
+        warnings,
+    } = scenario::parse(text)?;
+    let parse_ms = t_all.elapsed().as_secs_f64() * 1e3;
+    let t_obj = Instant::now();
+    let objects = scenario::objects(&sc);
+    let objects_ms = t_obj.elapsed().as_secs_f64() * 1e3;
+    progress.stages_start(objects.len());
+    let mut failed: Option<std::io::Error> = None;
+    let mut count = 0usize;
+    if let Err(e) = out.write_all(ANSWER_HEAD.as_bytes()) {
+        return Ok(Err(e));
+    }
+    let mut buf = String::new();
+    let stats = pipeline::run_blocks(
+        &objects,
+        pipeline::Options {
+            tolerance_h,
+            details: regions,
+            ..pipeline::Options::default()
+        },
+        &mut |block| {
+            if failed.is_some() {
+                return;
+            }
+            buf.clear();
+            for c in &block {
+                if count > 0 {
+                    buf.push(',');
+                }
+                conflict_json(&mut buf, &sc, c, regions);
+                count += 1;
+            }
+            if let Err(e) = out.write_all(buf.as_bytes()) {
+                failed = Some(e);
+            }
+        },
+    );
+    progress.stages_end();
+    if let Some(e) = failed {
+        return Ok(Err(e));
+    }
+    let total_ms = t_all.elapsed().as_secs_f64() * 1e3;
+    buf.clear();
+    answer_tail(
+        &mut buf,
+        &sc,
+        count,
+        &stats,
+        &errors,
+        &warnings,
+        (parse_ms, objects_ms, total_ms),
+    );
+    buf.push('\n');
+    Ok(out
+        .write_all(buf.as_bytes())
+        .and_then(|()| out.flush())
+        .map(|()| Summary {
+            errors,
+            warnings,
+            conflicts: count,
+            stats,
+        }))
 }
 
 /// Everything `conflicts` computes for one scenario.
@@ -322,6 +447,7 @@ pub fn analyse_with(
         pipeline::Options {
             tolerance_h,
             details: regions,
+            ..pipeline::Options::default()
         },
     );
     progress.stages_end();

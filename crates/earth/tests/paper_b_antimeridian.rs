@@ -215,3 +215,33 @@ fn turning_the_earth_changes_no_conflict() {
         }
     }
 }
+
+/// The pipeline in blocks of a few features gives the conflicts of one block, in the
+/// same order (feature pairs), on a scenario that straddles the antimeridian (copies of
+/// objects a turn away belong to their feature's block).
+#[test]
+fn blocks_change_no_conflict() {
+    use polyguard_earth::conflict::pipeline::{run, Options};
+    let sc = turned(&generate(300, Mix::Mixed, false, &mut rng(7)), 195.0);
+    let objects = polyguard_earth::scenario::objects(&sc);
+    let whole = Options {
+        block_objects: usize::MAX,
+        ..Options::default()
+    };
+    let (one, s1) = run(&objects, whole);
+    assert!(one.len() > 20, "{} conflicts", one.len());
+    for block_objects in [1, 7, 64] {
+        let (got, s) = run(
+            &objects,
+            Options {
+                block_objects,
+                ..whole
+            },
+        );
+        assert_eq!(got, one, "blocks of {block_objects}");
+        assert_eq!(
+            (s.candidate_pairs, s.region_pairs, s.interval_pairs),
+            (s1.candidate_pairs, s1.region_pairs, s1.interval_pairs)
+        );
+    }
+}

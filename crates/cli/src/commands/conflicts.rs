@@ -1,7 +1,7 @@
 //! `polyguard conflicts SCENARIO`: Paper B Algorithm 1 on a scenario GeoJSON
 //! (docs/scenario.md), writing the answer JSON of that spec.
 
-use polyguard_earth::analysis::{analyse_with, Analysis, Progress};
+use polyguard_earth::analysis::{analyse_into, analyse_with, Analysis, Progress};
 use polyguard_earth::picture;
 use serde_json::Value;
 use std::path::PathBuf;
@@ -92,6 +92,9 @@ pub fn run(args: &ConflictsArgs) -> ExitCode {
         eprintln!("polyguard conflicts: --tolerance-s must be a positive number");
         return ExitCode::from(EXIT_FATAL);
     }
+    if args.svg.is_none() && !args.pretty {
+        return streamed(args, &text);
+    }
     let Analysis {
         answer,
         errors,
@@ -163,4 +166,53 @@ pub fn run(args: &ConflictsArgs) -> ExitCode {
     // cost more than the four stages on large inputs, and the OS reclaims them at once.
     std::mem::forget((sc, objects, conflicts));
     code
+}
+
+/// The answer written as the pipeline goes, a block of features at a time: memory holds
+/// one block's conflicts, not the answer (which may be gigabytes).
+fn streamed(args: &ConflictsArgs, text: &str) -> ExitCode {
+    let mut sink: Box<dyn std::io::Write> = match &args.output {
+        Some(p) => match std::fs::File::create(p) {
+            Ok(f) => Box::new(std::io::BufWriter::with_capacity(1 << 20, f)),
+            Err(e) => {
+                eprintln!("polyguard conflicts: {}: {e}", p.display());
+                return ExitCode::from(EXIT_FATAL);
+            }
+        },
+        None => Box::new(std::io::BufWriter::with_capacity(
+            1 << 20,
+            std::io::stdout().lock(),
+        )),
+    };
+    let summary = match analyse_into(
+        text,
+        args.tolerance_s / 3600.0,
+        !args.no_regions,
+        &mut sink,
+        &mut Spinner {
+            show: !args.quiet,
+            bar: None,
+        },
+    ) {
+        Ok(Ok(s)) => s,
+        Ok(Err(e)) => {
+            eprintln!("polyguard conflicts: writing the answer: {e}");
+            return ExitCode::from(EXIT_FATAL);
+        }
+        Err(e) => {
+            eprintln!("polyguard conflicts: {}: {e}", args.scenario.display());
+            return ExitCode::from(EXIT_FATAL);
+        }
+    };
+    for w in &summary.warnings {
+        eprintln!("polyguard conflicts: warning: {w}");
+    }
+    for e in &summary.errors {
+        eprintln!("polyguard conflicts: {e}");
+    }
+    if summary.errors.is_empty() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(EXIT_BAD_FEATURES)
+    }
 }

@@ -14,6 +14,8 @@ pub struct Options {
     /// Compute what is only reported: the regions of static–static pairs and the paper's
     /// stage 3 windows.
     pub details: bool,
+    /// Objects per block of [`run_blocks`] (at least; a block ends with a feature).
+    pub block_objects: usize,
 }
 
 impl Default for Options {
@@ -21,6 +23,7 @@ impl Default for Options {
         Options {
             tolerance_h: super::DEFAULT_TIME_TOLERANCE_H,
             details: true,
+            block_objects: BLOCK_OBJECTS,
         }
     }
 }
@@ -75,31 +78,83 @@ fn ms(t: Instant) -> f64 {
     t.elapsed().as_secs_f64() * 1e3
 }
 
-/// Paper B Algorithm 1 over `objects`.
+/// Objects per block of [`run_blocks`] (whole features: a block ends at a feature's last
+/// object).
+pub const BLOCK_OBJECTS: usize = 8192;
+
+/// Paper B Algorithm 1 over `objects`: the conflicts in one vector, ordered by feature
+/// pair ([`run_blocks`] collected).
 pub fn run(objects: &[Object], opts: Options) -> (Vec<Conflict>, Stats) {
+    let mut all = Vec::new();
+    let stats = run_blocks(objects, opts, &mut |c| all.extend(c));
+    (all, stats)
+}
+
+/// Paper B Algorithm 1 over `objects`, a block of whole features at a time: stage 1 finds
+/// the pairs whose first object lies in the block ([`stage1::Index`]), stages 2–4 and the
+/// merge per feature pair follow, and `sink` gets the block's conflicts, ordered by
+/// feature pair. Memory holds one block's pairs and conflicts, whatever their total
+/// (issue "any density in bounded memory"). The objects of a feature must be
+/// consecutive and in feature order, as [`crate::scenario::objects`] makes them (a
+/// feature pair's object pairs then all start in the block of its first feature);
+/// otherwise the whole is one block.
+pub fn run_blocks(objects: &[Object], opts: Options, sink: &mut dyn FnMut(Vec<Conflict>)) -> Stats {
     let mut stats = Stats {
         objects: objects.len(),
         ..Stats::default()
     };
     let t = Instant::now();
-    let cands = stage1::candidates(objects);
-    stats.stage1_ms = ms(t);
-    stats.candidate_pairs = cands.pairs.len();
+    let index = stage1::Index::new(objects);
+    stats.stage1_ms += ms(t);
+    let grouped = objects.windows(2).all(|w| w[0].owner <= w[1].owner);
+    let earth = objects.iter().any(|o| o.earth);
+    let mut start = 0;
+    while start < objects.len() {
+        let mut end = if grouped {
+            start
+                .saturating_add(opts.block_objects.max(1))
+                .min(objects.len())
+        } else {
+            objects.len()
+        };
+        while end < objects.len() && objects[end].owner == objects[end - 1].owner {
+            end += 1;
+        }
+        sink(block(objects, &index, start..end, opts, earth, &mut stats));
+        start = end;
+    }
+    stats
+}
+
+/// The four stages and the merge for the pairs that start in `range`.
+fn block(
+    objects: &[Object],
+    index: &stage1::Index,
+    range: std::ops::Range<usize>,
+    opts: Options,
+    earth: bool,
+    stats: &mut Stats,
+) -> Vec<Conflict> {
+    let t = Instant::now();
+    let cands = index.candidates(objects, range);
+    stats.stage1_ms += ms(t);
+    stats.candidate_pairs += cands.pairs.len();
 
     let t = Instant::now();
     let regions = stage2::regions(objects, &cands, opts.details);
-    stats.stage2_ms = ms(t);
-    stats.region_pairs = regions.regions.len();
+    drop(cands);
+    stats.stage2_ms += ms(t);
+    stats.region_pairs += regions.regions.len();
 
     let t = Instant::now();
     let windows = stage3::windows(objects, regions, opts.details);
-    stats.stage3_ms = ms(t);
-    stats.window_pairs = windows.windows.len();
+    stats.stage3_ms += ms(t);
+    stats.window_pairs += windows.windows.len();
 
     let t = Instant::now();
     let intervals = stage4::intervals(objects, windows, opts.tolerance_h);
-    stats.stage4_ms = ms(t);
-    stats.interval_pairs = intervals.intervals.len();
+    stats.stage4_ms += ms(t);
+    stats.interval_pairs += intervals.intervals.len();
     for iv in &intervals.intervals {
         match iv.method {
             stage4::Method::Linear => stats.linear_pairs += 1,
@@ -119,13 +174,12 @@ pub fn run(objects: &[Object], opts: Options) -> (Vec<Conflict>, Stats) {
     let mut conflicts = merge(objects, intervals);
     // the reported regions valid: pieces united; on the Earth every region within
     // [−π, π] of longitude, cut at the antimeridian
-    let earth = objects.iter().any(|o| o.earth);
     conflicts.par_iter_mut().for_each(|c| {
         if !c.rings.is_empty() {
             c.rings = super::geom::region(std::mem::take(&mut c.rings), earth);
         }
     });
-    (conflicts, stats)
+    conflicts
 }
 
 /// Merges object-pair intervals into feature-pair conflicts (legs of multi-waypoint

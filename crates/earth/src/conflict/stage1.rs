@@ -111,6 +111,57 @@ pub fn candidates(objects: &[Object]) -> Candidates {
     Candidates { pairs }
 }
 
+/// Stage 1 over a block of objects (issue "any density in bounded memory"): one R-tree of
+/// every object's AABB, asked for the partners of the objects of a block, so that the
+/// pipeline holds the candidates of one block at a time.
+pub struct Index {
+    tree: RTree<Entry>,
+}
+
+impl Index {
+    /// The R-tree of the objects' AABBs (eqs 3–6).
+    pub fn new(objects: &[Object]) -> Index {
+        Index {
+            tree: RTree::bulk_load(
+                objects
+                    .iter()
+                    .enumerate()
+                    .map(|(i, o)| {
+                        let b = o.aabb;
+                        GeomWithData::new(
+                            Rectangle::from_corners([b[0], b[1]], [b[2], b[3]]),
+                            i as u32,
+                        )
+                    })
+                    .collect(),
+            ),
+        }
+    }
+
+    /// Algorithm 2 for the objects `block`: the pairs (i, j), i in the block and j > i,
+    /// whose AABBs meet (closed boxes) and which [`wanted`] keeps. Together over blocks
+    /// that cover the objects, the pairs of [`candidates`] (in another order).
+    pub fn candidates(&self, objects: &[Object], block: std::ops::Range<usize>) -> Candidates {
+        let pairs = block
+            .into_par_iter()
+            .flat_map_iter(|i| {
+                let b = objects[i].aabb;
+                let env = rstar::AABB::from_corners([b[0], b[1]], [b[2], b[3]]);
+                let i = i as u32;
+                self.tree
+                    .locate_in_envelope_intersecting(&env)
+                    .filter_map(move |e| {
+                        let j = e.data;
+                        (j > i && wanted(&objects[i as usize], &objects[j as usize]))
+                            .then_some((i, j))
+                    })
+                    .collect::<Vec<_>>()
+            })
+            .collect();
+        Candidates { pairs }
+    }
+}
+
 /// Paper B Algorithm 2 by brute force (all pairs), the reference for tests.
 pub fn candidates_brute(objects: &[Object]) -> Candidates {
     let mut pairs = Vec::new();

@@ -123,37 +123,48 @@ pub fn random_track(rng: &mut Bits<'_>, bx: ((f64, f64), (f64, f64))) -> Track {
 
 /// Paper B §VI.D: a random scenario of `n` objects.
 pub fn generate(n: usize, mix: Mix, density_box: bool, rng: &mut Bits<'_>) -> Scenario {
-    let bx = generation_box(n, density_box);
-    let features = (0..n)
-        .map(|i| {
-            let area = match mix {
-                Mix::Static => true,
-                Mix::Tracks => false,
-                Mix::Mixed => i % 2 == 0,
-            };
-            if area {
-                Feature {
-                    id: format!("a{i}"),
-                    kind: Kind::Area(random_area(rng, bx)),
-                    extra: Default::default(),
-                }
-            } else {
-                Feature {
-                    id: format!("t{i}"),
-                    kind: Kind::Track(random_track(rng, bx)),
-                    extra: Default::default(),
-                }
-            }
-        })
-        .collect();
-    // past ±180° the box is the unrolled strip (see the module's documentation)
-    let longitudes = if bx.0 .1 > 180.0 {
-        Longitudes::Unrolled
-    } else {
-        Longitudes::Earth
-    };
+    let mut features = Vec::with_capacity(n);
+    let longitudes = generate_each(n, mix, density_box, rng, &mut |f| features.push(f));
     Scenario {
         features,
         longitudes,
+    }
+}
+
+/// [`generate`], each feature handed to `each` as it is drawn (`generate --objects` writes
+/// them so, in memory that does not grow with `n`); returns the scenario's plane.
+pub fn generate_each(
+    n: usize,
+    mix: Mix,
+    density_box: bool,
+    rng: &mut Bits<'_>,
+    each: &mut dyn FnMut(Feature),
+) -> Longitudes {
+    let bx = generation_box(n, density_box);
+    for i in 0..n {
+        let area = match mix {
+            Mix::Static => true,
+            Mix::Tracks => false,
+            Mix::Mixed => i % 2 == 0,
+        };
+        each(if area {
+            Feature {
+                id: format!("a{i}"),
+                kind: Kind::Area(random_area(rng, bx)),
+                extra: Default::default(),
+            }
+        } else {
+            Feature {
+                id: format!("t{i}"),
+                kind: Kind::Track(random_track(rng, bx)),
+                extra: Default::default(),
+            }
+        });
+    }
+    // past ±180° the box is the unrolled strip (see the module's documentation)
+    if bx.0 .1 > 180.0 {
+        Longitudes::Unrolled
+    } else {
+        Longitudes::Earth
     }
 }

@@ -1563,59 +1563,59 @@ pub fn to_geojson(scenario: &Scenario) -> Value {
     let feats: Vec<Value> = scenario
         .features
         .iter()
-        .map(|f| match &f.kind {
-            Kind::Area(a) => {
-                let ring = |r: &[LonLat]| {
-                    let mut v: Vec<Value> =
-                        r.iter().map(|&p| pos(p, scenario.longitudes)).collect();
-                    if let Some(first) = v.first().cloned() {
-                        v.push(first);
-                    }
-                    Value::Array(v)
-                };
-                let polygon = |sh: &Shape| {
-                    Value::Array(
-                        std::iter::once(ring(&sh.ring))
-                            .chain(sh.holes.iter().map(|h| ring(h)))
-                            .collect(),
-                    )
-                };
-                let geometry = if a.multi {
-                    json!({"type": "MultiPolygon",
-                           "coordinates": a.shapes.iter().map(polygon).collect::<Vec<_>>()})
-                } else {
-                    json!({"type": "Polygon",
-                           "coordinates": a.shapes.first().map(polygon).unwrap_or(json!([]))})
-                };
-                let mut props = json!({"id": f.id, "kind": "area"});
-                extend(&mut props, &f.extra);
-                if let Some(t0) = a.t0 {
-                    props["t0"] = json!(t0);
-                }
-                if let Some(tf) = a.tf {
-                    props["tf"] = json!(tf);
-                }
-                json!({"type": "Feature", "properties": props, "geometry": geometry})
-            }
-            Kind::Track(t) => {
-                let line: Vec<Value> = t
-                    .waypoints
-                    .iter()
-                    .map(|&p| pos(p, scenario.longitudes))
-                    .collect();
-                let mut props = json!({"id": f.id, "kind": "track", "speed_kn": t.speed_kn,
-                                       "front_nm": t.dims.front, "back_nm": t.dims.back,
-                                       "side_nm": t.dims.side, "t0": t.t0});
-                extend(&mut props, &f.extra);
-                json!({"type": "Feature", "properties": props,
-                       "geometry": {"type": "LineString", "coordinates": line}})
-            }
-        })
+        .map(|f| feature_geojson(f, scenario.longitudes))
         .collect();
     match scenario.longitudes {
         Longitudes::Earth => json!({"type": "FeatureCollection", "features": feats}),
         Longitudes::Unrolled => json!({"type": "FeatureCollection", "longitudes": "unrolled",
                                        "features": feats}),
+    }
+}
+
+/// One feature of [`to_geojson`]'s collection on the plane `longitudes`.
+pub fn feature_geojson(f: &Feature, longitudes: Longitudes) -> Value {
+    match &f.kind {
+        Kind::Area(a) => {
+            let ring = |r: &[LonLat]| {
+                let mut v: Vec<Value> = r.iter().map(|&p| pos(p, longitudes)).collect();
+                if let Some(first) = v.first().cloned() {
+                    v.push(first);
+                }
+                Value::Array(v)
+            };
+            let polygon = |sh: &Shape| {
+                Value::Array(
+                    std::iter::once(ring(&sh.ring))
+                        .chain(sh.holes.iter().map(|h| ring(h)))
+                        .collect(),
+                )
+            };
+            let geometry = if a.multi {
+                json!({"type": "MultiPolygon",
+                       "coordinates": a.shapes.iter().map(polygon).collect::<Vec<_>>()})
+            } else {
+                json!({"type": "Polygon",
+                       "coordinates": a.shapes.first().map(polygon).unwrap_or(json!([]))})
+            };
+            let mut props = json!({"id": f.id, "kind": "area"});
+            extend(&mut props, &f.extra);
+            if let Some(t0) = a.t0 {
+                props["t0"] = json!(t0);
+            }
+            if let Some(tf) = a.tf {
+                props["tf"] = json!(tf);
+            }
+            json!({"type": "Feature", "properties": props, "geometry": geometry})
+        }
+        Kind::Track(t) => {
+            let line: Vec<Value> = t.waypoints.iter().map(|&p| pos(p, longitudes)).collect();
+            let mut props = json!({"id": f.id, "kind": "track", "speed_kn": t.speed_kn,
+                                   "front_nm": t.dims.front, "back_nm": t.dims.back,
+                                   "side_nm": t.dims.side, "t0": t.t0});
+            extend(&mut props, &f.extra);
+            json!({"type": "Feature", "properties": props,
+                   "geometry": {"type": "LineString", "coordinates": line}})
+        }
     }
 }
 

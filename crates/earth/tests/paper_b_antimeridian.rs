@@ -226,19 +226,30 @@ fn blocks_change_no_conflict() {
     let objects = polyguard_earth::scenario::objects(&sc);
     let whole = Options {
         block_objects: usize::MAX,
+        block_pairs: usize::MAX,
         ..Options::default()
     };
     let (one, s1) = run(&objects, whole);
     assert!(one.len() > 20, "{} conflicts", one.len());
-    for block_objects in [1, 7, 64] {
+    // blocks of a few objects, and blocks cut where their pairs reach a few dozen
+    for (block_objects, block_pairs) in [
+        (1, usize::MAX),
+        (7, usize::MAX),
+        (64, usize::MAX),
+        (usize::MAX, 40),
+    ] {
         let (got, s) = run(
             &objects,
             Options {
                 block_objects,
+                block_pairs,
                 ..whole
             },
         );
-        assert_eq!(got, one, "blocks of {block_objects}");
+        assert_eq!(
+            got, one,
+            "blocks of {block_objects} objects, {block_pairs} pairs"
+        );
         assert_eq!(
             (s.candidate_pairs, s.region_pairs, s.interval_pairs),
             (s1.candidate_pairs, s1.region_pairs, s1.interval_pairs)

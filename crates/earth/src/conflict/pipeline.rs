@@ -14,8 +14,10 @@ pub struct Options {
     /// Compute what is only reported: the regions of static–static pairs and the paper's
     /// stage 3 windows.
     pub details: bool,
-    /// Objects per block of [`run_blocks`] (at least; a block ends with a feature).
+    /// Objects per block of [`run_blocks`] at most (a block ends with a feature).
     pub block_objects: usize,
+    /// Candidate pairs per block of [`run_blocks`], about ([`BLOCK_PAIRS`]).
+    pub block_pairs: usize,
 }
 
 impl Default for Options {
@@ -24,6 +26,7 @@ impl Default for Options {
             tolerance_h: super::DEFAULT_TIME_TOLERANCE_H,
             details: true,
             block_objects: BLOCK_OBJECTS,
+            block_pairs: BLOCK_PAIRS,
         }
     }
 }
@@ -78,9 +81,14 @@ fn ms(t: Instant) -> f64 {
     t.elapsed().as_secs_f64() * 1e3
 }
 
-/// Objects per block of [`run_blocks`] (whole features: a block ends at a feature's last
-/// object).
+/// Objects per block of [`run_blocks`] at most (whole features: a block ends at a
+/// feature's last object).
 pub const BLOCK_OBJECTS: usize = 8192;
+
+/// Candidate pairs per block of [`run_blocks`], about: a block ends (with a feature) once
+/// its objects' pairs reach this many. Each pair costs a few hundred bytes through stages
+/// 2–4, so a block stays within some 100 MB however dense the scenario.
+pub const BLOCK_PAIRS: usize = 250_000;
 
 /// Paper B Algorithm 1 over `objects`: the conflicts in one vector, ordered by feature
 /// pair ([`run_blocks`] collected).
@@ -117,6 +125,23 @@ pub fn run_blocks(objects: &[Object], opts: Options, sink: &mut dyn FnMut(Vec<Co
         } else {
             objects.len()
         };
+        if grouped && end - start > 1 {
+            // fewer objects where they have many partners: the block's pairs about
+            // block_pairs (counted on the same R-tree)
+            let t = Instant::now();
+            let counts: Vec<usize> = (start..end)
+                .into_par_iter()
+                .map(|i| index.count(objects, i))
+                .collect();
+            stats.stage1_ms += ms(t);
+            let mut sum = 0usize;
+            if let Some(k) = counts.iter().position(|&c| {
+                sum += c;
+                sum >= opts.block_pairs
+            }) {
+                end = start + k + 1;
+            }
+        }
         while end < objects.len() && objects[end].owner == objects[end - 1].owner {
             end += 1;
         }

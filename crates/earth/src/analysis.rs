@@ -147,11 +147,11 @@ pub fn answer(
         if k > 0 {
             out.push(',');
         }
-        conflict_json(&mut out, scenario, c, regions);
+        conflict_json(&mut out, &|k| &scenario.features[k].id, c, regions);
     }
     answer_tail(
         &mut out,
-        scenario,
+        scenario.features.len(),
         conflicts.len(),
         stats,
         errors,
@@ -165,16 +165,21 @@ pub fn answer(
 const ANSWER_HEAD: &str = "{\"conflicts\":[";
 
 /// One conflict of the answer, on a line of its own (the comma before it is the caller's).
-fn conflict_json(out: &mut String, scenario: &Scenario, c: &pipeline::Conflict, regions: bool) {
+fn conflict_json<'a>(
+    out: &mut String,
+    id: &dyn Fn(usize) -> &'a str,
+    c: &pipeline::Conflict,
+    regions: bool,
+) {
     let (decided_by, method) = match c.method {
         Method::AreaOverlap => ("area_overlap", "area_overlap"),
         Method::Linear => ("time_of_intersection", "exact_linear"),
         Method::Advancement => ("time_of_intersection", "certified_advancement"),
     };
     out.push_str("\n{\"a\":");
-    string(out, &scenario.features[c.a as usize].id);
+    string(out, id(c.a as usize));
     out.push_str(",\"b\":");
-    string(out, &scenario.features[c.b as usize].id);
+    string(out, id(c.b as usize));
     out.push_str(",\"t_start\":");
     num(out, c.t_start);
     out.push_str(",\"t_end\":");
@@ -257,7 +262,7 @@ fn conflict_json(out: &mut String, scenario: &Scenario, c: &pipeline::Conflict, 
 /// The answer after its conflicts: stats, errors, warnings.
 fn answer_tail(
     out: &mut String,
-    scenario: &Scenario,
+    features: usize,
     conflicts: usize,
     stats: &pipeline::Stats,
     errors: &[ScenarioError],
@@ -266,7 +271,7 @@ fn answer_tail(
 ) {
     let (parse_ms, objects_ms, total_ms) = extra_ms;
     let stats_v = json!({
-        "objects": scenario.features.len(),
+        "objects": features,
         "stage_objects": stats.objects,
         "candidate_pairs": stats.candidate_pairs,
         "region_pairs": stats.region_pairs,
@@ -328,7 +333,7 @@ pub struct Summary {
 /// [`analyse_with`] gives, timings apart. `Err` when the text is not a collection
 /// (nothing is written then); the inner `Err` when writing fails (the answer is cut).
 pub fn analyse_into(
-    text: &str,
+    text: String,
     tolerance_h: f64,
     regions: bool,
     out: &mut dyn std::io::Write,
@@ -339,10 +344,14 @@ pub fn analyse_into(
         scenario: sc,
         errors,
         warnings,
-    } = scenario::parse(text)?;
+    } = scenario::parse(&text)?;
+    // the text and, once the objects are built, the features' geometry are not needed
+    // again: a 10⁶-object scenario's text is hundreds of MB
+    drop(text);
     let parse_ms = t_all.elapsed().as_secs_f64() * 1e3;
     let t_obj = Instant::now();
     let objects = scenario::objects(&sc);
+    let ids: Vec<String> = sc.features.into_iter().map(|f| f.id).collect();
     let objects_ms = t_obj.elapsed().as_secs_f64() * 1e3;
     progress.stages_start(objects.len());
     let mut failed: Option<std::io::Error> = None;
@@ -367,7 +376,7 @@ pub fn analyse_into(
                 if count > 0 {
                     buf.push(',');
                 }
-                conflict_json(&mut buf, &sc, c, regions);
+                conflict_json(&mut buf, &|k| &ids[k], c, regions);
                 count += 1;
             }
             if let Err(e) = out.write_all(buf.as_bytes()) {
@@ -383,7 +392,7 @@ pub fn analyse_into(
     buf.clear();
     answer_tail(
         &mut buf,
-        &sc,
+        ids.len(),
         count,
         &stats,
         &errors,

@@ -93,7 +93,7 @@ pub fn run(args: &ConflictsArgs) -> ExitCode {
         return ExitCode::from(EXIT_FATAL);
     }
     if args.svg.is_none() && !args.pretty {
-        return streamed(args, &text);
+        return streamed(args, text);
     }
     let Analysis {
         answer,
@@ -170,7 +170,7 @@ pub fn run(args: &ConflictsArgs) -> ExitCode {
 
 /// The answer written as the pipeline goes, a block of features at a time: memory holds
 /// one block's conflicts, not the answer (which may be gigabytes).
-fn streamed(args: &ConflictsArgs, text: &str) -> ExitCode {
+fn streamed(args: &ConflictsArgs, text: String) -> ExitCode {
     let mut sink: Box<dyn std::io::Write> = match &args.output {
         Some(p) => match std::fs::File::create(p) {
             Ok(f) => Box::new(std::io::BufWriter::with_capacity(1 << 20, f)),

@@ -887,6 +887,21 @@ mod tests {
     }
 
     #[test]
+    fn exact_box_minimum_agrees_with_hand_cases() {
+        // (x − 1/2)² + (y − 1/2)² + 1: its minimum 1 at the box's centre.
+        let f = |dd: f64| box_interior_min_below_exact(1.0, 1.0, 0.0, -1.0, -1.0, 1.5, dd);
+        assert_eq!(f(1.0), Some(false));
+        assert_eq!(f(1.0 + 2f64.powi(-52)), Some(true));
+        // x² + y² + xy − x − y + 1: minimum 2/3 at (1/3, 1/3) (a cross term).
+        let g = |dd: f64| box_interior_min_below_exact(1.0, 1.0, 1.0, -1.0, -1.0, 1.0, dd);
+        assert_eq!(g(0.7), Some(true));
+        assert_eq!(g(0.6), Some(false));
+        // the minimum (3/2, 1/2) outside the box: no interior minimum
+        let h = box_interior_min_below_exact(1.0, 1.0, 0.0, -3.0, -1.0, 10.0, 100.0);
+        assert_eq!(h, Some(false));
+    }
+
+    #[test]
     fn exact_quad_agrees_with_hand_cases() {
         // (t − 1/2)² + 1: minimum 1.
         assert_eq!(quad_min_below_exact(1.0, -1.0, 1.25, 1.0), Some(false));

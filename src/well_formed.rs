@@ -128,6 +128,66 @@ mod tests {
         assert!(!well_formed(&cw[..], 0.1, COS_10_DEG));
     }
 
+    /// §II.J step 4 takes the turn at the lexicographically least vertex (least x, then
+    /// least y): with several vertices at the least x, the others may be straight (a
+    /// vertex in the middle of the left edge) or not extreme at all.
+    #[test]
+    fn the_extreme_vertex_is_lexicographically_least() {
+        // a vertex in the middle of the left edge, before and after the least one in the
+        // ring's order, and the least one first or last
+        for ring in [
+            [
+                v(0.0, 0.0),
+                v(4.0, 0.0),
+                v(4.0, 4.0),
+                v(0.0, 4.0),
+                v(0.0, 2.0),
+            ],
+            [
+                v(0.0, 2.0),
+                v(0.0, 0.0),
+                v(4.0, 0.0),
+                v(4.0, 4.0),
+                v(0.0, 4.0),
+            ],
+            [
+                v(4.0, 0.0),
+                v(4.0, 4.0),
+                v(0.0, 4.0),
+                v(0.0, 2.0),
+                v(0.0, 0.0),
+            ],
+        ] {
+            assert_eq!(
+                well_formed_fault(&ring[..], 0.1, COS_10_DEG),
+                None,
+                "{ring:?}"
+            );
+        }
+        // a chevron, counterclockwise, its reflex vertex (2, 1) lower than the first
+        // vertex (0, 4) and right of the least one (0, 0): only the least one tells
+        let chevron = [
+            v(0.0, 4.0),
+            v(0.0, 0.0),
+            v(4.0, 0.0),
+            v(4.0, 4.0),
+            v(2.0, 1.0),
+        ];
+        assert_eq!(well_formed_fault(&chevron[..], 0.1, COS_10_DEG), None);
+        // clockwise, with the least x shared: still found to turn right
+        let cw = [
+            v(0.0, 2.0),
+            v(0.0, 4.0),
+            v(4.0, 4.0),
+            v(4.0, 0.0),
+            v(0.0, 0.0),
+        ];
+        assert!(matches!(
+            well_formed_fault(&cw[..], 0.1, COS_10_DEG),
+            Some(Fault::TurnsRight(_))
+        ));
+    }
+
     #[test]
     fn bow_tie_and_close_vertices_are_not() {
         // Edges (0,0)-(4,0) ... the bow tie (0,0),(4,4),(4,0),(0,4) has crossing

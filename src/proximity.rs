@@ -141,6 +141,26 @@ mod tests {
     }
 
     #[test]
+    fn the_box_filter_compares_every_pair_of_ends() {
+        // Two segments on the x axis 0.05 apart (BUFF 0.1), in frames where the first
+        // end is not the origin (as edge_detect passes them): whichever ends are the
+        // near ones, the bounding-box filter must not call them apart.
+        let b = |x: f64| BallV::exact(v(x, 0.0));
+        for (c, d, e, f) in [
+            (5.0, 6.0, 4.95, 0.0),
+            (5.0, 6.0, 0.0, 4.95),
+            (6.0, 5.0, 4.95, 0.0),
+            (6.0, 5.0, 0.0, 4.95),
+        ] {
+            assert_eq!(
+                segments_close_rel(b(c), b(d), b(e), b(f), 0.1, || None),
+                Tri::Yes,
+                "{c} {d} / {e} {f}"
+            );
+        }
+    }
+
+    #[test]
     fn far_segments_are_not_close() {
         assert!(!segments_close(
             v(0.0, 0.0),

@@ -152,11 +152,19 @@ mod tests {
             (6.0, 5.0, 4.95, 0.0),
             (6.0, 5.0, 0.0, 4.95),
         ] {
-            assert_eq!(
-                segments_close_rel(b(c), b(d), b(e), b(f), 0.1, || None),
-                Tri::Yes,
-                "{c} {d} / {e} {f}"
-            );
+            // and mirrored (the other half of the filter), and with the segments swapped
+            for (c, d, e, f) in [
+                (c, d, e, f),
+                (-c, -d, -e, -f),
+                (e, f, c, d),
+                (-e, -f, -c, -d),
+            ] {
+                assert_eq!(
+                    segments_close_rel(b(c), b(d), b(e), b(f), 0.1, || None),
+                    Tri::Yes,
+                    "{c} {d} / {e} {f}"
+                );
+            }
         }
     }
 

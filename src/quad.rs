@@ -98,6 +98,37 @@ fn box_exact(a: f64, b: f64, c: f64, d: f64, e: f64, f: f64, dd: f64) -> Tri {
 mod tests {
     use super::*;
 
+    /// §I quad_min_box_le_D on a box whose side t = 0, quad(1e200, −1e200, 0), dips to
+    /// −¼·1e200 < D = 0 at r = ½, while its exact test overflows (b² = 1e400) and the
+    /// interior has no critical point (disc = c² − 4ab = 0): an undecided side must keep
+    /// the exact path from answering "no".
+    #[test]
+    fn an_overflowing_side_is_never_read_as_no() {
+        let k = (1e200, 0.0, 0.0, -1e200, 0.0, 0.0, 0.0);
+        assert!(quad_min_box_le_d(k.0, k.1, k.2, k.3, k.4, k.5, k.6));
+        assert_ne!(
+            quad_min_box_le_d_tri(k.0, k.1, k.2, k.3, k.4, k.5, k.6),
+            Tri::No
+        );
+    }
+
+    /// §I quad_min_box_le_D where only the exact path can tell: (r − ½)² + (t − ½)² +
+    /// f − ½ with f the float just below ½ dips to −2⁻⁵⁴ < 0 at the box's centre, within
+    /// the balls' rounding. The exact interior test must answer a certain yes.
+    #[test]
+    fn a_minimum_below_the_rounding_is_a_certain_yes() {
+        let f = 0.5 - 2f64.powi(-54);
+        assert_eq!(
+            quad_min_box_le_d_tri(1.0, 1.0, 0.0, -1.0, -1.0, f, 0.0),
+            Tri::Yes
+        );
+        // and just above: f = ½ puts the minimum at D, not below it
+        assert_eq!(
+            quad_min_box_le_d_tri(1.0, 1.0, 0.0, -1.0, -1.0, 0.5, 0.0),
+            Tri::No
+        );
+    }
+
     #[test]
     fn parabola_with_known_minimum() {
         // (t − 1/2)² + 1 = t² − t + 5/4: minimum 1 at t = 1/2, ends 5/4.

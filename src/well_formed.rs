@@ -120,6 +120,17 @@ mod tests {
     }
     const COS_10_DEG: f64 = 0.984_807_753_012_208;
 
+    /// A fault names its rule of §II.J and the vertices or edges, as the CLI prints it.
+    #[cfg(feature = "std")]
+    #[test]
+    fn faults_name_their_rule_and_indices() {
+        let text = |f: Fault| format!("{f}");
+        assert!(text(Fault::CloseVertices(0, 2)).contains("rule 1: vertices 0 and 2"));
+        assert!(text(Fault::CloseEdges(1, 3)).contains("rule 2"));
+        assert!(text(Fault::SharpCorner(4)).contains("rule 3"));
+        assert!(text(Fault::TurnsRight(5)).contains("rule 4"));
+    }
+
     #[test]
     fn square_is_well_formed_clockwise_is_not() {
         let ccw = [v(0.0, 0.0), v(4.0, 0.0), v(4.0, 4.0), v(0.0, 4.0)];

@@ -887,3 +887,33 @@ proptest! {
         }
     }
 }
+
+/// Paper A §I quad and quad2D: the engine's polynomials equal the oracle's where f64 is
+/// exact (integers in −20…20: every product and sum is an integer far below 2⁵³).
+#[test]
+fn quad_and_quad2d_equal_the_oracle_on_exact_inputs() {
+    let mut s = 0x9E37_79B9_7F4A_7C15u64;
+    let mut next = || {
+        s = s
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        ((s >> 33) % 41) as f64 - 20.0
+    };
+    for _ in 0..500 {
+        let f: Vec<f64> = (0..8).map(|_| next()).collect();
+        let e: Vec<Q> = f.iter().map(|&x| q(x)).collect();
+        assert_eq!(
+            q(polyguard::quad::quad(f[0], f[1], f[2], f[3])),
+            oq::quad(&e[0], &e[1], &e[2], &e[3]),
+            "quad{:?}",
+            &f[..4]
+        );
+        assert_eq!(
+            q(polyguard::quad::quad2d(
+                f[0], f[1], f[2], f[3], f[4], f[5], f[6], f[7]
+            )),
+            oq::quad2d(&e[0], &e[1], &e[2], &e[3], &e[4], &e[5], &e[6], &e[7]),
+            "quad2d{f:?}"
+        );
+    }
+}

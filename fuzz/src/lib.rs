@@ -153,3 +153,27 @@ impl<'a> Arbitrary<'a> for Num {
         (1, Some(9))
     }
 }
+
+/// Paper B's pipeline against its ground truth on a two-feature scenario drawn by
+/// `assure --paper b`'s generator (`polyguard_cli::harness::paper_b`), steered by the
+/// input's bytes. Panics on a failure class (missed conflict, short window, far end,
+/// broken speed bound) or on a generated scenario the reader refuses.
+pub fn paper_b(data: &[u8]) {
+    use polyguard_cli::harness::paper_b as pb;
+    let mut src = Bytes::new(data);
+    let case = pb::draw(&mut src);
+    match pb::judge(&case) {
+        Ok((v, _, text)) => {
+            if v.class.is_failure() {
+                panic!(
+                    "cargo-fuzz paper_b: {} ({}): pipeline window {:?}, truth {:?}\n{text}",
+                    v.class.name(),
+                    case.mode,
+                    v.engine,
+                    v.truth
+                );
+            }
+        }
+        Err(e) => panic!("cargo-fuzz paper_b: generated scenario refused ({}): {e}", case.mode),
+    }
+}

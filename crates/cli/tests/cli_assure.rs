@@ -267,3 +267,165 @@ fn the_plain_engine_is_caught_and_the_certified_one_is_not() {
         "{err}"
     );
 }
+
+/// Runs `polyguard assure --paper b` with `args`; (exit code, stdout, report.json).
+fn assure_b(args: &[&str], dir: &std::path::Path) -> (Option<i32>, String, serde_json::Value) {
+    let out = Command::new(env!("CARGO_BIN_EXE_polyguard"))
+        .args(["assure", "--paper", "b", "--quiet", "--out"])
+        .arg(dir)
+        .args(args)
+        .output()
+        .expect("run polyguard assure --paper b");
+    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
+    let report = std::fs::read_to_string(dir.join("report.json"))
+        .ok()
+        .and_then(|t| serde_json::from_str(&t).ok())
+        .unwrap_or(serde_json::Value::Null);
+    (out.status.code(), stdout, report)
+}
+
+/// Paper B's hunt: every case counted in one class, every generator mode drawn, the
+/// shipped pipeline passes (exit 0, a PASS line), and the canary that samples once a
+/// minute is caught (exit 1, failure cases kept with their scenario and picture).
+#[test]
+fn paper_b_hunt_passes_the_pipeline_and_catches_its_canary() {
+    let dir = out_dir("assure-b");
+    let (code, stdout, report) = assure_b(&["--cases", "1500", "--seed", "3"], &dir);
+    assert_eq!(code, Some(0), "{stdout}");
+    assert_eq!(report["paper"], "b");
+    assert_eq!(report["cases"], 1500);
+    let modes = report["by_mode"].as_object().expect("by_mode");
+    let counted: u64 = modes
+        .values()
+        .flat_map(|m| m.as_object().expect("classes").values())
+        .map(|n| n.as_u64().expect("count"))
+        .sum();
+    assert_eq!(counted, 1500);
+    for m in [
+        "touch_vertex",
+        "touch_edge",
+        "near_vertex",
+        "graze",
+        "parallel",
+        "east_west",
+        "crossing",
+        "ends",
+    ] {
+        for place in ["mid", "polar", "antimeridian", "polar+antimeridian"] {
+            let key = format!("{m}@{place}");
+            assert!(modes.contains_key(&key), "mode {key} never drawn");
+        }
+    }
+    assert!(
+        stdout
+            .lines()
+            .last()
+            .is_some_and(|l| l.starts_with("PASS: paper B, 1500 cases: 0 missed conflicts")),
+        "{stdout}"
+    );
+
+    let canary = out_dir("assure-b-sampled");
+    let (code, stdout, report) = assure_b(
+        &["--cases", "1500", "--seed", "3", "--engine", "sampled"],
+        &canary,
+    );
+    assert_eq!(code, Some(1), "{stdout}");
+    assert_eq!(report["engine"], "sampled");
+    let kept = report["kept"].as_array().expect("kept");
+    let failing: Vec<&serde_json::Value> = kept
+        .iter()
+        .filter(|k| k["class"] == "window_short" || k["class"] == "missed_conflict")
+        .collect();
+    assert!(!failing.is_empty(), "{stdout}");
+    for k in failing {
+        // the kept scenario reads back as a scenario, with the verdict in its properties
+        let file = canary.join(k["case_file"].as_str().expect("case_file"));
+        let text = std::fs::read_to_string(&file).expect("case file");
+        let read = polyguard_earth::scenario::parse(&text).expect("a scenario");
+        assert!(read.errors.is_empty(), "{:?}", read.errors);
+        assert_eq!(read.scenario.features.len(), 2);
+        assert!(text.contains("\"assure\""));
+        assert!(canary.join(k["svg_file"].as_str().expect("svg")).exists());
+    }
+    assert!(stdout
+        .lines()
+        .last()
+        .is_some_and(|l| l.starts_with("FAIL: paper B")));
+}
+
+/// Paper-B shards merge into exactly the unsharded run's counts and kept cases; a missing
+/// shard, a paper-A report among paper-B ones, or another seed is refused (exit 2).
+#[test]
+fn paper_b_shards_merge_exactly() {
+    let whole = out_dir("assure-b-whole");
+    let (code, _, full) = assure_b(
+        &["--cases", "600", "--seed", "4", "--engine", "sampled"],
+        &whole,
+    );
+    assert_eq!(code, Some(1));
+    let mut parts = Vec::new();
+    for i in 0..3 {
+        let d = out_dir(&format!("assure-b-shard{i}"));
+        let shard = format!("{i}/3");
+        let (code, _, _) = assure_b(
+            &[
+                "--cases", "600", "--seed", "4", "--engine", "sampled", "--shard", &shard,
+            ],
+            &d,
+        );
+        assert!(matches!(code, Some(0 | 1)));
+        parts.push(d.join("report.json"));
+    }
+    let merge = |reports: &[&std::path::PathBuf], extra: &[&str], out: &std::path::Path| {
+        Command::new(env!("CARGO_BIN_EXE_polyguard"))
+            .args(["assure", "merge"])
+            .args(reports)
+            .args(extra)
+            .arg("--out")
+            .arg(out)
+            .output()
+            .expect("run polyguard assure merge")
+    };
+    let m = out_dir("assure-b-merged");
+    let r = merge(&parts.iter().collect::<Vec<_>>(), &[], &m);
+    assert_eq!(
+        r.status.code(),
+        Some(1),
+        "{}",
+        String::from_utf8_lossy(&r.stderr)
+    );
+    let merged: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(m.join("report.json")).expect("merged"))
+            .expect("JSON");
+    assert_eq!(merged["by_mode"], full["by_mode"]);
+    assert_eq!(merged["cases"], full["cases"]);
+    assert_eq!(merged["kept"], full["kept"]);
+    for k in merged["kept"].as_array().expect("kept") {
+        assert!(m.join(k["case_file"].as_str().expect("file")).exists());
+    }
+    // refused: a missing shard, another seed, a paper-A report
+    let r = merge(&[&parts[0], &parts[1]], &[], &out_dir("assure-b-missing"));
+    assert_eq!(r.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&r.stderr).contains("2/3 are missing"));
+    let other = out_dir("assure-b-other-seed");
+    let _ = assure_b(&["--cases", "600", "--seed", "5", "--shard", "2/3"], &other);
+    let r = merge(
+        &[&parts[0], &parts[1], &other.join("report.json")],
+        &[],
+        &out_dir("assure-b-mixed-seed"),
+    );
+    assert_eq!(r.status.code(), Some(2));
+    let a = out_dir("assure-a-for-b");
+    let _ = Command::new(env!("CARGO_BIN_EXE_polyguard"))
+        .args(["assure", "--cases", "50", "--quiet", "--out"])
+        .arg(&a)
+        .output()
+        .expect("run");
+    let r = merge(
+        &[&parts[0], &a.join("report.json")],
+        &[],
+        &out_dir("assure-b-mixed-paper"),
+    );
+    assert_eq!(r.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&r.stderr).contains("paper B's and the rest paper A's"));
+}

@@ -35,6 +35,21 @@ const FAST_MEAN_SEC_MIN_H: f64 = 1e-3;
 /// bound too small: 1e-9 ≫ 12 · 2⁻⁵³ ≈ 1.3e-15.
 pub const BOUND_SAFETY: f64 = 1.0 + 1e-9;
 
+/// Paper B Section V, eqs 23–30 in f64: a bound on how far two evaluations of one vertex
+/// may lie apart in the Mercator plane, for coordinates of magnitude at most `c`:
+/// `2⁻⁴⁰·max(c, 4)` (≈ 3.6e-12 rad, 2 cm on the Earth, for |x| ≤ 4).
+///
+/// [`Leg::merc_vertices_at`] is a chain of about 20 operations whose rounding is
+/// amplified at most by `sec φ ≤ 57` (latitudes ≤ 89°, the rectangles' limit): ≤ 2⁻⁴⁴·c
+/// per evaluation. Two evaluations at one instant (the truth's and the pipeline's), or an
+/// evaluation and the linear extrapolation `p(t_ref) + v·(t − t_ref)` of an east–west leg
+/// (whose exact motion is linear; `v·s` carries ≤ 2⁻⁵²·|Δlon| ≤ 2⁻⁵¹·c), differ by less
+/// than 2⁻⁴³·c; the bound leaves 8× over it, and also covers a whole-turn shift (one
+/// addition, ≤ 2⁻⁵³·c) and the f64 vertex–edge distance's rounding (≤ 2⁻⁴⁸·c).
+pub fn position_slack(c: f64) -> f64 {
+    c.max(4.0) * 2f64.powi(-40)
+}
+
 /// A point on the sphere, radians.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LonLat {

@@ -60,6 +60,21 @@ pub struct AssureArgs {
     /// eight. The default is the whole space (path 1e-3..1e7, buff 1e-12..1e0, ends=eighth).
     #[arg(long, value_parser = parse_aim)]
     pub aim: Option<Space>,
+    /// The paper to hunt in: `a` (point vs polygon, the default) or `b` (interference of
+    /// areas and tracks on the Earth: docs/assurance.md, "Paper B"). With `b`, `--engine`
+    /// is `pipeline` (the default) or `sampled` (the canary), and `--contract` and `--aim`
+    /// do not apply.
+    #[arg(long, value_enum, default_value_t = PaperArg::A)]
+    pub paper: PaperArg,
+}
+
+/// `--paper` of `polyguard assure`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum PaperArg {
+    /// Paper A (Narkawicz & Hagen).
+    A,
+    /// Paper B (Bienkowski et al.).
+    B,
 }
 
 /// `--aim path=1eA..1eB,buff=1eC..1eD,ends=E` → the narrowed scale space.
@@ -106,12 +121,16 @@ pub enum EngineArg {
     F64,
     /// The plain f64 transcription of paper A.
     Plain,
+    /// Paper B's four stages as shipped (`--paper b`; the default there).
+    Pipeline,
+    /// Paper B's canary: meetings sampled once a minute (`--paper b`).
+    Sampled,
 }
 
 impl From<EngineArg> for Hunted {
     fn from(e: EngineArg) -> Hunted {
         match e {
-            EngineArg::F64 => Hunted::Certified,
+            EngineArg::F64 | EngineArg::Pipeline | EngineArg::Sampled => Hunted::Certified,
             EngineArg::Plain => Hunted::Plain,
         }
     }
@@ -311,6 +330,16 @@ pub fn run(args: &AssureArgs) -> ExitCode {
         None => {}
     }
     let (shard_i, shard_n) = args.shard.unwrap_or((0, 1));
+    if args.paper == PaperArg::B {
+        return run_paper_b(args);
+    }
+    if matches!(args.engine, EngineArg::Pipeline | EngineArg::Sampled) {
+        eprintln!(
+            "polyguard assure: --engine {} is paper B's: add --paper b (paper A's engines are f64 and plain)",
+            if args.engine == EngineArg::Pipeline { "pipeline" } else { "sampled" }
+        );
+        return ExitCode::from(2);
+    }
     let space = args.aim.unwrap_or_default();
     let hunted = Hunted::from(args.engine);
     if args.contract && hunted != Hunted::Certified {
@@ -431,6 +460,40 @@ pub fn run(args: &AssureArgs) -> ExitCode {
     finish(&report, &args.out)
 }
 
+/// `assure --paper b`.
+fn run_paper_b(args: &AssureArgs) -> ExitCode {
+    use super::assure_b::{self, EngineB};
+    let engine = match args.engine {
+        EngineArg::F64 | EngineArg::Pipeline => EngineB::Pipeline,
+        EngineArg::Sampled => EngineB::Sampled,
+        EngineArg::Plain => {
+            eprintln!("polyguard assure: --engine plain is paper A's canary; paper B's is --engine sampled");
+            return ExitCode::from(2);
+        }
+    };
+    if args.contract || args.aim.is_some() {
+        eprintln!("polyguard assure: --contract and --aim are paper A's; drop them with --paper b");
+        return ExitCode::from(2);
+    }
+    let threads = args
+        .threads
+        .unwrap_or_else(|| {
+            std::thread::available_parallelism()
+                .map(|n| n.get())
+                .unwrap_or(1)
+        })
+        .max(1);
+    assure_b::run(
+        args.cases,
+        args.seed,
+        threads,
+        &args.out,
+        args.shard.unwrap_or((0, 1)),
+        args.quiet,
+        engine,
+    )
+}
+
 /// Writes `DIR/report.json`, then prints the summary. The report is written first and a
 /// closed standard output (`polyguard assure | head`) is not an error: the campaign's
 /// result must not depend on who reads the summary.
@@ -517,13 +580,32 @@ fn merge(paths: &[PathBuf], out: &Path, partial: bool) -> ExitCode {
         eprintln!("polyguard assure merge: {msg}");
         ExitCode::from(2)
     };
-    let mut reports = Vec::with_capacity(paths.len());
+    let mut texts = Vec::with_capacity(paths.len());
     for p in paths {
-        let text = match fs::read_to_string(p) {
-            Ok(t) => t,
+        match fs::read_to_string(p) {
+            Ok(t) => texts.push(t),
             Err(e) => return fail(format!("cannot read {}: {e}", p.display())),
-        };
-        match Report::from_json(&text) {
+        }
+    }
+    // paper-B reports say so ("paper": "b"); all or none of the reports must be
+    let is_b = |t: &str| {
+        serde_json::from_str::<serde_json::Value>(t)
+            .ok()
+            .is_some_and(|v| v.get("paper").and_then(|p| p.as_str()) == Some("b"))
+    };
+    let b = texts.iter().filter(|t| is_b(t)).count();
+    if b == texts.len() {
+        return super::assure_b::merge(paths, &texts, out, partial);
+    }
+    if b > 0 {
+        return fail(format!(
+            "{b} of the {} reports are paper B's and the rest paper A's: merge each paper's apart",
+            texts.len()
+        ));
+    }
+    let mut reports = Vec::with_capacity(paths.len());
+    for (p, text) in paths.iter().zip(&texts) {
+        match Report::from_json(text) {
             Ok(r) => reports.push(r),
             Err(e) => return fail(format!("{} is not a report: {e}", p.display())),
         }

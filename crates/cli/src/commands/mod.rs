@@ -1,5 +1,6 @@
 //! The command-line tool's subcommands, one module each.
 pub mod assure;
+pub mod assure_b;
 pub mod conflicts;
 pub mod detect;
 pub mod generate;

@@ -13,6 +13,7 @@
 pub mod classify;
 pub mod gen;
 pub mod minimise;
+pub mod paper_b;
 pub mod report;
 pub mod svg;
 pub mod workload;

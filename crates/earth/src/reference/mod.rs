@@ -5,7 +5,9 @@
 //!   window) in exact rational arithmetic.
 //! - `mpfr` (feature `rug`): Section V (Mercator, rhumb motion, `track_time`) in 256-bit
 //!   MPFR, to measure the f64 code in ulps.
+//! - [`truth`]: whether and when two features really meet (`assure --paper b`).
 
 #[cfg(feature = "rug")]
 pub mod mpfr;
 pub mod rational;
+pub mod truth;

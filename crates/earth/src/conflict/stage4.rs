@@ -61,10 +61,31 @@ pub struct Intervals {
     pub intervals: Vec<Interval>,
 }
 
-/// Paper B eq 20: the exact window `[t_lo, t_hi] ∩ {t : A(t) ∩ B(t) ≠ ∅}` for convex
-/// polygons translating at constant velocities `va`, `vb`; `a_ref`, `b_ref` are their
-/// vertices at time `t_ref`. `None` when the Minkowski difference is degenerate (zero
-/// area), `Some(None)` when the polygons never meet in the window.
+/// Paper B eq 20: the window `[t_lo, t_hi] ∩ {t : A(t) ∩ B(t) ≠ ∅}` for convex polygons
+/// translating at constant velocities `va`, `vb`; `a_ref`, `b_ref` are their vertices at
+/// time `t_ref`. `None` when the Minkowski difference is degenerate (zero area),
+/// `Some(None)` when the polygons never meet in the window.
+///
+/// **Rounding.** The window is certified to contain every instant at which the polygons
+/// as the f64 model evaluates them ([`crate::sphere::Leg::merc_vertices_at`] at that
+/// instant, as the ground truth does) meet:
+/// - each vertex at `t` lies within `D = position_slack(c)` of `p(t_ref) + v·(t − t_ref)`
+///   ([`crate::sphere::position_slack`]; `c` bounds every coordinate over the window),
+///   so the Minkowski difference at `t` lies within `2D` of the one used here, and the
+///   difference's half-planes are relaxed by `2D` (a convex set grown by `2D` lies in
+///   each of its half-planes shifted by `2D`);
+/// - the differences `b − a`, the hull (non-robust orientations drop only points within
+///   `≈ 16u·c` of an edge) and each edge's `c0`, `c1` carry rounding bounded by
+///   `64u·c·|e|` and `4u` of the products' magnitudes; they are added to the relaxation;
+/// - a constraint whose `c1` is within its own error of 0 does not narrow the window
+///   (its sign is uncertain); it empties it only when violated for every `s` in reach;
+/// - each quotient is moved outwards by `4u` of its magnitude (two roundings), and each
+///   end `t_ref + s` by `2u` of its own (one more);
+/// - an end that no constraint moved is `t_lo` or `t_hi` exactly (not
+///   `(t_hi − t_ref) + t_ref`, which may differ by an ulp).
+///
+/// The ends stay near contact: at each, the relative position violates no half-plane by
+/// more than its relaxation (`≈ 2D` in distance), far within stage 4's `ε`.
 pub fn linear_window(
     a_ref: &[Merc],
     va: Merc,
@@ -74,6 +95,7 @@ pub fn linear_window(
     t_lo: f64,
     t_hi: f64,
 ) -> Option<Option<(f64, f64)>> {
+    const U: f64 = f64::EPSILON / 2.0;
     // Relative motion about t_ref: (va − vb) s ∈ B − A, s = t − t_ref.
     let mut diff = Vec::with_capacity(a_ref.len() * b_ref.len());
     for b in b_ref {
@@ -82,33 +104,84 @@ pub fn linear_window(
         }
     }
     let m = geom::convex_hull(&diff);
-    let w = [va[0] - vb[0], va[1] - vb[1]];
-    let (mut lo, mut hi) = (t_lo - t_ref, t_hi - t_ref);
     if m.len() < 3 {
         // Degenerate difference (a segment or a point): leave it to the general method.
         return None;
     }
+    let w = [va[0] - vb[0], va[1] - vb[1]];
+    let (s_lo, s_hi) = (t_lo - t_ref, t_hi - t_ref);
+    let s_max = s_lo.abs().max(s_hi.abs());
+    // every coordinate any vertex takes over the window (plus a turn: copies across the
+    // antimeridian), and every coordinate of the differences
+    let coord = a_ref
+        .iter()
+        .chain(b_ref)
+        .fold(0f64, |c, p| c.max(p[0].abs()).max(p[1].abs()));
+    let speed = va[0]
+        .abs()
+        .max(va[1].abs())
+        .max(vb[0].abs())
+        .max(vb[1].abs());
+    let c = coord + speed * s_max + std::f64::consts::TAU;
+    let relax = 2.0 * crate::sphere::position_slack(c) + 64.0 * U * c;
+    let (mut lo, mut hi) = (s_lo, s_hi);
+    let (mut moved_lo, mut moved_hi) = (false, false);
     let n = m.len();
     for k in 0..n {
         let (e0, e1) = (m[k], m[(k + 1) % n]);
         let e = [e1[0] - e0[0], e1[1] - e0[1]];
-        // inside ⇔ cross(e, w s − e0) ≥ 0 ⇔ c0 + c1 s ≥ 0
+        // inside ⇔ cross(e, w s − e0) ≥ 0 ⇔ c0 + c1 s ≥ 0; relaxed: ≥ −pad
         let c0 = -(e[0] * e0[1] - e[1] * e0[0]);
         let c1 = e[0] * w[1] - e[1] * w[0];
-        if c1 == 0.0 {
-            if c0 < 0.0 {
+        let c1_err = 4.0 * U * ((e[0] * w[1]).abs() + (e[1] * w[0]).abs())
+            + 4.0 * U * e[0].abs().max(e[1].abs()) * w[0].abs().max(w[1].abs());
+        let pad = e[0].hypot(e[1]) * relax
+            + 4.0 * U * ((e[0] * e0[1]).abs() + (e[1] * e0[0]).abs())
+            + c1_err * s_max;
+        if !(pad.is_finite() && c0.is_finite() && c1.is_finite()) {
+            // beyond the f64 range: no certified narrowing
+            continue;
+        }
+        if c1.abs() <= c1_err {
+            // the sign of c1 is uncertain: only a constraint violated at every s in reach
+            // decides (no meeting); otherwise it does not narrow the window
+            if c0 + pad + c1.abs() * s_max < 0.0 {
                 return Some(None);
             }
-        } else if c1 > 0.0 {
-            lo = lo.max(-c0 / c1);
+            continue;
+        }
+        // the root of c0 + pad + c1 s = 0, moved outwards by its two roundings
+        let q = -(c0 + pad) / c1;
+        if c1 > 0.0 {
+            let b = q - 4.0 * U * q.abs();
+            if b > lo {
+                lo = b;
+                moved_lo = true;
+            }
         } else {
-            hi = hi.min(-c0 / c1);
+            let b = q + 4.0 * U * q.abs();
+            if b < hi {
+                hi = b;
+                moved_hi = true;
+            }
         }
         if lo > hi {
             return Some(None);
         }
     }
-    Some(Some((lo + t_ref, hi + t_ref)))
+    let start = if moved_lo {
+        let t = t_ref + lo;
+        (t - 2.0 * U * t.abs()).max(t_lo)
+    } else {
+        t_lo
+    };
+    let end = if moved_hi {
+        let t = t_ref + hi;
+        (t + 2.0 * U * t.abs()).min(t_hi)
+    } else {
+        t_hi
+    };
+    Some(Some((start, end)))
 }
 
 /// Bound on how fast the gap between the two polygons can shrink, measured along the

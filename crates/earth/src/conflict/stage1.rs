@@ -138,17 +138,6 @@ impl Index {
         }
     }
 
-    /// How many pairs [`Index::candidates`] gives for object `i` alone (its partners
-    /// j > i).
-    pub fn count(&self, objects: &[Object], i: usize) -> usize {
-        let b = objects[i].aabb;
-        let env = rstar::AABB::from_corners([b[0], b[1]], [b[2], b[3]]);
-        self.tree
-            .locate_in_envelope_intersecting(&env)
-            .filter(|e| e.data as usize > i && wanted(&objects[i], &objects[e.data as usize]))
-            .count()
-    }
-
     /// Algorithm 2 for the objects `block`: the pairs (i, j), i in the block and j > i,
     /// whose AABBs meet (closed boxes) and which [`wanted`] keeps. Together over blocks
     /// that cover the objects, the pairs of [`candidates`] (in another order).

@@ -91,8 +91,11 @@ pub const BLOCK_OBJECTS: usize = 8192;
 pub const BLOCK_PAIRS: usize = 250_000;
 
 /// Objects whose partners [`run_blocks`] asks the R-tree for at once while it fills a
-/// block: a block's pairs pass [`BLOCK_PAIRS`] by at most one chunk's.
+/// block, at most: a block's pairs pass [`BLOCK_PAIRS`] by at most one chunk's, and the
+/// chunks shrink as the block fills (by the pairs per object seen so far).
 const BLOCK_CHUNK: usize = 512;
+/// The first chunk of a block.
+const BLOCK_FIRST_CHUNK: usize = 64;
 
 /// Paper B Algorithm 1 over `objects`: the conflicts in one vector, ordered by feature
 /// pair ([`run_blocks`] collected).
@@ -133,7 +136,14 @@ pub fn run_blocks(objects: &[Object], opts: Options, sink: &mut dyn FnMut(Vec<Co
         if grouped {
             let limit = start.saturating_add(opts.block_objects.max(1)).min(n);
             while end < limit && pairs.len() < opts.block_pairs {
-                let next = end.saturating_add(BLOCK_CHUNK).min(limit);
+                // a small first chunk, then as many objects as the pairs per object seen
+                // so far leave room for (a dense scenario has hundreds per object)
+                let chunk = match pairs.len().checked_div(end - start) {
+                    None => BLOCK_FIRST_CHUNK,
+                    Some(0) => BLOCK_CHUNK,
+                    Some(per) => ((opts.block_pairs - pairs.len()) / per).clamp(1, BLOCK_CHUNK),
+                };
+                let next = end.saturating_add(chunk).min(limit);
                 pairs.extend(index.candidates(objects, end..next).pairs);
                 end = next;
             }

@@ -2,8 +2,9 @@
 //! that spec, and an SVG drawing of the scenario and its conflicts.
 
 use crate::conflict::{pipeline, stage4::Method, Object};
+use crate::geodesy::Geodesy;
 use crate::scenario::{self, Scenario, ScenarioError, ScenarioWarning};
-use crate::sphere::{inverse_mercator, Merc};
+use crate::sphere::Merc;
 use serde_json::{json, Value};
 use std::fmt::Write as _;
 use std::time::Instant;
@@ -77,11 +78,11 @@ fn push_digits(out: &mut String, mut n: u64, width: usize) {
 /// with what rounding made of it repaired: repeated positions merged and spikes (a step
 /// that turns straight back along itself) removed, so that the printed ring stays a
 /// valid one. Empty when fewer than three positions are left.
-fn printed_ring(ring: &[Merc]) -> Vec<[i64; 2]> {
+fn printed_ring(ring: &[Merc], geo: Geodesy) -> Vec<[i64; 2]> {
     let mut r: Vec<[i64; 2]> = ring
         .iter()
         .map(|&m| {
-            let (lon, lat) = inverse_mercator(m).to_degrees();
+            let (lon, lat) = geo.inverse_mercator(m).to_degrees();
             [units(lon), units(lat)]
         })
         .collect();
@@ -147,7 +148,13 @@ pub fn answer(
         if k > 0 {
             out.push(',');
         }
-        conflict_json(&mut out, &|k| &scenario.features[k].id, c, regions);
+        conflict_json(
+            &mut out,
+            &|k| &scenario.features[k].id,
+            c,
+            regions,
+            scenario.geodesy,
+        );
     }
     answer_tail(
         &mut out,
@@ -157,6 +164,7 @@ pub fn answer(
         errors,
         warnings,
         extra_ms,
+        scenario.geodesy,
     );
     out
 }
@@ -170,6 +178,7 @@ fn conflict_json<'a>(
     id: &dyn Fn(usize) -> &'a str,
     c: &pipeline::Conflict,
     regions: bool,
+    geo: Geodesy,
 ) {
     let (decided_by, method) = match c.method {
         Method::AreaOverlap => ("area_overlap", "area_overlap"),
@@ -224,8 +233,11 @@ fn conflict_json<'a>(
     let polys: Vec<PrintedPolygon> = crate::conflict::geom::polygons(&c.rings)
         .iter()
         .map(|(ext, holes)| {
-            let holes = holes.iter().map(|h| printed_ring(h));
-            (printed_ring(ext), holes.filter(|h| !h.is_empty()).collect())
+            let holes = holes.iter().map(|h| printed_ring(h, geo));
+            (
+                printed_ring(ext, geo),
+                holes.filter(|h| !h.is_empty()).collect(),
+            )
         })
         .filter(|(ext, _)| !ext.is_empty())
         .collect();
@@ -268,9 +280,11 @@ fn answer_tail(
     errors: &[ScenarioError],
     warnings: &[ScenarioWarning],
     extra_ms: (f64, f64, f64),
+    geo: Geodesy,
 ) {
     let (parse_ms, objects_ms, total_ms) = extra_ms;
     let stats_v = json!({
+        "geodesy": geo.name(),
         "objects": features,
         "stage_objects": stats.objects,
         "candidate_pairs": stats.candidate_pairs,
@@ -336,15 +350,18 @@ pub fn analyse_into(
     text: String,
     tolerance_h: f64,
     regions: bool,
+    geodesy: Geodesy,
     out: &mut dyn std::io::Write,
     progress: &mut dyn Progress,
 ) -> Result<std::io::Result<Summary>, ScenarioError> {
     let t_all = Instant::now();
     let scenario::Read {
-        scenario: sc,
+        scenario: mut sc,
         errors,
         warnings,
     } = scenario::parse(&text)?;
+    sc.geodesy = geodesy;
+    let geo = geodesy;
     // the text and, once the objects are built, the features' geometry are not needed
     // again: a 10⁶-object scenario's text is hundreds of MB
     drop(text);
@@ -376,7 +393,7 @@ pub fn analyse_into(
                 if count > 0 {
                     buf.push(',');
                 }
-                conflict_json(&mut buf, &|k| &ids[k], c, regions);
+                conflict_json(&mut buf, &|k| &ids[k], c, regions, geo);
                 count += 1;
             }
             if let Err(e) = out.write_all(buf.as_bytes()) {
@@ -398,6 +415,7 @@ pub fn analyse_into(
         &errors,
         &warnings,
         (parse_ms, objects_ms, total_ms),
+        geo,
     );
     buf.push('\n');
     Ok(out
@@ -429,7 +447,7 @@ pub struct Analysis {
 
 /// Paper B Algorithm 1 on scenario text.
 pub fn analyse(text: &str, tolerance_h: f64) -> Result<Analysis, ScenarioError> {
-    analyse_with(text, tolerance_h, true, &mut ())
+    analyse_with(text, tolerance_h, true, Geodesy::Sphere, &mut ())
 }
 
 /// [`analyse`], optionally without the regions in the answer, telling `progress` when the
@@ -438,14 +456,16 @@ pub fn analyse_with(
     text: &str,
     tolerance_h: f64,
     regions: bool,
+    geodesy: Geodesy,
     progress: &mut dyn Progress,
 ) -> Result<Analysis, ScenarioError> {
     let t_all = Instant::now();
     let scenario::Read {
-        scenario: sc,
+        scenario: mut sc,
         errors,
         warnings,
     } = scenario::parse(text)?;
+    sc.geodesy = geodesy;
     let parse_ms = t_all.elapsed().as_secs_f64() * 1e3;
     let t_obj = Instant::now();
     let objects = scenario::objects(&sc);

@@ -128,6 +128,7 @@ pub fn generate(n: usize, mix: Mix, density_box: bool, rng: &mut Bits<'_>) -> Sc
     Scenario {
         features,
         longitudes,
+        geodesy: Default::default(),
     }
 }
 

@@ -18,6 +18,7 @@
 pub mod analysis;
 pub mod conflict;
 pub mod generate;
+pub mod geodesy;
 pub mod json;
 pub mod picture;
 pub mod reference;

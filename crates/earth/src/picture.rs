@@ -6,7 +6,7 @@
 
 use crate::conflict::{geom, pipeline, Motion, Object};
 use crate::scenario::{Longitudes, Scenario};
-use crate::sphere::{inverse_mercator, mercator, LonLat, Merc};
+use crate::sphere::{LonLat, Merc};
 use std::f64::consts::TAU;
 use std::fmt::Write as _;
 
@@ -236,8 +236,9 @@ pub fn svg(
     // The graticule: meridians and parallels at a round step, labelled on the frame.
     let lon0 = b[0].to_degrees();
     let lon1 = b[2].to_degrees();
-    let lat0 = inverse_mercator([0.0, b[1]]).lat.to_degrees();
-    let lat1 = inverse_mercator([0.0, b[3]]).lat.to_degrees();
+    let geo = sc.geodesy;
+    let lat0 = geo.inverse_mercator([0.0, b[1]]).lat.to_degrees();
+    let lat1 = geo.inverse_mercator([0.0, b[3]]).lat.to_degrees();
     let step = grid_step((lon1 - lon0).max(lat1 - lat0));
     let _ = writeln!(
         out,
@@ -260,7 +261,7 @@ pub fn svg(
     }
     let mut g = (lat0 / step).ceil() * step;
     while g <= lat1 {
-        let y = mercator(LonLat::from_degrees(0.0, g))[1];
+        let y = geo.mercator(LonLat::from_degrees(0.0, g))[1];
         let (_, py) = f.pt([0.0, y], 0.0);
         let _ = writeln!(
             out,
@@ -334,8 +335,8 @@ pub fn svg(
                         f.path(&leg.merc_vertices_at(t), dx, true)
                     );
                 }
-                let (x0, y0) = f.pt(mercator(leg.start), dx);
-                let (x1, y1) = f.pt(mercator(leg.end), dx);
+                let (x0, y0) = f.pt(leg.merc[0], dx);
+                let (x1, y1) = f.pt(leg.merc[1], dx);
                 let _ = writeln!(
                     out,
                     "<line x1=\"{x0:.2}\" y1=\"{y0:.2}\" x2=\"{x1:.2}\" y2=\"{y1:.2}\" stroke=\"{colour}\" \
@@ -390,7 +391,7 @@ pub fn svg(
                     continue;
                 };
                 let dx = turn(mid(o.aabb));
-                let (p0, p1) = (mercator(leg.start), mercator(leg.end));
+                let (p0, p1) = (leg.merc[0], leg.merc[1]);
                 let d = [p1[0] - p0[0], p1[1] - p0[1]];
                 let n2 = d[0] * d[0] + d[1] * d[1];
                 for (ext, _) in &polys {

@@ -124,6 +124,9 @@ pub struct Scenario {
     pub features: Vec<Feature>,
     /// How its longitudes were read (and are to be understood).
     pub longitudes: Longitudes,
+    /// The model of the Earth its rhumb lines, Mercator plane and distances are taken on
+    /// (not read from the file: `polyguard conflicts --geodesy`; the sphere by default).
+    pub geodesy: crate::geodesy::Geodesy,
 }
 
 /// What [`parse`] read: the valid features, an error per rejected feature, and a
@@ -1228,6 +1231,7 @@ pub fn fast_parse(text: &str) -> Option<Read> {
     let mut out = Scenario {
         features: Vec::new(),
         longitudes,
+        geodesy: Default::default(),
     };
     let mut seen = std::collections::HashSet::with_capacity(fc.features.len());
     for (index, f) in fc.features.into_iter().enumerate() {
@@ -1500,15 +1504,15 @@ pub fn parse_general(text: &str) -> Result<Read, ScenarioError> {
 pub fn objects(scenario: &Scenario) -> Vec<Object> {
     use rayon::prelude::*;
     let earth = scenario.longitudes == Longitudes::Earth;
+    let geo = scenario.geodesy;
     scenario
         .features
         .par_iter()
         .enumerate()
         .flat_map_iter(|(k, f)| {
             let owner = k as u32;
-            let merc = |r: &[LonLat]| -> Vec<[f64; 2]> {
-                r.iter().map(|&p| sphere::mercator(p)).collect()
-            };
+            let merc =
+                |r: &[LonLat]| -> Vec<[f64; 2]> { r.iter().map(|&p| geo.mercator(p)).collect() };
             let v: Vec<Object> = match &f.kind {
                 Kind::Area(a) => a
                     .shapes
@@ -1523,10 +1527,12 @@ pub fn objects(scenario: &Scenario) -> Vec<Object> {
                         )
                     })
                     .collect(),
-                Kind::Track(t) => sphere::track_legs(&t.waypoints, t.speed_kn, t.t0, t.dims)
-                    .into_iter()
-                    .map(|leg| Object::leg(owner, leg))
-                    .collect(),
+                Kind::Track(t) => {
+                    sphere::track_legs_in(geo, &t.waypoints, t.speed_kn, t.t0, t.dims)
+                        .into_iter()
+                        .map(|leg| Object::leg(owner, leg))
+                        .collect()
+                }
             };
             v.into_iter().flat_map(move |o| {
                 if earth {

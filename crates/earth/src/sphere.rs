@@ -11,6 +11,7 @@
 //! Longitudes are not wrapped: the Mercator plane is the unrolled strip, so a track may
 //! run past ±180° (the scaling generator relies on this; see `cli::generate`).
 
+use crate::geodesy::Geodesy;
 use core::f64::consts::{FRAC_PI_2, PI};
 
 /// Paper B eqs 23–24, R: the mean Earth radius 6371.0088 km expressed in nautical miles
@@ -237,24 +238,44 @@ pub struct Leg {
     pub steps: [[(f64, f64); 2]; 4],
     /// `c_m(t0)`, `c_m(tf)`: the ends in the Mercator plane (eqs 25–26).
     pub merc: [Merc; 2],
+    /// The model of the Earth the leg moves on.
+    pub geo: Geodesy,
+    /// The model latitudes `u` of `start` and `end` ([`Geodesy::u_of_lat`]: the latitude
+    /// itself on the sphere, the rectifying latitude on the ellipsoid); `u` is linear in t.
+    pub u: [f64; 2],
     /// `(cos θ, sin θ)`.
     cos_sin: [f64; 2],
     /// Per vertex (ring order), the constants of eqs 29–30:
-    /// `[a, b, d1 sin ψ1 / R, d2 sin ψ2 / R]` with `a = d1 cos ψ1 / R`, `b = d2 cos ψ2 / R`.
+    /// `[a, b, d1 sin ψ1 / R, d2 sin ψ2 / R]` with `a = d1 cos ψ1 / R`, `b = d2 cos ψ2 / R`
+    /// (`R` the model's [`Geodesy::radius_nm`]; `a`, `b` steps of the model latitude).
     step_consts: [[f64; 4]; 4],
 }
 
 impl Leg {
-    /// Paper B Section V: a leg from `start` to `end` leaving at `t0` with speed `speed_kn`.
+    /// Paper B Section V: a leg from `start` to `end` leaving at `t0` with speed `speed_kn`,
+    /// on the paper's sphere.
     pub fn new(start: LonLat, end: LonLat, speed_kn: f64, t0: f64, dims: RectDims) -> Leg {
-        let (length_nm, bearing) = rhumb_inverse(start, end);
+        Leg::new_in(Geodesy::Sphere, start, end, speed_kn, t0, dims)
+    }
+
+    /// Paper B Section V on the model `geo` (the sphere, or the WGS84 ellipsoid).
+    pub fn new_in(
+        geo: Geodesy,
+        start: LonLat,
+        end: LonLat,
+        speed_kn: f64,
+        t0: f64,
+        dims: RectDims,
+    ) -> Leg {
+        let (length_nm, bearing) = geo.rhumb_inverse(start, end);
         let steps = table2_steps(dims, bearing);
+        let r = geo.radius_nm();
         let step_consts = steps.map(|[(d1, p1), (d2, p2)]| {
             [
-                d1 * p1.cos() / EARTH_RADIUS_NM,
-                d2 * p2.cos() / EARTH_RADIUS_NM,
-                d1 * p1.sin() / EARTH_RADIUS_NM,
-                d2 * p2.sin() / EARTH_RADIUS_NM,
+                d1 * p1.cos() / r,
+                d2 * p2.cos() / r,
+                d1 * p1.sin() / r,
+                d2 * p2.sin() / r,
             ]
         });
         Leg {
@@ -268,7 +289,9 @@ impl Leg {
             dims,
             steps,
             step_consts,
-            merc: [mercator(start), mercator(end)],
+            merc: [geo.mercator(start), geo.mercator(end)],
+            geo,
+            u: [geo.u_of_lat(start.lat), geo.u_of_lat(end.lat)],
             cos_sin: [bearing.cos(), bearing.sin()],
         }
     }
@@ -286,7 +309,7 @@ impl Leg {
         Leg {
             start,
             end,
-            merc: [mercator(start), mercator(end)],
+            merc: [self.geo.mercator(start), self.geo.mercator(end)],
             ..self.clone()
         }
     }
@@ -296,35 +319,47 @@ impl Leg {
         self.reference_with_psi(t).0
     }
 
-    /// Paper B eqs 23–24 and 26: `c_s(t)` and `ψ(φ_c(t))`, with the bearing's cosine and
-    /// sine and `ψ(φ_c(t0))` precomputed (the same formula as [`rhumb_destination`]).
-    fn reference_with_psi(&self, t: f64) -> (LonLat, f64) {
+    /// The model's radius `R` ([`Geodesy::radius_nm`]).
+    fn radius(&self) -> f64 {
+        self.geo.radius_nm()
+    }
+
+    /// Paper B eqs 23–24 and 26: `c_s(t)`, its model latitude `u` and `Ψ(u)`, with the
+    /// bearing's cosine and sine and `Ψ(u(t0))` precomputed (the same formula as
+    /// [`Geodesy::rhumb_destination`]).
+    fn reference_with_psi(&self, t: f64) -> (LonLat, f64, f64) {
         let t = t.clamp(self.t0, self.t1);
         if t == self.t1 {
-            return (self.end, self.merc[1][1]);
+            return (self.end, self.u[1], self.merc[1][1]);
         }
         let d = self.speed_kn * (t - self.t0);
-        let lat = self.start.lat + d * self.cos_sin[0] / EARTH_RADIUS_NM;
-        let psi = mercator_y(lat);
-        let dphi = lat - self.start.lat;
-        let m = if dphi.abs() >= FAST_MEAN_SEC_MIN_H {
-            (psi - self.merc[0][1]) / dphi
+        let r = self.radius();
+        let u = self.u[0] + d * self.cos_sin[0] / r;
+        let psi = self.geo.psi_of_u(u);
+        let du = u - self.u[0];
+        let m = if du.abs() >= FAST_MEAN_SEC_MIN_H {
+            (psi - self.merc[0][1]) / du
         } else {
-            mean_sec(self.start.lat, dphi)
+            self.geo.mean_g(self.u[0], du)
         };
-        let lon = self.start.lon + d * self.cos_sin[1] / EARTH_RADIUS_NM * m;
-        (LonLat { lon, lat }, psi)
+        let lon = self.start.lon + d * self.cos_sin[1] / r * m;
+        let lat = self.geo.lat_of_u(u);
+        (LonLat { lon, lat }, u, psi)
     }
 
     /// Paper B eqs 27–28: the reference point in the Mercator plane.
     pub fn reference_merc_at(&self, t: f64) -> Merc {
-        mercator(self.reference_at(t))
+        let (c, _, psi) = self.reference_with_psi(t);
+        [c.lon, psi]
     }
 
     /// Paper B eqs 29–30 and Table 2: the rectangle's vertices at time `t`, ring order 1-2-4-3.
     pub fn vertices_at(&self, t: f64) -> [LonLat; 4] {
         let c = self.reference_at(t);
-        self.steps.map(|s| vertex_by_steps(c, &s))
+        self.steps.map(|s| {
+            s.iter()
+                .fold(c, |p, &(d, psi)| self.geo.rhumb_destination(p, psi, d))
+        })
     }
 
     /// Paper B eqs 29–30 in the Mercator plane (eqs 25–26), evaluated with the step
@@ -332,8 +367,7 @@ impl Leg {
     /// `y = ψ(u + a + b)` with `u = φ_c(t)` (the same formulas as [`Leg::vertices_at`]
     /// followed by [`mercator`], sharing the front and back steps' means).
     pub fn merc_vertices_at(&self, t: f64) -> [Merc; 4] {
-        let (c, psi_u) = self.reference_with_psi(t);
-        let u = c.lat;
+        let (c, u, psi_u) = self.reference_with_psi(t);
         // M(φ, h) from ψ values already at hand when h is large enough for the plain
         // difference (see FAST_MEAN_SEC_MIN_H), else the cancellation-free form.
         let mean = |lat: f64, psi_lat: f64, h: f64, psi_end: f64| {
@@ -341,11 +375,11 @@ impl Leg {
             if dphi.abs() >= FAST_MEAN_SEC_MIN_H {
                 (psi_end - psi_lat) / dphi
             } else {
-                mean_sec(lat, h)
+                self.geo.mean_g(lat, h)
             }
         };
         let (af, ab) = (self.step_consts[0][0], self.step_consts[2][0]);
-        let (psi_f, psi_b) = (mercator_y(u + af), mercator_y(u + ab));
+        let (psi_f, psi_b) = (self.geo.psi_of_u(u + af), self.geo.psi_of_u(u + ab));
         let front = mean(u, psi_u, af, psi_f);
         let back = mean(u, psi_u, ab, psi_b);
         let mut out = [[0.0; 2]; 4];
@@ -353,7 +387,7 @@ impl Leg {
             let [a, b, s1, s2] = self.step_consts[k];
             let (m1, psi_mid) = if k < 2 { (front, psi_f) } else { (back, psi_b) };
             let mid = u + a;
-            let y = mercator_y(mid + b);
+            let y = self.geo.psi_of_u(mid + b);
             *o = [c.lon + s1 * m1 + s2 * mean(mid, psi_mid, b, y), y];
         }
         out
@@ -378,8 +412,9 @@ impl Leg {
     /// `a = d1 cos ψ1 / R`, `b = d2 cos ψ2 / R` (eq 30), independent of time.
     fn lat_offsets(&self, k: usize) -> (f64, f64) {
         let [(d1, p1), (d2, p2)] = self.steps[k];
-        let a = d1 * p1.cos() / EARTH_RADIUS_NM;
-        (a, a + d2 * p2.cos() / EARTH_RADIUS_NM)
+        let r = self.radius();
+        let a = d1 * p1.cos() / r;
+        (a, a + d2 * p2.cos() / r)
     }
 
     /// Largest |latitude| reached by the reference point, the step points and the vertices
@@ -387,7 +422,7 @@ impl Leg {
     /// at the ends).
     pub fn max_abs_lat(&self) -> f64 {
         let mut m: f64 = 0.0;
-        for u in [self.start.lat, self.end.lat] {
+        for u in self.u {
             m = m.max(u.abs());
             for k in 0..4 {
                 let (a, ab) = self.lat_offsets(k);
@@ -403,11 +438,10 @@ impl Leg {
     /// `x_k = x_c + (d1 sin ψ1/R) M(u, a) + (d2 sin ψ2/R) M(u+a, b)` with
     /// `|∂M/∂u| ≤ sec Φ tan Φ` (M is the mean of sec, its derivative the mean of sec·tan).
     pub fn merc_speed_bound(&self) -> f64 {
-        let phi = self.max_abs_lat();
-        let (sec, tan) = (1.0 / phi.cos(), phi.tan());
-        let s = self.speed_kn / EARTH_RADIUS_NM;
+        let (sec, tan) = self.geo.sec_tan_bound(self.max_abs_lat());
+        let s = self.speed_kn / self.radius();
         let (st, ct) = (self.bearing.sin().abs(), self.bearing.cos().abs());
-        let steps = (self.dims.front.max(self.dims.back) + self.dims.side) / EARTH_RADIUS_NM;
+        let steps = (self.dims.front.max(self.dims.back) + self.dims.side) / self.radius();
         let vx = s * (st * sec + ct * steps * sec * tan);
         let vy = s * ct * sec;
         vx.hypot(vy) * BOUND_SAFETY
@@ -417,16 +451,11 @@ impl Leg {
     /// `sec φ_c(t) · e` with the constant `e = (s/R)(sin θ, cos θ)`. Returns `e` and the
     /// range `[sec_min, sec_max]` of `sec φ_c` over the leg (φ_c is linear in t).
     pub fn reference_velocity_envelope(&self) -> (Merc, f64, f64) {
-        let s = self.speed_kn / EARTH_RADIUS_NM;
+        let s = self.speed_kn / self.radius();
         let e = [s * self.bearing.sin(), s * self.bearing.cos()];
-        let (a, b) = (self.start.lat, self.end.lat);
-        let sec_hi = 1.0 / a.abs().max(b.abs()).cos() * BOUND_SAFETY;
-        let sec_lo = if a.signum() != b.signum() {
-            1.0
-        } else {
-            1.0 / a.abs().min(b.abs()).cos() / BOUND_SAFETY
-        };
-        (e, sec_lo, sec_hi)
+        let [a, b] = self.u;
+        let (lo, hi) = self.geo.g_range(a.min(b), a.max(b));
+        (e, lo / BOUND_SAFETY, hi * BOUND_SAFETY)
     }
 
     /// Paper B eqs 29–30 differentiated: a bound on `|v_k(t) − v_c(t)|`, the speed of any
@@ -434,10 +463,10 @@ impl Leg {
     /// the x part is `u' Σ (d_m sin ψ_m / R) ∂M/∂u` and the y part `u'(sec(u+δ) − sec u)`,
     /// each at most `|u'| sec Φ tan Φ · (Σ d_m)/R`.
     pub fn deformation_speed_bound(&self) -> f64 {
-        let phi = self.max_abs_lat();
-        let steps = (self.dims.front.max(self.dims.back) + self.dims.side) / EARTH_RADIUS_NM;
-        let du = self.speed_kn / EARTH_RADIUS_NM * self.bearing.cos().abs();
-        2.0 * du * steps * phi.tan() / phi.cos() * BOUND_SAFETY
+        let (sec, tan) = self.geo.sec_tan_bound(self.max_abs_lat());
+        let steps = (self.dims.front.max(self.dims.back) + self.dims.side) / self.radius();
+        let du = self.speed_kn / self.radius() * self.bearing.cos().abs();
+        2.0 * du * steps * tan * sec * BOUND_SAFETY
     }
 
     /// Paper B eq 7 made conservative: for each vertex (ring order) a box
@@ -447,10 +476,10 @@ impl Leg {
     /// term is `h·M(u + e, h)`, monotone in `u` on either side of `u = −e − h/2`, so its
     /// range over `[u0, u1]` is reached at the ends or at that point (interval sums).
     pub fn offset_boxes(&self) -> [[f64; 4]; 4] {
-        let (u0, u1) = if self.start.lat <= self.end.lat {
-            (self.start.lat, self.end.lat)
+        let (u0, u1) = if self.u[0] <= self.u[1] {
+            (self.u[0], self.u[1])
         } else {
-            (self.end.lat, self.start.lat)
+            (self.u[1], self.u[0])
         };
         let (e0, e1) = (self.offset_terms(u0), self.offset_terms(u1));
         let mut out = [[0.0; 4]; 4];
@@ -462,7 +491,7 @@ impl Leg {
                 let (mut lo, mut hi) = (e0[k][j].min(e1[k][j]), e0[k][j].max(e1[k][j]));
                 let crit = -e - 0.5 * h;
                 if crit > u0 && crit < u1 {
-                    let v = c * mean_sec(crit + e, h);
+                    let v = c * self.geo.mean_g(crit + e, h);
                     lo = lo.min(v);
                     hi = hi.max(v);
                 }
@@ -486,17 +515,17 @@ impl Leg {
     /// point at latitude `u`: `[s1·M(u, a), s2·M(u+a, b), ψ(u+a+b) − ψ(u)]` (as
     /// [`Leg::merc_vertices_at`] evaluates them).
     fn offset_terms(&self, u: f64) -> [[f64; 3]; 4] {
-        let psi_u = mercator_y(u);
+        let psi_u = self.geo.psi_of_u(u);
         let mean = |lat: f64, psi_lat: f64, h: f64, psi_end: f64| {
             let dphi = (lat + h) - lat;
             if dphi.abs() >= FAST_MEAN_SEC_MIN_H {
                 (psi_end - psi_lat) / dphi
             } else {
-                mean_sec(lat, h)
+                self.geo.mean_g(lat, h)
             }
         };
         let (af, ab) = (self.step_consts[0][0], self.step_consts[2][0]);
-        let (psi_f, psi_b) = (mercator_y(u + af), mercator_y(u + ab));
+        let (psi_f, psi_b) = (self.geo.psi_of_u(u + af), self.geo.psi_of_u(u + ab));
         let front = mean(u, psi_u, af, psi_f);
         let back = mean(u, psi_u, ab, psi_b);
         let mut out = [[0.0; 3]; 4];
@@ -504,7 +533,7 @@ impl Leg {
             let [a, b, s1, s2] = self.step_consts[k];
             let (m1, psi_mid) = if k < 2 { (front, psi_f) } else { (back, psi_b) };
             let mid = u + a;
-            let y = mercator_y(mid + b);
+            let y = self.geo.psi_of_u(mid + b);
             *o = [s1 * m1, s2 * mean(mid, psi_mid, b, y), y - psi_u];
         }
         out
@@ -517,8 +546,8 @@ impl Leg {
     pub fn track_time(&self, rho: f64) -> f64 {
         let [c0, c1] = self.merc;
         let q = [c0[0] + rho * (c1[0] - c0[0]), c0[1] + rho * (c1[1] - c0[1])];
-        let qs = inverse_mercator(q);
-        let d = rhumb_distance(self.start, qs);
+        let qs = self.geo.inverse_mercator(q);
+        let d = self.geo.rhumb_distance(self.start, qs);
         self.t0 + rho.signum() * d / self.speed_kn
     }
 }
@@ -527,13 +556,24 @@ impl Leg {
 /// several waypoints split into legs, each a straight Mercator segment, back to back in
 /// time from `t0`. Zero-length legs (repeated waypoints) are skipped.
 pub fn track_legs(waypoints: &[LonLat], speed_kn: f64, t0: f64, dims: RectDims) -> Vec<Leg> {
+    track_legs_in(Geodesy::Sphere, waypoints, speed_kn, t0, dims)
+}
+
+/// [`track_legs`] on the model `geo`.
+pub fn track_legs_in(
+    geo: Geodesy,
+    waypoints: &[LonLat],
+    speed_kn: f64,
+    t0: f64,
+    dims: RectDims,
+) -> Vec<Leg> {
     let mut legs = Vec::with_capacity(waypoints.len().saturating_sub(1));
     let mut t = t0;
     for w in waypoints.windows(2) {
         if w[0] == w[1] {
             continue;
         }
-        let leg = Leg::new(w[0], w[1], speed_kn, t, dims);
+        let leg = Leg::new_in(geo, w[0], w[1], speed_kn, t, dims);
         t = leg.t1;
         legs.push(leg);
     }

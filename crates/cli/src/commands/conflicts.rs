@@ -2,6 +2,7 @@
 //! (docs/scenario.md), writing the answer JSON of that spec.
 
 use polyguard_earth::analysis::{analyse_into, analyse_with, Analysis, Progress};
+use polyguard_earth::geodesy::Geodesy;
 use polyguard_earth::picture;
 use serde_json::Value;
 use std::path::PathBuf;
@@ -14,6 +15,24 @@ const PROGRESS_MIN_OBJECTS: usize = 10_000;
 const EXIT_BAD_FEATURES: u8 = 1;
 /// Exit code when the scenario cannot be read at all.
 const EXIT_FATAL: u8 = 2;
+
+/// `--geodesy` of `polyguard conflicts`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum GeodesyArg {
+    /// The paper's sphere.
+    Sphere,
+    /// The WGS84 ellipsoid.
+    Wgs84,
+}
+
+impl From<GeodesyArg> for Geodesy {
+    fn from(g: GeodesyArg) -> Geodesy {
+        match g {
+            GeodesyArg::Sphere => Geodesy::Sphere,
+            GeodesyArg::Wgs84 => Geodesy::Wgs84,
+        }
+    }
+}
 
 /// Arguments of `polyguard conflicts`.
 #[derive(clap::Args, Debug, Clone)]
@@ -37,6 +56,11 @@ pub struct ConflictsArgs {
     /// Pretty-print the answer.
     #[arg(long)]
     pub pretty: bool,
+    /// The model of the Earth: `sphere` (the paper's, radius 3440.065 nm; the default) or
+    /// `wgs84` (rhumb lines, Mercator and distances on the WGS84 ellipsoid, which
+    /// reproduces the paper's printed Example 3 times). docs/scenario.md, "Geodesy".
+    #[arg(long, value_enum, default_value_t = GeodesyArg::Sphere)]
+    pub geodesy: GeodesyArg,
     /// No progress display.
     #[arg(long)]
     pub quiet: bool,
@@ -106,6 +130,7 @@ pub fn run(args: &ConflictsArgs) -> ExitCode {
         &text,
         args.tolerance_s / 3600.0,
         !args.no_regions,
+        args.geodesy.into(),
         &mut Spinner {
             show: !args.quiet,
             bar: None,
@@ -188,6 +213,7 @@ fn streamed(args: &ConflictsArgs, text: String) -> ExitCode {
         text,
         args.tolerance_s / 3600.0,
         !args.no_regions,
+        args.geodesy.into(),
         &mut sink,
         &mut Spinner {
             show: !args.quiet,

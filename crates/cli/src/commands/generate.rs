@@ -195,6 +195,7 @@ mod tests {
                 let o = polyguard_earth::scenario::objects(&Scenario {
                     features: vec![f.clone()],
                     longitudes: a.longitudes,
+                    geodesy: Default::default(),
                 });
                 // sorted angles with gaps ≤ π: a simple (star-shaped) ring
                 assert!(polyguard_earth::conflict::geom::signed_area(&o[0].sweep) > 0.0);

@@ -504,6 +504,7 @@ pub fn draw(src: &mut impl Source) -> CaseB {
         scenario: Scenario {
             features: vec![feature("a", ka), feature("b", kb)],
             longitudes: scenario::Longitudes::Earth,
+            geodesy: Default::default(),
         },
         mode: format!("{mode}@{}", place.name()),
     }

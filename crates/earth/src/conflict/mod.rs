@@ -127,8 +127,7 @@ impl Object {
     /// [`Leg::offset_boxes`] (the paper's hull of the rectangles at `t0` and `tf` assumes
     /// linear vertex motion, which rhumb rectangles do not have).
     pub fn leg(owner: u32, leg: Leg) -> Object {
-        let c0 = crate::sphere::mercator(leg.start);
-        let c1 = crate::sphere::mercator(leg.end);
+        let [c0, c1] = leg.merc;
         let boxes = leg.offset_boxes();
         let mut pts = Vec::with_capacity(32);
         for c in [c0, c1] {

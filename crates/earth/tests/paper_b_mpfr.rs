@@ -132,3 +132,44 @@ fn track_time_algorithm4() {
         m.see(err / unit, || format!("{a:?} {b:?} {rho}"), TRACK_TIME_ULPS);
     }
 }
+
+/// `position_slack`'s claim: one f64 evaluation of a leg's rectangle
+/// (`merc_vertices_at`) lies within 2⁻⁴⁴·max(c, 4) of the MPFR one (c the largest
+/// coordinate), on legs at latitudes up to 84°, every bearing (a quarter cardinal),
+/// rectangles of 0.01–50 nm, at nine instants each. In units of that bound.
+#[test]
+fn leg_vertices_within_the_position_slack() {
+    use polyguard_earth::sphere::Leg;
+    let mut worst = Max("merc_vertices_at vs MPFR (units of 2^-44 max(c, 4))", 0.0);
+    let mut g = SplitMix(0x2545_f491_4f6c_dd1d);
+    let mut n = 0;
+    while n < cases() / 4 {
+        let start = LonLat::from_degrees(g.range(-179.0, 179.0), g.range(-80.0, 80.0));
+        let bearing = if g.below(4) == 0 {
+            g.below(4) as f64 * std::f64::consts::FRAC_PI_2
+        } else {
+            g.range(0.0, std::f64::consts::TAU)
+        };
+        let end = sphere::rhumb_destination(start, bearing, 10f64.powf(g.range(0.0, 3.0)));
+        if end.lat.abs() > 84f64.to_radians() {
+            continue;
+        }
+        n += 1;
+        let mut size = || 10f64.powf(g.range(-2.0, 1.7));
+        let dims = RectDims {
+            front: size(),
+            back: size(),
+            side: size(),
+        };
+        let leg = Leg::new(start, end, g.range(1.0, 500.0), g.range(-5.0, 5.0), dims);
+        for i in 0..=8 {
+            let t = leg.t0 + (leg.t1 - leg.t0) * i as f64 / 8.0;
+            let c = leg
+                .merc_vertices_at(t)
+                .iter()
+                .fold(4f64, |c, p| c.max(p[0].abs()).max(p[1].abs()));
+            let err = mp::leg_vertex_error(&leg, t).expect("a sphere leg");
+            worst.see(err / (c * 2f64.powi(-44)), || format!("{leg:?} t {t}"), 1.0);
+        }
+    }
+}

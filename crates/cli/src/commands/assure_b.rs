@@ -290,6 +290,7 @@ pub fn run(
                     match judge(&c, engine) {
                         Ok((v, sc, _, ne, nt)) => {
                             local.cases += 1;
+                            local.see_model(&v);
                             local.nanos[0] += ne;
                             local.nanos[1] += nt;
                             *local

@@ -28,6 +28,12 @@
 //! - `near_alarm`: a window reported for a pair that never meets, within the contract's
 //!   band. By design.
 //! - `undecided`: tangent within the truth's slack; not judged.
+//! - `model_rounding` (with `--features rug`): at an instant the verdict rests on (the
+//!   truth's first and last meetings, the window's ends), a leg's f64 rectangle
+//!   (`merc_vertices_at`, which both the pipeline and the truth evaluate) lies farther
+//!   than `2⁻⁴⁴·max(c, 4)` from its MPFR value (`reference::mpfr::leg_vertex_error`), the
+//!   bound `position_slack` is built on. A failure: the truth's model is not the
+//!   paper's geometry within the stated rounding.
 //! - `agree`.
 
 use std::collections::BTreeMap;
@@ -62,11 +68,13 @@ pub enum ClassB {
     EndFar,
     /// A speed bound broken.
     BoundBroken,
+    /// A leg's f64 rectangle farther from its MPFR value than the stated rounding bound.
+    ModelRounding,
 }
 
 impl ClassB {
     /// Every class, in report order.
-    pub const ALL: [ClassB; 7] = [
+    pub const ALL: [ClassB; 8] = [
         ClassB::Agree,
         ClassB::NearAlarm,
         ClassB::Undecided,
@@ -74,6 +82,7 @@ impl ClassB {
         ClassB::WindowShort,
         ClassB::EndFar,
         ClassB::BoundBroken,
+        ClassB::ModelRounding,
     ];
 
     /// snake_case name.
@@ -86,6 +95,7 @@ impl ClassB {
             ClassB::WindowShort => "window_short",
             ClassB::EndFar => "end_far",
             ClassB::BoundBroken => "bound_broken",
+            ClassB::ModelRounding => "model_rounding",
         }
     }
 
@@ -93,7 +103,11 @@ impl ClassB {
     pub fn is_failure(self) -> bool {
         matches!(
             self,
-            ClassB::MissedConflict | ClassB::WindowShort | ClassB::EndFar | ClassB::BoundBroken
+            ClassB::MissedConflict
+                | ClassB::WindowShort
+                | ClassB::EndFar
+                | ClassB::BoundBroken
+                | ClassB::ModelRounding
         )
     }
 }
@@ -116,6 +130,10 @@ pub struct VerdictB {
     pub engine: Option<(f64, f64)>,
     /// The truth.
     pub truth: Outcome,
+    /// The largest f64-against-MPFR distance of a leg's rectangle at the verdict's
+    /// instants, in units of its bound `2⁻⁴⁴·max(c, 4)`; `None` when not checked (built
+    /// without `rug`, or no leg).
+    pub model_error: Option<f64>,
 }
 
 // ---------------------------------------------------------------- generators
@@ -586,11 +604,55 @@ pub fn judge_read(sc: &Scenario, eng: Option<(f64, f64)>) -> Option<VerdictB> {
             }
         }
     };
+    let mut instants = Vec::new();
+    if let Outcome::Meets { first, last, .. } = t {
+        instants.extend([first, last]);
+    }
+    if let Some((s, e)) = eng {
+        instants.extend([s, e]);
+    }
+    let model_error = model_error(sc, &instants);
+    let class = match model_error {
+        Some(r) if r > 1.0 && !class.is_failure() => ClassB::ModelRounding,
+        _ => class,
+    };
     Some(VerdictB {
         class,
         engine: eng,
         truth: t,
+        model_error,
     })
+}
+
+/// The largest distance between a leg's f64 rectangle and its MPFR value at `instants`
+/// (each clamped into the leg's life; finite ones only), in units of `2⁻⁴⁴·max(c, 4)`.
+#[cfg(feature = "rug")]
+fn model_error(sc: &Scenario, instants: &[f64]) -> Option<f64> {
+    use polyguard_earth::reference::mpfr;
+    let mut worst: Option<f64> = None;
+    for f in &sc.features {
+        let Kind::Track(t) = &f.kind else { continue };
+        for leg in sphere::track_legs_in(sc.geodesy, &t.waypoints, t.speed_kn, t.t0, t.dims) {
+            for &x in instants.iter().filter(|x| x.is_finite()) {
+                let x = x.clamp(leg.t0, leg.t1);
+                let c = leg
+                    .merc_vertices_at(x)
+                    .iter()
+                    .fold(4f64, |c, p| c.max(p[0].abs()).max(p[1].abs()));
+                if let Some(e) = mpfr::leg_vertex_error(&leg, x) {
+                    let r = e / (c * 2f64.powi(-44));
+                    worst = Some(worst.map_or(r, |w: f64| w.max(r)));
+                }
+            }
+        }
+    }
+    worst
+}
+
+/// Without `rug` the model is not checked.
+#[cfg(not(feature = "rug"))]
+fn model_error(_: &Scenario, _: &[f64]) -> Option<f64> {
+    None
 }
 
 // ---------------------------------------------------------------- report
@@ -641,6 +703,13 @@ pub struct ReportB {
     pub wall_seconds: f64,
     /// The cases kept (up to five per class but agreement and near alarms).
     pub kept: Vec<KeptB>,
+    /// Cases whose legs' rectangles were checked against MPFR (built with `rug`), and the
+    /// largest distance found, in units of its bound `2⁻⁴⁴·max(c, 4)`.
+    #[serde(default)]
+    pub model_checked: u64,
+    /// See `model_checked`.
+    #[serde(default)]
+    pub model_error_max: f64,
 }
 
 impl ReportB {
@@ -677,6 +746,16 @@ impl ReportB {
         self.nanos[0] += o.nanos[0];
         self.nanos[1] += o.nanos[1];
         self.wall_seconds += o.wall_seconds;
+        self.model_checked += o.model_checked;
+        self.model_error_max = self.model_error_max.max(o.model_error_max);
+    }
+
+    /// Counts a verdict's MPFR check.
+    pub fn see_model(&mut self, v: &VerdictB) {
+        if let Some(r) = v.model_error {
+            self.model_checked += 1;
+            self.model_error_max = self.model_error_max.max(r);
+        }
     }
 
     /// The printed summary: a table of modes × classes, the legend and one verdict line.
@@ -684,31 +763,33 @@ impl ReportB {
         use std::fmt::Write as _;
         let mut s = String::new();
         let short = [
-            "agree", "near", "undec", "MISSED", "SHORT", "ENDFAR", "BOUND",
+            "agree", "near", "undec", "MISSED", "SHORT", "ENDFAR", "BOUND", "ROUND",
         ];
         let _ = write!(s, "{:<30}", "paper B mode@place");
         for h in short {
-            let _ = write!(s, "{h:>9}");
+            let _ = write!(s, "{h:>8}");
         }
         s.push('\n');
         for (m, cs) in &self.by_mode {
             let _ = write!(s, "{m:<30}");
             for c in ClassB::ALL {
-                let _ = write!(s, "{:>9}", cs.get(&c).copied().unwrap_or(0));
+                let _ = write!(s, "{:>8}", cs.get(&c).copied().unwrap_or(0));
             }
             s.push('\n');
         }
         let t = self.totals();
         let _ = write!(s, "{:<30}", "all");
         for c in ClassB::ALL {
-            let _ = write!(s, "{:>9}", t.get(&c).copied().unwrap_or(0));
+            let _ = write!(s, "{:>8}", t.get(&c).copied().unwrap_or(0));
         }
         s.push('\n');
         s.push_str(
-            "classes: agree; near = window for a pair that never meets, within 2ε (by design); \
-             undec = tangent within the truth's slack (not judged);\n  MISSED = a meeting not \
-             reported; SHORT = a meeting outside the window; ENDFAR = a window end > 2ε from \
-             contact; BOUND = a speed bound broken (MISSED, SHORT, ENDFAR, BOUND are failures)\n",
+            "classes: agree; near = a window for a pair that never meets, within 2ε (by design);\n  \
+             undec = tangent within the truth's slack (not judged); MISSED = a meeting not \
+             reported;\n  SHORT = a meeting outside the window; ENDFAR = a window end > 2ε \
+             from contact;\n  BOUND = a speed bound broken; ROUND = a leg's f64 rectangle \
+             beyond its rounding bound (MPFR)\n  (MISSED, SHORT, ENDFAR, BOUND and ROUND are \
+             failures)\n",
         );
         let per = |i: usize| {
             if self.cases > 0 {
@@ -726,16 +807,26 @@ impl ReportB {
             per(1),
             self.wall_seconds
         );
+        if self.model_checked > 0 {
+            let _ = writeln!(
+                s,
+                "model rounding (MPFR): {} cases checked, largest error {:.4} of its bound",
+                self.model_checked, self.model_error_max
+            );
+        } else {
+            s.push_str("model rounding (MPFR): not checked (build with --features rug)\n");
+        }
         let g = |c: ClassB| t.get(&c).copied().unwrap_or(0);
         let _ = writeln!(
             s,
-            "{}: paper B, {} cases: {} missed conflicts, {} short windows, {} far ends, {} broken bounds ({} undecided, {} near alarms)",
+            "{}: paper B, {} cases: {} missed conflicts, {} short windows, {} far ends, {} broken bounds, {} model roundings ({} undecided, {} near alarms)",
             if self.failures() == 0 && self.rejected == 0 { "PASS" } else { "FAIL" },
             self.cases,
             g(ClassB::MissedConflict),
             g(ClassB::WindowShort),
             g(ClassB::EndFar),
             g(ClassB::BoundBroken),
+            g(ClassB::ModelRounding),
             g(ClassB::Undecided),
             g(ClassB::NearAlarm),
         );

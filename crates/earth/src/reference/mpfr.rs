@@ -109,6 +109,69 @@ pub fn track_time(start: (f64, f64), end: (f64, f64), speed_kn: f64, t0: f64, rh
     f(t0) + signed / f(speed_kn)
 }
 
+/// [`rhumb_destination`] from a point given in MPFR.
+fn destination(lon: &Float, lat: &Float, bearing: f64, dist_nm: f64) -> (Float, Float) {
+    let r = f(EARTH_RADIUS_NM);
+    let d = f(dist_nm);
+    let b = f(bearing);
+    let dlat = Float::with_val(PREC, &d * &b.clone().cos()) / &r;
+    let lat2 = Float::with_val(PREC, lat + &dlat);
+    let dlon = if dlat.is_zero() {
+        Float::with_val(PREC, &d * &b.sin()) / (r * lat.clone().cos())
+    } else {
+        let dpsi = psi(&lat2) - psi(lat);
+        Float::with_val(PREC, &d * &b.sin()) / r * dpsi / dlat
+    };
+    (Float::with_val(PREC, lon + &dlon), lat2)
+}
+
+/// Paper B eqs 23–30 and Table 2 in MPFR on the sphere: the Mercator vertices (ring
+/// order) of a leg's rectangle at `t` (clamped to the leg's life), from the leg's f64
+/// parameters taken exactly: its start, bearing, speed, `t0` and Table 2 steps. The
+/// reference point is `speed·(t − t0)` along the rhumb line from the start; each vertex
+/// two rhumb steps from it. `None` for a leg on another model than the sphere.
+pub fn leg_merc_vertices(leg: &crate::sphere::Leg, t: f64) -> Option<[(Float, Float); 4]> {
+    if leg.geo != crate::geodesy::Geodesy::Sphere {
+        return None;
+    }
+    let t = t.clamp(leg.t0, leg.t1);
+    let dist = Float::with_val(PREC, f(t) - f(leg.t0)) * f(leg.speed_kn);
+    // the distance is exact in MPFR; `destination` takes it as an f64, so the reference
+    // point is reached in two steps whose sum is that distance exactly
+    let d_hi = dist.to_f64();
+    let d_lo = Float::with_val(PREC, &dist - d_hi).to_f64();
+    let (lon, lat) = destination(&f(leg.start.lon), &f(leg.start.lat), leg.bearing, d_hi);
+    let (lon, lat) = destination(&lon, &lat, leg.bearing, d_lo);
+    Some(leg.steps.map(|steps| {
+        let (mut x, mut y) = (lon.clone(), lat.clone());
+        for (d, b) in steps {
+            let (x2, y2) = destination(&x, &y, b, d);
+            x = x2;
+            y = y2;
+        }
+        let py = psi(&y);
+        (x, py)
+    }))
+}
+
+/// The largest distance (Mercator radians) between [`crate::sphere::Leg::merc_vertices_at`]
+/// and [`leg_merc_vertices`] at `t`: the f64 model's rounding, which
+/// [`crate::sphere::position_slack`] claims below `2⁻⁴⁴·max(c, 4)` per evaluation.
+pub fn leg_vertex_error(leg: &crate::sphere::Leg, t: f64) -> Option<f64> {
+    let exact = leg_merc_vertices(leg, t)?;
+    let got = leg.merc_vertices_at(t);
+    Some(
+        got.iter()
+            .zip(exact.iter())
+            .map(|(g, (x, y))| {
+                let dx = Float::with_val(PREC, g[0] - x).to_f64();
+                let dy = Float::with_val(PREC, g[1] - y).to_f64();
+                dx.hypot(dy)
+            })
+            .fold(0f64, f64::max),
+    )
+}
+
 /// The spacing of f64 values at `|x|` (2⁻¹⁰⁷⁴ below the normal range).
 pub fn ulp(x: f64) -> f64 {
     let x = x.abs();

@@ -4,7 +4,7 @@
 //! [`polyguard_earth::reference::truth`], which sees neither the stages nor their copies
 //! across the antimeridian.
 //!
-//! Generator modes (each at a place: mid-latitudes, near ±85°, on the antimeridian, or
+//! Generator modes (each at a place: mid-latitudes, 80°–84.5° N or S, on the antimeridian, or
 //! both):
 //! - `touch_vertex`, `touch_edge`, `near_vertex`: two areas sharing a vertex exactly,
 //!   sharing an edge exactly, or a vertex moved a signed gap of 10⁻¹³…10⁻² rad;
@@ -175,7 +175,7 @@ impl Place {
         let polar = matches!(self, Place::Polar | Place::PolarAntimeridian);
         let am = matches!(self, Place::Antimeridian | Place::PolarAntimeridian);
         let lat = if polar {
-            let l = src.range(80.0, 83.5);
+            let l = src.range(80.0, 84.5);
             if src.coin() {
                 l
             } else {

@@ -348,14 +348,7 @@ pub fn run(args: &AssureArgs) -> ExitCode {
         );
         return ExitCode::from(2);
     }
-    let threads = args
-        .threads
-        .unwrap_or_else(|| {
-            std::thread::available_parallelism()
-                .map(|n| n.get())
-                .unwrap_or(1)
-        })
-        .max(1);
+    let threads = threads(args);
     if let Err(e) = fs::create_dir_all(&args.out) {
         eprintln!(
             "polyguard assure: cannot create {}: {e}",
@@ -364,15 +357,7 @@ pub fn run(args: &AssureArgs) -> ExitCode {
         return ExitCode::from(2);
     }
     let mine: u64 = (0..args.cases).filter(|k| k % shard_n == shard_i).count() as u64;
-    let bar = if args.quiet {
-        indicatif::ProgressBar::hidden()
-    } else {
-        indicatif::ProgressBar::new(mine)
-    };
-    bar.set_style(
-        indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} {per_sec} eta {eta} {msg}")
-            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
-    );
+    let bar = progress_bar(mine, args.quiet);
     let next = AtomicU64::new(0);
     let report = Mutex::new(Report {
         seed: args.seed,
@@ -475,14 +460,7 @@ fn run_paper_b(args: &AssureArgs) -> ExitCode {
         eprintln!("polyguard assure: --contract and --aim are paper A's; drop them with --paper b");
         return ExitCode::from(2);
     }
-    let threads = args
-        .threads
-        .unwrap_or_else(|| {
-            std::thread::available_parallelism()
-                .map(|n| n.get())
-                .unwrap_or(1)
-        })
-        .max(1);
+    let threads = threads(args);
     assure_b::run(
         args.cases,
         args.seed,
@@ -494,23 +472,52 @@ fn run_paper_b(args: &AssureArgs) -> ExitCode {
     )
 }
 
+/// The campaign's progress bar over `cases` (hidden with `--quiet`).
+pub fn progress_bar(cases: u64, quiet: bool) -> indicatif::ProgressBar {
+    let bar = if quiet {
+        indicatif::ProgressBar::hidden()
+    } else {
+        indicatif::ProgressBar::new(cases)
+    };
+    bar.set_style(
+        indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} {per_sec} eta {eta} {msg}")
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+    );
+    bar
+}
+
+/// `--threads`, or one per core.
+fn threads(args: &AssureArgs) -> usize {
+    args.threads
+        .unwrap_or_else(|| {
+            std::thread::available_parallelism()
+                .map(|n| n.get())
+                .unwrap_or(1)
+        })
+        .max(1)
+}
+
+/// Writes `DIR/report.json` (either paper's report); exit 2 when it cannot.
+pub fn write_report<T: serde::Serialize>(report: &T, out: &Path) -> Result<(), ExitCode> {
+    let path = out.join("report.json");
+    let json = serde_json::to_string_pretty(report).map_err(|e| {
+        eprintln!("polyguard assure: cannot serialise the report: {e}");
+        ExitCode::from(2)
+    })?;
+    fs::write(&path, json + "\n").map_err(|e| {
+        eprintln!("polyguard assure: cannot write {}: {e}", path.display());
+        ExitCode::from(2)
+    })
+}
+
 /// Writes `DIR/report.json`, then prints the summary. The report is written first and a
 /// closed standard output (`polyguard assure | head`) is not an error: the campaign's
 /// result must not depend on who reads the summary.
 fn finish(report: &Report, out: &Path) -> ExitCode {
-    let path = out.join("report.json");
-    match serde_json::to_string_pretty(report) {
-        Ok(json) => {
-            if let Err(e) = fs::write(&path, json + "\n") {
-                eprintln!("polyguard assure: cannot write {}: {e}", path.display());
-                return ExitCode::from(2);
-            }
-        }
-        Err(e) => {
-            eprintln!("polyguard assure: cannot serialise the report: {e}");
-            return ExitCode::from(2);
-        }
+    if let Err(code) = write_report(report, out) {
+        return code;
     }
+    let path = out.join("report.json");
     let mut text = report.table();
     if !report.missing_shards.is_empty() {
         text += &format!(

@@ -255,15 +255,7 @@ pub fn run(
         return ExitCode::from(2);
     }
     let mine: u64 = (0..cases).filter(|k| k % shard_n == shard_i).count() as u64;
-    let bar = if quiet {
-        indicatif::ProgressBar::hidden()
-    } else {
-        indicatif::ProgressBar::new(mine)
-    };
-    bar.set_style(
-        indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} {per_sec} eta {eta} {msg}")
-            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
-    );
+    let bar = super::assure::progress_bar(mine, quiet);
     let next = AtomicU64::new(0);
     let report = Mutex::new(ReportB {
         paper: "b".into(),
@@ -352,19 +344,10 @@ fn keep(g: &mut Vec<(u64, CaseB, VerdictB, Scenario)>, f: (u64, CaseB, VerdictB,
 
 /// Writes `report.json`, prints the summary; exit 1 on failures (or rejected cases).
 pub fn finish(report: &ReportB, out: &Path) -> ExitCode {
-    let path = out.join("report.json");
-    match serde_json::to_string_pretty(report) {
-        Ok(json) => {
-            if let Err(e) = fs::write(&path, json + "\n") {
-                eprintln!("polyguard assure: cannot write {}: {e}", path.display());
-                return ExitCode::from(2);
-            }
-        }
-        Err(e) => {
-            eprintln!("polyguard assure: cannot serialise the report: {e}");
-            return ExitCode::from(2);
-        }
+    if let Err(code) = super::assure::write_report(report, out) {
+        return code;
     }
+    let path = out.join("report.json");
     let mut text = String::new();
     for k in &report.kept {
         text += &format!(

@@ -384,6 +384,18 @@ enum Found {
     Undecided,
 }
 
+/// Pushes the halves `[t1, tm]` and `[tm, t2]` so that the one nearest the search's
+/// start (the left one going forward) is popped first.
+fn push_halves(stack: &mut Vec<(f64, f64)>, (t1, tm, t2): (f64, f64, f64), forward: bool) {
+    if forward {
+        stack.push((tm, t2));
+        stack.push((t1, tm));
+    } else {
+        stack.push((t1, tm));
+        stack.push((tm, t2));
+    }
+}
+
 /// The first (`forward`) or last meeting of the pair over `[lo, hi]` (finite).
 fn search(p: &mut Pair<'_>, lo: f64, hi: f64, forward: bool, resolution: f64) -> Found {
     let start = if forward { lo } else { hi };
@@ -447,13 +459,7 @@ fn search(p: &mut Pair<'_>, lo: f64, hi: f64, forward: bool, resolution: f64) ->
             undecided = true;
             continue;
         }
-        if forward {
-            stack.push((tm, t2));
-            stack.push((t1, tm));
-        } else {
-            stack.push((t1, tm));
-            stack.push((tm, t2));
-        }
+        push_halves(&mut stack, (t1, tm, t2), forward);
     }
     if undecided {
         Found::Undecided
@@ -499,13 +505,7 @@ fn search_in(
             }
             _ if small => *undecided = true,
             _ => {
-                if forward {
-                    stack.push((tm, t2));
-                    stack.push((t1, tm));
-                } else {
-                    stack.push((t1, tm));
-                    stack.push((tm, t2));
-                }
+                push_halves(&mut stack, (t1, tm, t2), forward);
             }
         }
     }

@@ -4,6 +4,11 @@
 //! (n = 8, static and warping), each timed for the certified engine (`certified`) and,
 //! in the same run, for the plain f64 transcription it replaced (`plain`, the engine of
 //! commit b0875a2, kept behind feature `plain`).
+//!
+//! Group `large_polygon`: a circle of 4k, 16k and 64k vertices (radius 10⁴, BUFF 0.1, a
+//! point crossing it): `MovingPolygon::new` (the simplicity check every case passes) and
+//! `api::detect` (the decision and §II.J's well_formed), each with the sweeps that made
+//! them O(n log n).
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use polyguard::detect::{detect_3d, detect_diff_2d, detect_same_2d};
@@ -108,9 +113,51 @@ fn bench(c: &mut Criterion) {
     g.finish();
 }
 
+/// A counterclockwise circle of `n` vertices, radius 10⁴ (neighbours 2π·10⁴/n apart).
+fn circle(n: usize) -> Vec<polyguard::vect2::Vect2> {
+    (0..n)
+        .map(|k| {
+            let a = k as f64 / n as f64 * std::f64::consts::TAU;
+            polyguard::vect2::Vect2::new(1e4 * a.cos(), 1e4 * a.sin())
+        })
+        .collect()
+}
+
+fn large(c: &mut Criterion) {
+    use polyguard::api::{detect, Case, MovingPoint, MovingPolygon, Params};
+    use polyguard::vect2::Vect2;
+    let mut g = c.benchmark_group("large_polygon");
+    g.sample_size(10);
+    for n in [4096usize, 16_384, 65_536] {
+        let ring = circle(n);
+        g.bench_with_input(BenchmarkId::new("polygon_new", n), &ring, |b, r| {
+            b.iter(|| MovingPolygon::new(black_box(r.clone()), None).is_ok())
+        });
+        let case = Case::new(
+            10.0,
+            MovingPoint::new_2d(Vect2::new(-2e4, 0.5), Vect2::new(1000.0, 0.0)).expect("point"),
+            MovingPolygon::new(ring.clone(), None).expect("a simple ccw circle"),
+            Params::new(0.1).expect("BUFF"),
+        )
+        .expect("case");
+        let d = detect(&case);
+        assert!(d.detected && d.well_formed);
+        g.bench_with_input(BenchmarkId::new("detect", n), &case, |b, c| {
+            b.iter(|| detect(black_box(c)).detected)
+        });
+    }
+    g.finish();
+}
+
+criterion_group! {
+    name = large_polygons;
+    config = Criterion::default().warm_up_time(std::time::Duration::from_millis(500)).measurement_time(std::time::Duration::from_secs(3));
+    targets = large
+}
+
 criterion_group! {
     name = benches;
     config = Criterion::default().warm_up_time(std::time::Duration::from_millis(500)).measurement_time(std::time::Duration::from_secs(2));
     targets = bench
 }
-criterion_main!(benches);
+criterion_main!(benches, large_polygons);

@@ -87,6 +87,8 @@ pub mod proximity;
 pub mod quad;
 #[cfg(feature = "std")]
 pub mod ring;
+#[cfg(feature = "std")]
+mod sweep;
 pub mod vect2;
 pub mod well_formed;
 

@@ -93,8 +93,19 @@ pub fn segments_meet(p: Vect2, q: Vect2, r: Vect2, s: Vect2) -> Option<bool> {
 
 /// Paper A §II's polygon: the first pair of edges that make the ring not simple, or
 /// `Ok(())`. Repeated consecutive vertices are one vertex here (a zero-length edge
-/// crosses nothing); O(n²) edge pairs, each pruned by its bounding boxes.
+/// crosses nothing). Rings of 48 edges or more are swept (O(n log n + k), [`swept`]);
+/// smaller ones compare every pair, each pruned by its bounding boxes.
 pub fn check_simple(p: &[Vect2]) -> Result<(), RingFault> {
+    check_simple_with(p, true)
+}
+
+/// [`check_simple`] comparing every pair of edges, whatever the ring's size: the
+/// reference the sweep is tested against.
+pub fn check_simple_pairwise(p: &[Vect2]) -> Result<(), RingFault> {
+    check_simple_with(p, false)
+}
+
+fn check_simple_with(p: &[Vect2], sweep: bool) -> Result<(), RingFault> {
     // The ring without repeats: indices into p of each distinct consecutive vertex.
     let mut idx: Vec<usize> = Vec::with_capacity(p.len());
     for (i, &v) in p.iter().enumerate() {
@@ -112,6 +123,9 @@ pub fn check_simple(p: &[Vect2]) -> Result<(), RingFault> {
     let vtx = |k: usize| p[idx[k % n]];
     // the edge k of the reduced ring, named by the given indices of its ends
     let name = |k: usize| (idx[k % n], idx[(k + 1) % n]);
+    if sweep && n >= SWEEP_MIN_EDGES && p.iter().all(|v| v.x.is_finite() && v.y.is_finite()) {
+        return swept(n, &vtx, &name);
+    }
     for i in 0..n {
         // neighbours share one vertex: they overlap only by folding back on a line
         let (a, b, c) = (vtx(i), vtx(i + 1), vtx(i + 2));
@@ -138,6 +152,68 @@ pub fn check_simple(p: &[Vect2]) -> Result<(), RingFault> {
         }
     }
     Ok(())
+}
+
+/// Below this many edges [`check_simple`] compares every pair.
+const SWEEP_MIN_EDGES: usize = 48;
+
+/// [`check_simple`] on the `n` edges of the reduced ring by a sweep ([`crate::sweep`]):
+/// only edges whose closed boxes meet can meet, and [`segments_meet`] answers `Some(false)`
+/// for every other pair without computing anything, so the pairs the sweep finds hold
+/// every outcome the pairwise loop can meet. The answer is the first of them in the
+/// loop's order (edge `i`'s fold-back test, then its pairs `(i, k)` by `k`): the same
+/// fault, or the same `NotCheckable`.
+fn swept(
+    n: usize,
+    vtx: &dyn Fn(usize) -> Vect2,
+    name: &dyn Fn(usize) -> (usize, usize),
+) -> Result<(), RingFault> {
+    use crate::sweep::{along_x, near_pairs, Item};
+    // (i, k, fault) with k = i + 1 for a fold-back; the least (i, k) is the loop's first
+    let mut first: Option<(usize, usize, RingFault)> = None;
+    let mut see = |i: usize, k: usize, f: RingFault| {
+        if first.as_ref().map_or(true, |(a, b, _)| (i, k) < (*a, *b)) {
+            first = Some((i, k, f));
+        }
+    };
+    for i in 0..n {
+        let (a, b, c) = (vtx(i), vtx(i + 1), vtx(i + 2));
+        let fold = match (orient(a, b, c), dot_sign(b, a, c)) {
+            (None, _) => Some(RingFault::NotCheckable),
+            (Some(0), None) => Some(RingFault::NotCheckable),
+            (Some(0), Some(d)) if d > 0 => Some(RingFault::Crossing {
+                a: name(i),
+                b: name(i + 1),
+            }),
+            _ => None,
+        };
+        if let Some(f) = fold {
+            see(i, i + 1, f);
+        }
+    }
+    let x = along_x((0..n).map(vtx));
+    let items: Vec<Item> = (0..n).map(|i| Item::of(vtx(i), vtx(i + 1), i, x)).collect();
+    near_pairs(items, 0.0, |i, k| {
+        if k < i + 2 || (i == 0 && k == n - 1) {
+            return;
+        }
+        match segments_meet(vtx(i), vtx(i + 1), vtx(k), vtx(k + 1)) {
+            None => see(i, k, RingFault::NotCheckable),
+            Some(true) => see(
+                i,
+                k,
+                RingFault::Crossing {
+                    a: name(i),
+                    b: name(k),
+                },
+            ),
+            Some(false) => {}
+        }
+    });
+    match first {
+        Some((_, _, f)) => Err(f),
+        None => Ok(()),
+    }
 }
 
 /// The winding of a simple ring ([`check_simple`] passed): the turn at its

@@ -307,6 +307,33 @@ const PLACES: [Place; 4] = [
 
 /// A case drawn from `src`.
 pub fn draw(src: &mut impl Source) -> CaseB {
+    // near the poles a drawn area or track may reach past the format's ±85° (about 6 in
+    // 10⁵ cases): such a draw is replaced by the next one (the reader would refuse it)
+    let mut case = draw_once(src);
+    for _ in 0..8 {
+        if within_format(&case.scenario) {
+            break;
+        }
+        case = draw_once(src);
+    }
+    case
+}
+
+/// Every position within the scenario format's ±85° of latitude.
+fn within_format(sc: &Scenario) -> bool {
+    let limit = 85f64.to_radians();
+    let ok = |ps: &[LonLat]| ps.iter().all(|p| p.lat.abs() <= limit);
+    sc.features.iter().all(|f| match &f.kind {
+        Kind::Area(a) => a
+            .shapes
+            .iter()
+            .all(|s| ok(&s.ring) && s.holes.iter().all(|h| ok(h))),
+        Kind::Track(t) => ok(&t.waypoints),
+    })
+}
+
+/// One draw of [`draw`].
+fn draw_once(src: &mut impl Source) -> CaseB {
     let mode = src.pick(&MODES);
     let place = src.pick(&PLACES);
     let e = place.draw(src);

@@ -93,7 +93,7 @@ pub fn segments_meet(p: Vect2, q: Vect2, r: Vect2, s: Vect2) -> Option<bool> {
 
 /// Paper A §II's polygon: the first pair of edges that make the ring not simple, or
 /// `Ok(())`. Repeated consecutive vertices are one vertex here (a zero-length edge
-/// crosses nothing). Rings of 48 edges or more are swept (O(n log n + k), [`swept`]);
+/// crosses nothing). Rings of 48 edges or more are swept (O(n log n + k), `swept`);
 /// smaller ones compare every pair, each pruned by its bounding boxes.
 pub fn check_simple(p: &[Vect2]) -> Result<(), RingFault> {
     check_simple_with(p, true)

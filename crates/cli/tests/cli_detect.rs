@@ -81,3 +81,55 @@ fn missing_file_is_a_clear_error() {
     assert_eq!(code, 2);
     assert!(err.contains("cannot read"), "{err}");
 }
+
+/// `--case-timeout`: a case that takes longer (the exact truth on a 16k-vertex polygon,
+/// seconds even in a release build) is answered by an error line naming the option, and
+/// the lines after it are answered as usual; exit 1. Without the option every case waits.
+#[test]
+fn a_case_timeout_answers_the_slow_case_and_goes_on() {
+    let n = 16_384;
+    let verts: Vec<String> = (0..n)
+        .map(|k| {
+            let a = k as f64 / n as f64 * std::f64::consts::TAU;
+            format!("[{}, {}]", 1e4 * a.cos(), 1e4 * a.sin())
+        })
+        .collect();
+    let big = format!(
+        r#"{{"id": "circle-16k", "lookahead": 10.0, "buff": 0.1, "point": {{"pos": [-20000.0, 0.5], "vel": [1000.0, 0.0]}}, "polygon": {{"vertices": [{}]}}}}"#,
+        verts.join(", ")
+    );
+    let small = r#"{"id": "square", "lookahead": 10.0, "buff": 0.01, "point": {"pos": [1.0, -3.0], "vel": [0.0, 1.0]}, "polygon": {"vertices": [[0, 0], [2, 0], [2, 2], [0, 2]]}}"#;
+    let input = format!("{big}\n{small}\n{{oops\n{small}\n");
+    let (out, err, code) = common::run(
+        &["detect", "--engine", "truth", "--case-timeout", "0.5"],
+        input.as_bytes(),
+    );
+    assert_eq!(code, 1, "{err}");
+    let lines: Vec<serde_json::Value> = out
+        .lines()
+        .map(|l| serde_json::from_str(l).expect("each answer is JSON"))
+        .collect();
+    assert_eq!(lines.len(), 4, "{out}");
+    assert_eq!(lines[0]["id"], "circle-16k");
+    assert_eq!(lines[0]["line"], 1);
+    let e = lines[0]["error"].as_str().expect("an error");
+    assert!(
+        e.starts_with("case: no answer within 0.5 s (--case-timeout)"),
+        "{e}"
+    );
+    for k in [1, 3] {
+        assert_eq!(lines[k]["id"], "square");
+        assert_eq!(lines[k]["detected"], true, "{}", lines[k]);
+        assert!(lines[k]["entry_time"].is_number(), "{}", lines[k]);
+    }
+    assert!(lines[2]["error"]
+        .as_str()
+        .is_some_and(|e| e.starts_with("line:")));
+    // a timeout that is not a positive number of seconds is refused before any line
+    for bad in ["0", "-1", "NaN", "soon"] {
+        let opt = format!("--case-timeout={bad}");
+        let (_, err, code) = common::run(&["detect", &opt], small.as_bytes());
+        assert_eq!(code, 2, "{bad}: {err}");
+        assert!(err.contains("case-timeout"), "{err}");
+    }
+}

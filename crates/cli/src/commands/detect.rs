@@ -47,6 +47,72 @@ pub struct DetectArgs {
     /// that give no `kappa` of their own.
     #[arg(long, default_value_t = crate::case::DEFAULT_KAPPA_DEG)]
     pub kappa: f64,
+    /// Answer a case that takes longer than this many seconds with an error line and go on
+    /// with the next (the case's computation is abandoned). Without it every case is
+    /// answered however long it takes.
+    #[arg(long, value_parser = parse_timeout, conflicts_with = "timing")]
+    pub case_timeout: Option<f64>,
+}
+
+/// `--case-timeout`: a positive, finite number of seconds.
+fn parse_timeout(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(x) if x.is_finite() && x > 0.0 && x < 1e9 => Ok(x),
+        Ok(x) => Err(format!("{x} is not a number of seconds > 0")),
+        Err(e) => Err(format!("{s}: {e}")),
+    }
+}
+
+/// What a worker is asked: answer this case with this engine, `repeat` times.
+type Job = (Case, Engine, u32);
+/// Its answer: the fields after `id`, or the error.
+type Reply = Result<Map<String, Value>, String>;
+
+/// Answers cases on a thread of its own, so that `--case-timeout` can stop waiting for
+/// one. A worker that timed out is abandoned (its case runs on, unread, until the
+/// process ends) and the next case gets a new worker.
+struct Worker {
+    jobs: std::sync::mpsc::Sender<Job>,
+    replies: std::sync::mpsc::Receiver<Reply>,
+}
+
+impl Worker {
+    fn spawn() -> io::Result<Worker> {
+        let (jobs, job_rx) = std::sync::mpsc::channel::<Job>();
+        let (reply_tx, replies) = std::sync::mpsc::channel::<Reply>();
+        std::thread::Builder::new()
+            .name("polyguard-detect-case".into())
+            .spawn(move || {
+                for (case, engine, repeat) in job_rx {
+                    for _ in 1..repeat {
+                        let _ = black_box(answer(black_box(&case), engine, &mut Map::new()));
+                    }
+                    let mut out = Map::new();
+                    let r = answer(&case, engine, &mut out).map(|()| out);
+                    if reply_tx.send(r).is_err() {
+                        break;
+                    }
+                }
+            })?;
+        Ok(Worker { jobs, replies })
+    }
+
+    /// The case's answer, or `None` when `limit` passed first (the worker is then spent).
+    fn answer(&self, case: Case, engine: Engine, repeat: u32, limit: f64) -> Option<Reply> {
+        if self.jobs.send((case, engine, repeat)).is_err() {
+            return Some(Err("case: the worker thread stopped".into()));
+        }
+        match self
+            .replies
+            .recv_timeout(std::time::Duration::from_secs_f64(limit))
+        {
+            Ok(r) => Some(r),
+            Err(std::sync::mpsc::RecvTimeoutError::Timeout) => None,
+            Err(std::sync::mpsc::RecvTimeoutError::Disconnected) => {
+                Some(Err("case: the worker thread stopped".into()))
+            }
+        }
+    }
 }
 
 /// Timing totals of one group of cases.
@@ -208,6 +274,7 @@ pub fn process<R: BufRead, W: Write>(
     let mut line_no = 0usize;
     let mut failed = 0u64;
     let mut groups: BTreeMap<(&'static str, &'static str, usize), Group> = BTreeMap::new();
+    let mut worker: Option<Worker> = None;
     loop {
         buf.clear();
         if reader.read_until(b'\n', &mut buf)? == 0 {
@@ -229,6 +296,36 @@ pub fn process<R: BufRead, W: Write>(
         }
         let parsed = parse_line_with(text, line_no, args.kappa);
         obj.insert("id".into(), parsed.id);
+        if let Some(limit) = args.case_timeout {
+            let result = match parsed.case {
+                Err(e) => Err(e.to_string()),
+                Ok(case) => {
+                    let w = match worker.take() {
+                        Some(w) => w,
+                        None => Worker::spawn()?,
+                    };
+                    match w.answer(case, args.engine, args.repeat, limit) {
+                        Some(r) => {
+                            worker = Some(w);
+                            r
+                        }
+                        None => Err(format!(
+                            "case: no answer within {limit} s (--case-timeout); the case was abandoned"
+                        )),
+                    }
+                }
+            };
+            match result {
+                Ok(fields) => obj.extend(fields),
+                Err(e) => {
+                    failed += 1;
+                    obj.insert("line".into(), line_no.into());
+                    obj.insert("error".into(), e.into());
+                }
+            }
+            writeln!(out, "{}", Value::Object(obj))?;
+            continue;
+        }
         let result = parsed.case.map_err(|e| e.to_string()).and_then(|case| {
             // The engine asked for is the one timed: its decision alone for f64 and plain,
             // the whole answer (conversion to rationals included) for exact and truth.

@@ -36,6 +36,7 @@ fuzz_target!(|data: &[u8]| {
         repeat: 1,
         timing: false,
         kappa: polyguard_cli::case::DEFAULT_KAPPA_DEG,
+        case_timeout: None,
     };
     let mut out = Vec::new();
     if let Err(e) = process(&data[..end], &mut out, &args) {

@@ -470,6 +470,30 @@ pub fn detect(case: &Case) -> Detection {
     }
 }
 
+/// When the point first enters the closed polygon (and slab), enclosed in f64: see
+/// [`crate::entry`]. No BUFF: the time the exact truth computes, which paper A's
+/// detection guarantees to flag. (Paper A §II–III's "the point enters", timed.)
+pub fn detect_time(case: &Case) -> crate::entry::EntryTime {
+    let heights = match (case.point.z, case.polygon.slab) {
+        (Some((sz, vz)), Some(slab)) => Some(crate::entry::Heights {
+            sz,
+            vz,
+            bottom: slab.bottom,
+            top: slab.top,
+            vsp: slab.vz,
+        }),
+        _ => None,
+    };
+    crate::entry::first_entry(
+        case.lookahead,
+        case.point.pos,
+        case.point.vel,
+        &case.polygon.vertices,
+        &case.polygon.velocities,
+        heights,
+    )
+}
+
 /// The plain f64 transcription's answer (feature `plain`), for comparison only: it
 /// can miss true entries (see [`crate::plain`]).
 #[cfg(feature = "plain")]

@@ -78,6 +78,8 @@ pub mod api;
 pub mod ball;
 pub mod contain;
 pub mod detect;
+#[cfg(feature = "std")]
+pub mod entry;
 pub mod error;
 #[cfg(feature = "plain")]
 pub mod plain;

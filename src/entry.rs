@@ -1,0 +1,567 @@
+//! When does the point first enter? An f64 enclosure of the exact first-entry time.
+//!
+//! Paper A decides *whether* the point s + t·v comes within BUFF of the polygon
+//! P + t·V during [0, T] (§II), inside the slab in 3D (§III). Its users also ask *when*.
+//! [`first_entry`] answers with an enclosure [lo, hi] of the first time t* ∈ [0, T] at
+//! which the point lies in the closed polygon P(t) (and in 3D in the closed slab): the
+//! time the oracle's exact truth (`polyguard_oracle::truth`) computes. No BUFF is
+//! involved; the question is the one paper A's correctness theorem is about.
+//!
+//! # Method: certified branch and bound on time
+//! For each edge a(t) b(t) the point x(t) is on the edge exactly when
+//! g(t) = (x − a) × (b − a) = 0, h₁(t) = (x − a)·(b − a) ≥ 0 and
+//! h₂(t) = (b − x)·(b − a) ≥ 0 (paper A §II.C's quadratics without the BUFF band). The
+//! three are quadratics in t; on a time interval [m − h, m + h] each lies within
+//! f(m) ± (|f′(m)|·h + |f″/2|·h²), evaluated at the float m on [`Ball`]s, so the range
+//! is rigorous (the module doc of [`crate::ball`] gives the rounding model). An edge
+//! whose g range excludes 0, or whose h₁ or h₂ range is negative, certainly has no
+//! contact on the interval.
+//!
+//! While the point is on no edge its winding number about P(t) is constant. The scan
+//! visits [0, T] from left to right, halving each interval on which some edge may
+//! touch, down to width ε = T·2⁻³⁶. It carries the point's state (outside, inside, or
+//! unknown); where no edge may touch and the state is unknown, a certified winding
+//! number at the interval's midpoint settles it (0: outside, odd: inside; even and
+//! non-zero, possible only when P is not simple, stays unknown, as it is undefined in
+//! the truth).
+//!
+//! - **lo**: the start of the first interval on which an entry could not be excluded
+//!   (an edge may touch there, or the state is inside or unknown, and the slab may
+//!   hold). Every earlier time is certified: no entry.
+//! - **hi**: the first time at which the point is certainly in the closed polygon and
+//!   slab: the start of an interval that is certainly inside and in the slab, or the end
+//!   of an interval on which g certainly changes sign while h₁ > 0 and h₂ > 0 throughout
+//!   (then by continuity the point crosses the edge's interior there).
+//!
+//! So t* ∈ [lo, hi] whenever the truth says the point enters, and a certified `Never`
+//! means it never does. Without a certificate for hi the answer is
+//! [`EntryTime::Possible`] with hi = T: if the point enters at all (tangent contacts
+//! and undefined fill rules are the usual reasons f64 cannot tell), it is in [lo, T].
+//!
+//! # Cost
+//! A crossing costs about 2·36 interval visits, each over the edges still possible on its
+//! parent. A visit budget ([`VISIT_BUDGET`]) stops pathological scans (a point sliding
+//! along an edge touches it on a whole interval): the answer is then `Possible` from the
+//! first time not excluded, which is still a true statement.
+
+use crate::ball::{mx, up, Ball, BallV};
+use crate::vect2::Vect2;
+
+/// The answer of [`first_entry`]: where the exact first-entry time t* lies.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum EntryTime {
+    /// Certified: the point is never in the closed polygon (and slab) during [0, T].
+    Never,
+    /// Certified: the point enters, and t* ∈ [lo, hi].
+    Enters {
+        /// No entry before lo.
+        lo: f64,
+        /// In the closed polygon (and slab) at some time ≤ hi.
+        hi: f64,
+    },
+    /// Not certified either way: no entry before lo; if the point enters, t* ∈ [lo, hi]
+    /// (hi is then T).
+    Possible {
+        /// No entry before lo.
+        lo: f64,
+        /// T.
+        hi: f64,
+    },
+}
+
+impl EntryTime {
+    /// "never", "enters" or "possible".
+    pub fn name(self) -> &'static str {
+        match self {
+            EntryTime::Never => "never",
+            EntryTime::Enters { .. } => "enters",
+            EntryTime::Possible { .. } => "possible",
+        }
+    }
+
+    /// The enclosure [lo, hi], unless the answer is `Never`.
+    pub fn enclosure(self) -> Option<(f64, f64)> {
+        match self {
+            EntryTime::Never => None,
+            EntryTime::Enters { lo, hi } | EntryTime::Possible { lo, hi } => Some((lo, hi)),
+        }
+    }
+}
+
+/// The slab of paper A §III, for [`first_entry`]: the point's height sz + t·vz, the
+/// slab's ends bottom + t·vsp and top + t·vsp.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Heights {
+    /// The point's height at t = 0.
+    pub sz: f64,
+    /// The point's vertical speed.
+    pub vz: f64,
+    /// The slab's bottom at t = 0.
+    pub bottom: f64,
+    /// The slab's top at t = 0.
+    pub top: f64,
+    /// The slab's vertical speed.
+    pub vsp: f64,
+}
+
+/// The finest interval the scan halves: T·2⁻³⁶ (an enclosure's typical width is one
+/// or two of them, below 10⁻¹⁰·T).
+pub const RESOLUTION: f64 = 1.0 / (1u64 << 36) as f64;
+
+/// The most intervals one scan visits before answering `Possible` from where it stands.
+pub const VISIT_BUDGET: usize = 20_000;
+
+/// The point's state about P(t) while it is on no edge.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum State {
+    Outside,
+    Inside,
+    Unknown,
+}
+
+/// Where the point is against the slab over an interval.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum InSlab {
+    Never,
+    Always,
+    Maybe,
+}
+
+/// One edge i → j, in the point's frame: q(t) = x − a = q0 + t·q1, e(t) = b − a =
+/// e0 + t·e1, w(t) = b − x = e − q (paper A §II.C's relative motion).
+#[derive(Clone, Copy, Debug)]
+struct Edge {
+    q0: BallV,
+    q1: BallV,
+    e0: BallV,
+    e1: BallV,
+    w1: BallV,
+    /// g″/2, h₁″/2, h₂″/2: constant.
+    g2: Ball,
+    h12: Ball,
+    h22: Ball,
+}
+
+/// The enclosure of f over |t − m| ≤ h from f(m), f′(m) and f″/2 (a quadratic's
+/// Taylor form, exact: the radius only adds the rounding of its own terms, which
+/// [`up`] covers).
+#[inline]
+fn range(f0: Ball, f1: Ball, f2: Ball, h: f64) -> Ball {
+    let a1 = f1.z.abs() + f1.r;
+    let a2 = f2.z.abs() + f2.r;
+    Ball {
+        z: f0.z,
+        r: up(f0.r + a1 * h + a2 * h * h),
+    }
+}
+
+impl Edge {
+    /// The edge's relative motion (paper A §II.C).
+    fn new(s: Vect2, v: Vect2, a: Vect2, va: Vect2, b: Vect2, vb: Vect2) -> Edge {
+        let q1 = BallV::diff(v, va);
+        let e1 = BallV::diff(vb, va);
+        let w1 = e1.sub(q1);
+        Edge {
+            q0: BallV::diff(s, a),
+            q1,
+            e0: BallV::diff(b, a),
+            e1,
+            w1,
+            g2: q1.cross(e1),
+            h12: q1.dot(e1),
+            h22: w1.dot(e1),
+        }
+    }
+
+    /// q(m), e(m), w(m) at the float time m.
+    #[inline]
+    fn at(&self, m: f64) -> (BallV, BallV, BallV) {
+        let mb = Ball::exact(m);
+        let q = self.q0.add(self.q1.scale(mb));
+        let e = self.e0.add(self.e1.scale(mb));
+        (q, e, e.sub(q))
+    }
+
+    /// g(m) = (x − a) × (b − a) at the float time m.
+    fn g_at(&self, m: f64) -> Ball {
+        let (q, e, _) = self.at(m);
+        q.cross(e)
+    }
+
+    /// The ranges of g, h₁, h₂ over |t − m| ≤ h.
+    #[inline]
+    fn ranges(&self, m: f64, h: f64) -> [Ball; 3] {
+        let (q, e, w) = self.at(m);
+        let g = range(
+            q.cross(e),
+            self.q1.cross(e).add(q.cross(self.e1)),
+            self.g2,
+            h,
+        );
+        let h1 = range(q.dot(e), self.q1.dot(e).add(q.dot(self.e1)), self.h12, h);
+        let h2 = range(w.dot(e), self.w1.dot(e).add(w.dot(self.e1)), self.h22, h);
+        [g, h1, h2]
+    }
+
+    /// Can the point be on this edge at some time of |t − m| ≤ h? `false` is certain.
+    /// A NaN range compares false both ways, so it is "may touch".
+    #[inline]
+    fn may_touch(&self, m: f64, h: f64) -> bool {
+        let [g, h1, h2] = self.ranges(m, h);
+        !(g.lo() > 0.0 || g.hi() < 0.0 || h1.hi() < 0.0 || h2.hi() < 0.0)
+    }
+
+    /// Certainly on the edge's interior at some time of [a, b] (m, h its centre and
+    /// half width): g changes sign between a and b while h₁ > 0 and h₂ > 0 throughout.
+    fn surely_crossed(&self, a: f64, b: f64, m: f64, h: f64) -> bool {
+        let [_, h1, h2] = self.ranges(m, h);
+        if !(h1.lo() > 0.0 && h2.lo() > 0.0) {
+            return false;
+        }
+        let (ga, gb) = (self.g_at(a), self.g_at(b));
+        (ga.lo() > 0.0 && gb.hi() < 0.0) || (ga.hi() < 0.0 && gb.lo() > 0.0)
+    }
+}
+
+/// The scan's state (see the module doc).
+struct Scan<'a> {
+    s: Vect2,
+    v: Vect2,
+    p: &'a [Vect2],
+    vels: &'a [Vect2],
+    edges: Vec<Edge>,
+    /// (sz − bottom, vz − vsp) and (top − sz, vsp − vz): the slab holds when both
+    /// lines are ≥ 0.
+    slab: Option<[(Ball, Ball); 2]>,
+    eps: f64,
+    state: State,
+    lo: Option<f64>,
+    hi: Option<f64>,
+    /// The candidate edges of every open interval, as a stack of segments.
+    cands: Vec<u32>,
+    visits: usize,
+    /// Where the scan stood when the budget ran out.
+    gave_up_at: Option<f64>,
+}
+
+impl Scan<'_> {
+    /// The slab over |t − m| ≤ h (paper A §III's window, as ranges).
+    fn in_slab(&self, m: f64, h: f64) -> InSlab {
+        let Some(lines) = self.slab else {
+            return InSlab::Always;
+        };
+        let mut always = true;
+        for (c0, c1) in lines {
+            let r = range(c0.add(c1.mul(Ball::exact(m))), c1, Ball::exact(0.0), h);
+            if r.hi() < 0.0 {
+                return InSlab::Never;
+            }
+            // NaN: neither, so "maybe".
+            always &= r.lo() >= 0.0;
+        }
+        if always {
+            InSlab::Always
+        } else {
+            InSlab::Maybe
+        }
+    }
+
+    /// The point's winding number about P(τ), certified, with a ray along +x, +y, −x or
+    /// −y (the first whose every sign is decided): 0 outside, odd inside, else unknown.
+    /// (Paper A §II.B's crossing count, on balls.)
+    fn winding(&self, tau: f64) -> State {
+        let tb = Ball::exact(tau);
+        let rel: Vec<BallV> = self
+            .p
+            .iter()
+            .zip(self.vels)
+            .map(|(&pi, &vi)| BallV::diff(pi, self.s).add(BallV::diff(vi, self.v).scale(tb)))
+            .collect();
+        // Rotations by quarter turns are exact (swaps and negations).
+        let turns: [fn(BallV) -> BallV; 4] = [
+            |a| a,
+            |a| BallV {
+                v: Vect2::new(a.v.y, -a.v.x),
+                r: a.r,
+            },
+            |a| a.neg(),
+            |a| BallV {
+                v: Vect2::new(-a.v.y, a.v.x),
+                r: a.r,
+            },
+        ];
+        'ray: for turn in turns {
+            let n = rel.len();
+            let mut w: i64 = 0;
+            for i in 0..n {
+                let a = turn(rel[i]);
+                let b = turn(rel[if i + 1 == n { 0 } else { i + 1 }]);
+                let below = |y: Ball| -> Option<bool> {
+                    if y.hi() <= 0.0 {
+                        Some(true)
+                    } else if y.lo() > 0.0 {
+                        Some(false)
+                    } else {
+                        None
+                    }
+                };
+                let (Some(a_below), Some(b_below)) = (below(a.y()), below(b.y())) else {
+                    continue 'ray;
+                };
+                if a_below == b_below {
+                    continue;
+                }
+                let c = a.cross(b);
+                let side = if c.lo() > 0.0 {
+                    1
+                } else if c.hi() < 0.0 {
+                    -1
+                } else {
+                    continue 'ray;
+                };
+                if a_below && side > 0 {
+                    w += 1;
+                } else if !a_below && side < 0 {
+                    w -= 1;
+                }
+            }
+            return match w {
+                0 => State::Outside,
+                w if w % 2 != 0 => State::Inside,
+                _ => State::Unknown,
+            };
+        }
+        State::Unknown
+    }
+
+    /// Visits [a, b] whose candidate edges are `cands[from..to]`; `true` stops the scan
+    /// (hi is found, or the budget is spent).
+    fn visit(&mut self, a: f64, b: f64, from: usize, to: usize) -> bool {
+        self.visits += 1;
+        if self.visits > VISIT_BUDGET {
+            self.gave_up_at = Some(a);
+            return true;
+        }
+        let m = 0.5 * a + 0.5 * b;
+        // |t − m| ≤ h on [a, b]: both differences are rounded once, up() covers it.
+        let h = up(mx(b - m, m - a));
+        let slab = self.in_slab(m, h);
+        let start = self.cands.len();
+        for k in from..to {
+            let i = self.cands[k];
+            if self.edges[i as usize].may_touch(m, h) {
+                self.cands.push(i);
+            }
+        }
+        let end = self.cands.len();
+        let touching = end > start;
+        // Once lo is known the enclosure is at least a − lo wide: hi need not be finer
+        // than a 64th of that, which keeps a long stretch of contacts to a few hundred
+        // visits per octave.
+        let fine = match self.lo {
+            Some(lo) => mx(self.eps, (a - lo) * (1.0 / 64.0)),
+            None => self.eps,
+        };
+        let small = b - a <= fine || m <= a || m >= b;
+        let stop = if slab == InSlab::Never {
+            // No entry here; contacts may change the state without our knowing.
+            if touching {
+                self.state = State::Unknown;
+            }
+            false
+        } else if !touching {
+            if self.state == State::Unknown {
+                self.state = self.winding(m);
+            }
+            match (self.state, slab) {
+                (State::Outside, _) => false,
+                (State::Inside, InSlab::Always) => {
+                    self.lo.get_or_insert(a);
+                    self.hi = Some(a);
+                    true
+                }
+                (State::Inside, _) if !small => {
+                    // Inside throughout; find where the slab surely holds.
+                    self.visit(a, m, start, end) || self.visit(m, b, start, end)
+                }
+                _ => {
+                    self.lo.get_or_insert(a);
+                    false
+                }
+            }
+        } else if small {
+            self.lo.get_or_insert(a);
+            let crossed = slab == InSlab::Always
+                && self.cands[start..end]
+                    .iter()
+                    .any(|&i| self.edges[i as usize].surely_crossed(a, b, m, h));
+            if crossed {
+                self.hi = Some(b);
+                true
+            } else {
+                self.state = State::Unknown;
+                false
+            }
+        } else {
+            self.visit(a, m, start, end) || self.visit(m, b, start, end)
+        };
+        self.cands.truncate(start);
+        stop
+    }
+}
+
+/// The case with every length times 2^k, when every scaled float is exact (else as
+/// given).
+struct Scaled {
+    s: Vect2,
+    v: Vect2,
+    p: Vec<Vect2>,
+    vels: Vec<Vect2>,
+    heights: Option<Heights>,
+}
+
+impl Scaled {
+    /// Scales by 2^k if that is exact for every coordinate (paper A §II's question is
+    /// invariant under a common change of length unit).
+    fn new(
+        k: i32,
+        s: Vect2,
+        v: Vect2,
+        p: &[Vect2],
+        vels: &[Vect2],
+        heights: Option<Heights>,
+    ) -> Scaled {
+        let unscaled = || Scaled {
+            s,
+            v,
+            p: p.to_vec(),
+            vels: vels.to_vec(),
+            heights,
+        };
+        if k == 0 {
+            return unscaled();
+        }
+        let mut exact = true;
+        let mut sc = |x: f64| {
+            let y = libm::scalbn(x, k);
+            exact &= libm::scalbn(y, -k) == x;
+            y
+        };
+        let mut sv = |a: Vect2| Vect2::new(sc(a.x), sc(a.y));
+        let out = Scaled {
+            s: sv(s),
+            v: sv(v),
+            p: p.iter().map(|&a| sv(a)).collect(),
+            vels: vels.iter().map(|&a| sv(a)).collect(),
+            heights: heights.map(|z| Heights {
+                sz: sc(z.sz),
+                vz: sc(z.vz),
+                bottom: sc(z.bottom),
+                top: sc(z.top),
+                vsp: sc(z.vsp),
+            }),
+        };
+        if exact {
+            out
+        } else {
+            unscaled()
+        }
+    }
+}
+
+/// The first time t ∈ [0, T] at which s + t·v lies in the closed polygon P + t·V (and,
+/// with `heights`, in the closed slab), enclosed in f64 (see the module doc).
+///
+/// `p` and `vels` have equal lengths (the shorter is used); at least 3 vertices are
+/// expected, like paper A's functions. Non-finite inputs give `Possible` from 0.
+/// (Paper A §II–III's "the point enters", the question of its §IV theorem, timed.)
+pub fn first_entry(
+    t: f64,
+    s: Vect2,
+    v: Vect2,
+    p: &[Vect2],
+    vels: &[Vect2],
+    heights: Option<Heights>,
+) -> EntryTime {
+    let n = p.len().min(vels.len());
+    let (p, vels) = (&p[..n], &vels[..n]);
+    if !(t >= 0.0 && t.is_finite()) || n < 3 {
+        return EntryTime::Possible {
+            lo: 0.0,
+            hi: if t.is_finite() { t.max(0.0) } else { f64::MAX },
+        };
+    }
+    // Scale space by a power of two so that the largest magnitude is about 1: the
+    // question is the same (every position and velocity times 2^k, exactly), and the
+    // products of the scan neither overflow nor underflow. Only an exact scaling is used.
+    let mut mag = s.x.abs().max(s.y.abs()).max(t * v.x.abs().max(v.y.abs()));
+    for (pi, vi) in p.iter().zip(vels) {
+        mag = mag
+            .max(pi.x.abs().max(pi.y.abs()))
+            .max(t * vi.x.abs().max(vi.y.abs()));
+    }
+    if let Some(z) = heights {
+        for x in [z.sz, z.bottom, z.top, t * z.vz, t * z.vsp] {
+            mag = mag.max(x.abs());
+        }
+    }
+    let k = if mag.is_finite() && mag > 0.0 {
+        -libm::ilogb(mag)
+    } else {
+        0
+    };
+    let scaled = Scaled::new(k, s, v, p, vels, heights);
+    let (s, v, heights) = (scaled.s, scaled.v, scaled.heights);
+    let (p, vels) = (&scaled.p[..], &scaled.vels[..]);
+    let edges: Vec<Edge> = (0..n)
+        .map(|i| {
+            let j = if i + 1 == n { 0 } else { i + 1 };
+            Edge::new(s, v, p[i], vels[i], p[j], vels[j])
+        })
+        .collect();
+    let slab = heights.map(|z| {
+        [
+            (Ball::rounded(z.sz - z.bottom), Ball::rounded(z.vz - z.vsp)),
+            (Ball::rounded(z.top - z.sz), Ball::rounded(z.vsp - z.vz)),
+        ]
+    });
+    // An edge that is one repeated vertex throughout (the same float position and
+    // velocity at both ends) is that vertex, which its neighbours' edges cover, as in the
+    // truth; the scan skips it. A polygon of one point has no defined inside.
+    let live: Vec<u32> = (0..n)
+        .filter(|&i| {
+            let j = if i + 1 == n { 0 } else { i + 1 };
+            p[i] != p[j] || vels[i] != vels[j]
+        })
+        .map(|i| i as u32)
+        .collect();
+    if live.is_empty() {
+        return EntryTime::Possible { lo: 0.0, hi: t };
+    }
+    let n_live = live.len();
+    let mut scan = Scan {
+        s,
+        v,
+        p,
+        vels,
+        edges,
+        slab,
+        eps: t * RESOLUTION,
+        state: State::Unknown,
+        lo: None,
+        hi: None,
+        cands: live,
+        visits: 0,
+        gave_up_at: None,
+    };
+    scan.visit(0.0, t, 0, n_live);
+    match (scan.lo, scan.hi, scan.gave_up_at) {
+        (Some(lo), Some(hi), _) => EntryTime::Enters { lo, hi },
+        (lo, None, Some(at)) => EntryTime::Possible {
+            lo: lo.unwrap_or(at),
+            hi: t,
+        },
+        (Some(lo), None, None) => EntryTime::Possible { lo, hi: t },
+        (None, _, _) => EntryTime::Never,
+    }
+}

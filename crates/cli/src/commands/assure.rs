@@ -125,6 +125,10 @@ pub enum EngineArg {
     Pipeline,
     /// Paper B's canary: meetings sampled once a minute (`--paper b`).
     Sampled,
+    /// The canary of the entry-time check: the certified engine with every entry-time
+    /// enclosure moved right by two resolution steps (T·2⁻³⁶ each), so that a crossing's
+    /// exact entry time falls before it (class `time_outside`).
+    ShiftedTime,
 }
 
 impl From<EngineArg> for Hunted {
@@ -132,6 +136,7 @@ impl From<EngineArg> for Hunted {
         match e {
             EngineArg::F64 | EngineArg::Pipeline | EngineArg::Sampled => Hunted::Certified,
             EngineArg::Plain => Hunted::Plain,
+            EngineArg::ShiftedTime => Hunted::ShiftedTime,
         }
     }
 }
@@ -296,6 +301,13 @@ fn draw(small: &RawCase, w: &Verdict, mode: &str, hunted: Hunted) -> String {
         paper: w.paper,
         truth: w.truth,
         entry_time: w.entry_time.as_deref().and_then(|t| t.parse::<f64>().ok()),
+        entry: match w.entry.enclosure() {
+            None => vec![format!("entry ({}): never", hunted.name())],
+            Some((lo, hi)) => vec![
+                format!("entry ({}): {}", hunted.name(), w.entry.name()),
+                format!("in [{lo:.10e}, {hi:.10e}]"),
+            ],
+        },
     };
     picture(small, &pic)
 }
@@ -451,8 +463,8 @@ fn run_paper_b(args: &AssureArgs) -> ExitCode {
     let engine = match args.engine {
         EngineArg::F64 | EngineArg::Pipeline => EngineB::Pipeline,
         EngineArg::Sampled => EngineB::Sampled,
-        EngineArg::Plain => {
-            eprintln!("polyguard assure: --engine plain is paper A's canary; paper B's is --engine sampled");
+        EngineArg::Plain | EngineArg::ShiftedTime => {
+            eprintln!("polyguard assure: --engine plain and shifted-time are paper A's canaries; paper B's is --engine sampled");
             return ExitCode::from(2);
         }
     };
@@ -634,6 +646,8 @@ fn merge(paths: &[PathBuf], out: &Path, partial: bool) -> ExitCode {
         let dir = p.parent().unwrap_or_else(|| Path::new("."));
         let hunted = if r.engine == Hunted::Plain.name() {
             Hunted::Plain
+        } else if r.engine == Hunted::ShiftedTime.name() {
+            Hunted::ShiftedTime
         } else {
             Hunted::Certified
         };

@@ -94,11 +94,15 @@ pub enum Class {
     PaperGap,
     /// The truth is undefined (the polygon stops being simple): not judged.
     Undefined,
+    /// The f64 time of first entry (`api::detect_time`) contradicts the truth: the exact
+    /// entry time lies outside the enclosure, a certified "never" for a point that enters,
+    /// or a certified entry for one that does not. A failure.
+    TimeOutside,
 }
 
 impl Class {
     /// Every class, in report order.
-    pub const ALL: [Class; 8] = [
+    pub const ALL: [Class; 9] = [
         Class::Agree,
         Class::FloatDivergence,
         Class::MissedDetection,
@@ -107,6 +111,7 @@ impl Class {
         Class::ConservativeFar,
         Class::PaperGap,
         Class::Undefined,
+        Class::TimeOutside,
     ];
 
     /// snake_case name.
@@ -120,6 +125,7 @@ impl Class {
             Class::ConservativeFar => "conservative_far",
             Class::PaperGap => "paper_gap",
             Class::Undefined => "undefined",
+            Class::TimeOutside => "time_outside",
         }
     }
 
@@ -134,6 +140,7 @@ impl Class {
             Class::ConservativeFar => "cons_far",
             Class::PaperGap => "pap_gap",
             Class::Undefined => "undef",
+            Class::TimeOutside => "TIME",
         }
     }
 
@@ -150,12 +157,16 @@ impl Class {
             }
             Class::PaperGap => "the point enters, paper-exact says no: about the paper",
             Class::Undefined => "the fill rule decides (polygon not simple at the start)",
+            Class::TimeOutside => "the exact entry time is outside the f64 enclosure: a failure",
         }
     }
 
     /// A failure that a campaign must report with a non-zero exit status.
     pub fn is_failure(self) -> bool {
-        matches!(self, Class::MissedDetection | Class::FalseAlarmFar)
+        matches!(
+            self,
+            Class::MissedDetection | Class::FalseAlarmFar | Class::TimeOutside
+        )
     }
 }
 
@@ -179,10 +190,18 @@ pub struct Verdict {
     pub paper: bool,
     /// Some(true) enters, Some(false) misses, None undefined.
     pub truth: Option<bool>,
-    /// The exact first entry time, as a decimal, when the point enters.
+    /// The exact first entry time when the point enters, as its nearest f64 in Rust's
+    /// shortest round-trip notation.
     pub entry_time: Option<String>,
-    /// Time spent in the engine, paper-exact and truth (ns).
-    pub nanos: [u64; 3],
+    /// The case's lookahead T.
+    pub lookahead: f64,
+    /// The f64 enclosure of the entry time (`api::detect_time`, of the certified engine,
+    /// moved by the canary's shift with `Hunted::ShiftedTime`).
+    pub entry: polyguard::entry::EntryTime,
+    /// Why the enclosure contradicts the truth, when it does.
+    pub time_failure: Option<String>,
+    /// Time spent in the engine, paper-exact, truth and the f64 entry time (ns).
+    pub nanos: [u64; 4],
 }
 
 /// Why a case could not be compared.
@@ -195,17 +214,20 @@ pub enum CompareError {
 }
 
 /// The class from the three answers (`wide` is paper-exact on [`wide_case`], asked only
-/// when needed; `conservative`: the engine's yes was taken on an undecided comparison).
+/// when needed; `conservative`: the engine's yes was taken on an undecided comparison;
+/// `time_ok`: the f64 entry time agrees with the truth, [`time_failure`]).
 pub fn classify(
     engine: bool,
     conservative: bool,
     paper: bool,
     truth: Option<bool>,
+    time_ok: bool,
     wide: impl FnOnce() -> bool,
 ) -> Class {
     match truth {
         None => Class::Undefined,
         Some(true) if !engine => Class::MissedDetection,
+        _ if !time_ok => Class::TimeOutside,
         Some(true) if !paper => Class::PaperGap,
         Some(false) if engine => {
             if paper || wide() {
@@ -230,6 +252,77 @@ pub enum Hunted {
     /// The plain f64 transcription of paper A (no certificate): the hunt's canary, which
     /// misses true entries that a hunt able to see must find.
     Plain,
+    /// The certified engine whose entry-time enclosures are moved right by
+    /// [`TIME_CANARY_STEPS`] resolution steps: the canary of the `time_outside` class.
+    ShiftedTime,
+}
+
+/// How far the time canary moves each enclosure, in resolution steps (T·2⁻³⁶): the exact
+/// entry time of a crossing then lies before lo.
+pub const TIME_CANARY_STEPS: f64 = 2.0;
+
+/// Why the f64 entry time `answer` contradicts the exact truth, or `None` when it agrees:
+/// a certified "never" for a point that enters, a certified entry for one that never does,
+/// or an exact entry time outside [lo, hi] (compared exactly). An undefined truth judges
+/// nothing. (Paper A §II–III's "the point enters", timed: issue 13, item 2.)
+pub fn time_failure(
+    answer: polyguard::entry::EntryTime,
+    truth: &polyguard_oracle::Truth,
+) -> Option<String> {
+    use polyguard::entry::EntryTime;
+    use polyguard_oracle::convert::q;
+    use polyguard_oracle::Truth;
+    use std::cmp::Ordering;
+    match (answer, truth) {
+        (_, Truth::Undefined { .. }) => None,
+        (EntryTime::Never, Truth::Enters { entry_time }) => Some(format!(
+            "certified never, but the point enters at {}",
+            entry_time.to_decimal_string(20)
+        )),
+        (EntryTime::Enters { .. }, Truth::Misses) => {
+            Some("a certified entry, but the point never enters".into())
+        }
+        (
+            EntryTime::Enters { lo, hi } | EntryTime::Possible { lo, hi },
+            Truth::Enters { entry_time },
+        ) => {
+            let inside = match (q(lo), q(hi)) {
+                (Some(l), Some(h)) => {
+                    entry_time.cmp_rational(&l) != Ordering::Less
+                        && entry_time.cmp_rational(&h) != Ordering::Greater
+                }
+                _ => false,
+            };
+            (!inside).then(|| {
+                format!(
+                    "the point enters at {}, outside [{lo:e}, {hi:e}]",
+                    entry_time.to_decimal_string(20)
+                )
+            })
+        }
+        _ => None,
+    }
+}
+
+/// The time canary's answer: `answer` moved right by `steps` resolution steps of T.
+pub fn shifted(
+    answer: polyguard::entry::EntryTime,
+    lookahead: f64,
+    steps: f64,
+) -> polyguard::entry::EntryTime {
+    use polyguard::entry::EntryTime;
+    let d = steps * lookahead * polyguard::entry::RESOLUTION;
+    match answer {
+        EntryTime::Never => EntryTime::Never,
+        EntryTime::Enters { lo, hi } => EntryTime::Enters {
+            lo: lo + d,
+            hi: hi + d,
+        },
+        EntryTime::Possible { lo, hi } => EntryTime::Possible {
+            lo: lo + d,
+            hi: hi + d,
+        },
+    }
 }
 
 impl Hunted {
@@ -238,6 +331,7 @@ impl Hunted {
         match self {
             Hunted::Certified => "f64",
             Hunted::Plain => "plain",
+            Hunted::ShiftedTime => "shifted-time",
         }
     }
 }
@@ -268,10 +362,22 @@ pub fn compare_as(raw: &RawCase, hunted: Hunted) -> Result<Verdict, CompareError
     let clock = Instant::now();
     let answer = polyguard_oracle::truth(&exact);
     let t_truth = clock.elapsed();
+    let clock = Instant::now();
+    let entry = api::detect_time(&case);
+    let t_time = clock.elapsed();
+    let entry = match hunted {
+        Hunted::ShiftedTime => shifted(entry, raw.lookahead, TIME_CANARY_STEPS),
+        _ => entry,
+    };
+    let failure = time_failure(entry, &answer);
     let (truth, entry_time) = match answer {
-        polyguard_oracle::Truth::Enters { entry_time } => {
-            (Some(true), Some(entry_time.to_decimal_string(12)))
-        }
+        polyguard_oracle::Truth::Enters { entry_time } => (
+            Some(true),
+            Some(format!(
+                "{:e}",
+                polyguard_oracle::convert::time_to_f64(&entry_time)
+            )),
+        ),
         polyguard_oracle::Truth::Misses => (Some(false), None),
         polyguard_oracle::Truth::Undefined { .. } => (None, None),
     };
@@ -282,14 +388,15 @@ pub fn compare_as(raw: &RawCase, hunted: Hunted) -> Result<Verdict, CompareError
             .unwrap_or(true)
     };
     let engine = match hunted {
-        Hunted::Certified => engine,
+        Hunted::Certified | Hunted::ShiftedTime => engine,
         Hunted::Plain => plain,
     };
     let class = classify(
         engine,
-        conservative && hunted == Hunted::Certified,
+        conservative && hunted != Hunted::Plain,
         paper,
         truth,
+        failure.is_none(),
         wide,
     );
     let ns = |d: Duration| u64::try_from(d.as_nanos()).unwrap_or(u64::MAX);
@@ -307,7 +414,10 @@ pub fn compare_as(raw: &RawCase, hunted: Hunted) -> Result<Verdict, CompareError
         paper,
         truth,
         entry_time,
-        nanos: [ns(t_engine), ns(t_paper), ns(t_truth)],
+        lookahead: raw.lookahead,
+        entry,
+        time_failure: failure,
+        nanos: [ns(t_engine), ns(t_paper), ns(t_truth), ns(t_time)],
     })
 }
 
@@ -356,48 +466,54 @@ mod tests {
     #[test]
     fn classes_follow_the_definitions() {
         let never = || panic!("not needed");
-        assert_eq!(classify(true, false, true, Some(true), never), Class::Agree);
         assert_eq!(
-            classify(false, false, false, Some(false), never),
+            classify(true, false, true, Some(true), true, never),
             Class::Agree
         );
         assert_eq!(
-            classify(false, false, true, Some(true), never),
+            classify(false, false, false, Some(false), true, never),
+            Class::Agree
+        );
+        assert_eq!(
+            classify(false, false, true, Some(true), true, never),
             Class::MissedDetection
         );
         assert_eq!(
-            classify(false, false, false, Some(true), never),
+            classify(false, false, false, Some(true), true, never),
             Class::MissedDetection
         );
         assert_eq!(
-            classify(true, false, false, Some(true), never),
+            classify(true, false, false, Some(true), true, never),
             Class::PaperGap
         );
         assert_eq!(
-            classify(true, false, true, Some(false), never),
+            classify(true, false, true, Some(false), true, never),
             Class::FalseAlarmInBand
         );
         assert_eq!(
-            classify(true, false, false, Some(false), || true),
+            classify(true, false, false, Some(false), true, || true),
             Class::FalseAlarmInBand
         );
         assert_eq!(
-            classify(true, false, false, Some(false), || false),
+            classify(true, false, false, Some(false), true, || false),
             Class::FalseAlarmFar
         );
         assert_eq!(
-            classify(true, true, false, Some(false), || false),
+            classify(true, true, false, Some(false), true, || false),
             Class::ConservativeFar
         );
         assert_eq!(
-            classify(true, true, false, Some(false), || true),
+            classify(true, true, false, Some(false), true, || true),
             Class::FalseAlarmInBand
         );
         assert_eq!(
-            classify(false, false, true, Some(false), never),
+            classify(false, false, true, Some(false), true, never),
             Class::FloatDivergence
         );
-        assert_eq!(classify(true, false, true, None, never), Class::Undefined);
+        assert_eq!(
+            classify(true, false, true, None, true, never),
+            Class::Undefined
+        );
     }
 
     #[test]

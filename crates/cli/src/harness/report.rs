@@ -139,6 +139,105 @@ pub struct Report {
     pub contract: Contract,
     /// The counterexamples kept (minimised, with pictures).
     pub kept: Vec<Kept>,
+    /// The f64 entry times (`api::detect_time`) of the judged cases (absent from reports
+    /// written before they were checked).
+    #[serde(default)]
+    pub entry: EntryStats,
+}
+
+/// What the f64 entry-time enclosures said on the cases the truth judged (class
+/// `time_outside` counts the contradictions).
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct EntryStats {
+    /// Certified "never".
+    pub never: u64,
+    /// Certified entries.
+    pub enters: u64,
+    /// Not certified either way.
+    pub possible: u64,
+    /// Certified entries per decade of the width (hi − lo)/T: "-11" counts widths in
+    /// [10⁻¹¹, 10⁻¹⁰); "0" for a zero width.
+    pub width_decades: BTreeMap<String, u64>,
+    /// Total ns in `detect_time`.
+    pub nanos: u64,
+}
+
+impl EntryStats {
+    /// Counts one answer of a case with lookahead `t`.
+    pub fn add(&mut self, e: polyguard::entry::EntryTime, t: f64, ns: u64) {
+        use polyguard::entry::EntryTime;
+        self.nanos = self.nanos.saturating_add(ns);
+        match e {
+            EntryTime::Never => self.never += 1,
+            EntryTime::Possible { .. } => self.possible += 1,
+            EntryTime::Enters { lo, hi } => {
+                self.enters += 1;
+                let w = (hi - lo) / t;
+                let key = if w > 0.0 {
+                    w.log10().floor().to_string()
+                } else {
+                    "0".into()
+                };
+                *self.width_decades.entry(key).or_default() += 1;
+            }
+        }
+    }
+
+    /// Adds another's counts.
+    pub fn absorb(&mut self, o: &EntryStats) {
+        self.never += o.never;
+        self.enters += o.enters;
+        self.possible += o.possible;
+        self.nanos = self.nanos.saturating_add(o.nanos);
+        for (k, n) in &o.width_decades {
+            *self.width_decades.entry(k.clone()).or_default() += n;
+        }
+    }
+
+    /// The summary line: the outcomes, the median and largest width decade, the time.
+    pub fn line(&self) -> String {
+        let judged = self.never + self.enters + self.possible;
+        if judged == 0 {
+            return String::new();
+        }
+        let mut decades: Vec<(i32, u64)> = self
+            .width_decades
+            .iter()
+            .map(|(k, n)| {
+                (
+                    if k == "0" {
+                        i32::MIN
+                    } else {
+                        k.parse().unwrap_or(0)
+                    },
+                    *n,
+                )
+            })
+            .collect();
+        decades.sort();
+        let mut acc = 0;
+        let mut median = None;
+        for (d, n) in &decades {
+            acc += n;
+            if median.is_none() && 2 * acc >= self.enters {
+                median = Some(*d);
+            }
+        }
+        let show = |d: Option<i32>| match d {
+            None => "-".to_string(),
+            Some(i32::MIN) => "0".into(),
+            Some(d) => format!("1e{d}"),
+        };
+        format!(
+            "entry time (f64 enclosure): {} enters, {} possible, {} never; width/T of the certified: median below {}, largest below {}; {:.1} µs per case\n",
+            self.enters,
+            self.possible,
+            self.never,
+            show(median.map(|d| if d == i32::MIN { d } else { d + 1 })),
+            show(decades.last().map(|&(d, _)| if d == i32::MIN { d } else { d + 1 })),
+            self.nanos as f64 / judged as f64 / 1e3,
+        )
+    }
 }
 
 /// The whole scale space's label, for reports written before `space`.
@@ -223,6 +322,9 @@ impl Report {
         for k in 0..3 {
             self.nanos[k] = self.nanos[k].saturating_add(v.nanos[k]);
         }
+        if v.truth.is_some() {
+            self.entry.add(v.entry, v.lookahead, v.nanos[3]);
+        }
         self.contract.add(v);
     }
 
@@ -279,6 +381,7 @@ impl Report {
             self.nanos[k] = self.nanos[k].saturating_add(other.nanos[k]);
         }
         self.wall_seconds += other.wall_seconds;
+        self.entry.absorb(&other.entry);
         self.contract.absorb(&other.contract);
         self.kept.extend(other.kept.iter().cloned());
     }
@@ -418,7 +521,7 @@ impl Report {
             return out;
         }
         // Counts per paper function and class, then the rates of the whole: at most
-        // 100 columns ([`Class::short`] heads the columns; the legend explains them).
+        // 105 columns ([`Class::short`] heads the columns; the legend explains them).
         let classes = Class::ALL;
         out.push_str(&format!("{:<15}{:>9}", "function", "cases"));
         for c in classes {
@@ -468,6 +571,7 @@ impl Report {
             self.wall_seconds,
             if self.wall_seconds > 0.0 { self.cases as f64 / self.wall_seconds } else { 0.0 },
         ));
+        out.push_str(&self.entry.line());
         out.push_str(&self.contract_lines());
         out
     }
@@ -581,7 +685,8 @@ impl Report {
             );
         }
         format!(
-            "{word}{partial}: {missed} missed detections, {far} far false alarms, {} contract breaches in {} cases ({} engine); {} conservative far alarms, {} undefined\n",
+            "{word}{partial}: {missed} missed detections, {far} far false alarms, {} entry times outside their enclosure, {} contract breaches in {} cases ({} engine); {} conservative far alarms, {} undefined\n",
+            n(Class::TimeOutside),
             self.contract.violations + self.contract.certificate_breaches,
             self.cases,
             self.engine,
@@ -678,7 +783,10 @@ mod tests {
             paper: true,
             truth: Some(true),
             entry_time: None,
-            nanos: [1, 2, 3],
+            lookahead: 1.0,
+            entry: polyguard::entry::EntryTime::Enters { lo: 0.5, hi: 0.5 },
+            time_failure: None,
+            nanos: [1, 2, 3, 4],
         }
     }
 

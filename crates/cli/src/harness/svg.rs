@@ -12,7 +12,7 @@ use crate::case::RawCase;
 use polyguard::vect2::Vect2;
 
 /// What a counterexample picture says besides the case.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub struct Picture<'a> {
     /// The title, e.g. "missed_detection in detect_same_2d (edge_buff+long)".
     pub title: &'a str,
@@ -26,6 +26,9 @@ pub struct Picture<'a> {
     pub truth: Option<bool>,
     /// The truth's first-entry time, when it enters.
     pub entry_time: Option<f64>,
+    /// The judged engine's entry-time answer (`api::detect_time`), as caption lines:
+    /// e.g. "entry (f64): enters", "in [2.99, 3.01]".
+    pub entry: Vec<String>,
 }
 
 const W: f64 = 960.0;
@@ -679,19 +682,24 @@ fn legend(out: &mut String, raw: &RawCase, pic: &Picture, event: f64) {
     y += 8.0;
     let truth = match pic.truth {
         Some(true) => match pic.entry_time {
+            // Beside an f64 enclosure, enough digits to compare with it.
+            Some(e) if !pic.entry.is_empty() => format!("truth: enters at t = {e:.10e}"),
             Some(e) => format!("truth: enters at t = {}", num(e)),
             None => "truth: enters".into(),
         },
         Some(false) => "truth: misses".into(),
         None => "truth: undefined (the fill rule decides)".into(),
     };
-    for (s, bold) in [
+    let mut lines = vec![
         (
             format!("engine ({}): {}", pic.engine_name, yes(pic.engine)),
             true,
         ),
         (format!("paper A exact: {}", yes(pic.paper)), true),
         (truth, true),
+    ];
+    lines.extend(pic.entry.iter().map(|l| (l.clone(), false)));
+    lines.extend([
         (
             format!("T = {}, F = {}", num(raw.lookahead), num(raw.fac)),
             false,
@@ -705,14 +713,18 @@ fn legend(out: &mut String, raw: &RawCase, pic: &Picture, event: f64) {
             ),
             false,
         ),
-    ] {
+    ]);
+    // Two more lines with an entry-time answer: closer together, to stay above the
+    // heights panel.
+    let step = if lines.len() > 6 { 16.0 } else { 18.0 };
+    for (s, bold) in lines {
         let weight = if bold { "bold" } else { "normal" };
         let _ = writeln!(
             out,
             r#"<text x="{x}" y="{y:.1}" font-size="13" font-weight="{weight}" font-family="sans-serif">{}</text>"#,
             esc(&s)
         );
-        y += 18.0;
+        y += step;
     }
 }
 
@@ -839,6 +851,7 @@ mod tests {
             paper: true,
             truth: Some(true),
             entry_time: Some(3.0),
+            entry: vec!["entry (f64): enters".into(), "in [2.9, 3.1]".into()],
         }
     }
 

@@ -37,6 +37,7 @@ fuzz_target!(|data: &[u8]| {
         timing: false,
         kappa: polyguard_cli::case::DEFAULT_KAPPA_DEG,
         case_timeout: None,
+        time: false,
     };
     let mut out = Vec::new();
     if let Err(e) = process(&data[..end], &mut out, &args) {

@@ -133,3 +133,47 @@ fn a_case_timeout_answers_the_slow_case_and_goes_on() {
         assert!(err.contains("case-timeout"), "{err}");
     }
 }
+
+#[test]
+fn time_encloses_the_truths_entry_time_on_the_examples() {
+    let input = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../examples/cases.jsonl"
+    ))
+    .expect("examples/cases.jsonl");
+    let (timed, _, code) = run(&["detect", "--time"], &input);
+    assert_eq!(code, 0, "{timed}");
+    let (truth, _, _) = run(&["detect", "--engine", "truth"], &input);
+    let (timed, truth) = (json_lines(&timed), json_lines(&truth));
+    assert_eq!(timed.len(), truth.len());
+    let mut kinds = std::collections::BTreeSet::new();
+    for (a, t) in timed.iter().zip(&truth) {
+        let entry = a["entry"].as_str().expect("entry with --time");
+        kinds.insert(entry.to_string());
+        match t["entry_time"].as_f64() {
+            None => assert_ne!(entry, "enters", "{a} but the truth misses"),
+            Some(time) => {
+                assert_ne!(entry, "never", "{a} but the truth enters at {time}");
+                let (lo, hi) = (a["entry_lo"].as_f64(), a["entry_hi"].as_f64());
+                let (Some(lo), Some(hi)) = (lo, hi) else {
+                    panic!("{a}: no enclosure")
+                };
+                assert!(lo <= time && time <= hi, "{a}: truth {time}");
+                if entry == "enters" {
+                    // the typical width: about T·2⁻³⁶
+                    let t_end = 100.0;
+                    assert!(hi - lo <= 1e-9 * t_end, "{a}: wide");
+                }
+            }
+        }
+    }
+    assert_eq!(
+        kinds.len(),
+        3,
+        "the examples show never, enters and possible: {kinds:?}"
+    );
+    // --time is the f64 engine's: asked of another, the run does not start.
+    let (_, err, code) = run(&["detect", "--time", "--engine", "truth"], HIT);
+    assert_eq!(code, 2);
+    assert!(err.contains("--time"), "{err}");
+}

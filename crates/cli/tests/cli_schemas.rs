@@ -315,8 +315,10 @@ fn every_detect_answer_line_validates_for_every_engine() {
         .count();
     let mut count = 0;
     let mut seen = std::collections::BTreeSet::new();
-    for engine in ["f64", "plain", "exact", "truth"] {
-        let (out, code) = polyguard(&["detect", "--engine", engine], &input);
+    for engine in ["f64", "plain", "exact", "truth", "f64 --time"] {
+        let mut argv = vec!["detect", "--engine"];
+        argv.extend(engine.split(' '));
+        let (out, code) = polyguard(&argv, &input);
         assert_eq!(code, 1, "{engine}: the bad lines make the exit status 1");
         let lines: Vec<&str> = out.lines().collect();
         assert_eq!(
@@ -333,6 +335,9 @@ fn every_detect_answer_line_validates_for_every_engine() {
             }
             if obj.get("well_formed") == Some(&Value::Bool(false)) {
                 seen.insert("<not well formed>".into());
+            }
+            if let Some(Value::String(e)) = obj.get("entry") {
+                seen.insert(format!("<entry {e}>"));
             }
             if obj
                 .get("entry_time_exact")
@@ -358,10 +363,17 @@ fn every_detect_answer_line_validates_for_every_engine() {
         "error",
         "<not well formed>",
         "<irrational entry time>",
+        "entry_lo",
+        "entry_hi",
+        "<entry never>",
+        "<entry enters>",
+        "<entry possible>",
     ] {
         assert!(seen.contains(field), "no answer line had {field}");
     }
-    println!("detect-answer.schema.json: {count} answer lines of 4 engines validate");
+    println!(
+        "detect-answer.schema.json: {count} answer lines of 4 engines (and f64 --time) validate"
+    );
 }
 
 #[test]
@@ -375,6 +387,10 @@ fn the_detect_answer_schema_rejects_the_canaries() {
     assert_valid(&v, "a good truth answer", &truth);
     let error = json!({"id": 3, "line": 3, "error": "line: not a JSON object"});
     assert_valid(&v, "a good error line", &error);
+    let timed = json!({"id": "a", "detected": true, "kind": "exact",
+                       "decided_by": "detect_same_2d", "well_formed": true,
+                       "entry": "enters", "entry_lo": 2.9, "entry_hi": 3.1});
+    assert_valid(&v, "a good answer with --time", &timed);
     let with = |base: &Value, key: &str, value: Value| {
         let mut x = base.clone();
         x[key] = value;
@@ -404,6 +420,40 @@ fn the_detect_answer_schema_rejects_the_canaries() {
         with(&truth, "kind", json!("exact")),
         with(&truth, "entry_time_exact", json!("3.0")),
         with(&truth, "entry_time", json!(-1.0)),
+        with(
+            &with(&good, "entry", json!("never")),
+            "entry_lo",
+            json!(1.0),
+        ),
+        with(&good, "entry", json!("enters")),
+        with(
+            &with(&good, "entry", json!("sometime")),
+            "entry_lo",
+            json!(1.0),
+        ),
+        with(
+            &with(
+                &with(&good, "entry", json!("enters")),
+                "entry_lo",
+                json!(1.0),
+            ),
+            "entry_hi",
+            json!(-2.0),
+        ),
+        with(
+            &with(
+                &with(
+                    &with(&good, "entry", json!("enters")),
+                    "entry_lo",
+                    json!(1.0),
+                ),
+                "entry_hi",
+                json!(2.0),
+            ),
+            "detected",
+            json!(false),
+        ),
+        with(&truth, "entry", json!("never")),
         with(&error, "line", json!(0)),
         with(&error, "line", json!("3")),
         without(&error, "id"),

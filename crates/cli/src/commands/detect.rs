@@ -52,6 +52,11 @@ pub struct DetectArgs {
     /// answered however long it takes.
     #[arg(long, value_parser = parse_timeout, conflicts_with = "timing")]
     pub case_timeout: Option<f64>,
+    /// Also answer when the point first enters the closed polygon (and slab): an f64
+    /// enclosure of the exact first-entry time (`entry`, `entry_lo`, `entry_hi`; the f64
+    /// engine only: the truth engine gives `entry_time` exactly without it).
+    #[arg(long)]
+    pub time: bool,
 }
 
 /// `--case-timeout`: a positive, finite number of seconds.
@@ -63,8 +68,18 @@ fn parse_timeout(s: &str) -> Result<f64, String> {
     }
 }
 
-/// What a worker is asked: answer this case with this engine, `repeat` times.
-type Job = (Case, Engine, u32);
+/// What a worker is asked: answer this case with this engine (and `--time`), `repeat`
+/// times.
+type Job = (Case, Ask, u32);
+
+/// The engine asked for, and whether `--time` was.
+#[derive(Clone, Copy, Debug)]
+pub struct Ask {
+    /// The engine.
+    pub engine: Engine,
+    /// `--time`.
+    pub time: bool,
+}
 /// Its answer: the fields after `id`, or the error.
 type Reply = Result<Map<String, Value>, String>;
 
@@ -98,7 +113,7 @@ impl Worker {
     }
 
     /// The case's answer, or `None` when `limit` passed first (the worker is then spent).
-    fn answer(&self, case: Case, engine: Engine, repeat: u32, limit: f64) -> Option<Reply> {
+    fn answer(&self, case: Case, engine: Ask, repeat: u32, limit: f64) -> Option<Reply> {
         if self.jobs.send((case, engine, repeat)).is_err() {
             return Some(Err("case: the worker thread stopped".into()));
         }
@@ -162,15 +177,28 @@ fn exact_well_formed(
     ))
 }
 
+/// `entry`, and `entry_lo`, `entry_hi` unless it is "never": the f64 enclosure of the
+/// first-entry time (`--time`).
+fn entry_fields(out: &mut Map<String, Value>, e: polyguard::entry::EntryTime) {
+    out.insert("entry".into(), e.name().into());
+    if let Some((lo, hi)) = e.enclosure() {
+        out.insert("entry_lo".into(), lo.into());
+        out.insert("entry_hi".into(), hi.into());
+    }
+}
+
 /// Answers one valid case with the chosen engine; the fields after `id`.
-fn answer(case: &Case, engine: Engine, out: &mut Map<String, Value>) -> Result<(), String> {
-    match engine {
+fn answer(case: &Case, ask: Ask, out: &mut Map<String, Value>) -> Result<(), String> {
+    match ask.engine {
         Engine::F64 => {
             let d = api::detect(case);
             out.insert("detected".into(), d.detected.into());
             out.insert("kind".into(), d.kind.name().into());
             out.insert("decided_by".into(), d.method.name().into());
             well_formed_fields(out, d.well_formed_fault);
+            if ask.time {
+                entry_fields(out, api::detect_time(case));
+            }
         }
         Engine::Plain => {
             out.insert("detected".into(), api::detected_plain(case).into());
@@ -223,6 +251,10 @@ fn open(file: &Option<PathBuf>) -> io::Result<Box<dyn BufRead>> {
 
 /// Runs `polyguard detect`: one answer line per non-blank input line, in order.
 pub fn run(args: &DetectArgs) -> ExitCode {
+    if args.time && args.engine != Engine::F64 {
+        eprintln!("polyguard detect: --time is answered by the f64 engine only (the truth engine gives entry_time without it)");
+        return ExitCode::from(2);
+    }
     if let Err(e) = api::Params::new(1.0).and_then(|p| p.with_kappa_degrees(args.kappa)) {
         eprintln!("polyguard detect: --kappa: {e}");
         return ExitCode::from(2);
@@ -275,6 +307,10 @@ pub fn process<R: BufRead, W: Write>(
     let mut failed = 0u64;
     let mut groups: BTreeMap<(&'static str, &'static str, usize), Group> = BTreeMap::new();
     let mut worker: Option<Worker> = None;
+    let ask = Ask {
+        engine: args.engine,
+        time: args.time,
+    };
     loop {
         buf.clear();
         if reader.read_until(b'\n', &mut buf)? == 0 {
@@ -304,7 +340,7 @@ pub fn process<R: BufRead, W: Write>(
                         Some(w) => w,
                         None => Worker::spawn()?,
                     };
-                    match w.answer(case, args.engine, args.repeat, limit) {
+                    match w.answer(case, ask, args.repeat, limit) {
                         Some(r) => {
                             worker = Some(w);
                             r
@@ -337,7 +373,7 @@ pub fn process<R: BufRead, W: Write>(
                     black_box(api::detected_plain(black_box(case)));
                 }
                 Engine::Exact | Engine::Truth => {
-                    let _ = black_box(answer(black_box(case), args.engine, &mut Map::new()));
+                    let _ = black_box(answer(black_box(case), ask, &mut Map::new()));
                 }
             };
             if args.timing {
@@ -353,7 +389,7 @@ pub fn process<R: BufRead, W: Write>(
                     once(&case);
                 }
             }
-            answer(&case, args.engine, &mut obj)
+            answer(&case, ask, &mut obj)
         });
         if let Err(e) = result {
             failed += 1;

@@ -183,7 +183,7 @@ pub struct Mix(pub u64);
 
 impl Mix {
     /// The next 64 random bits.
-    pub fn next(&mut self) -> u64 {
+    pub fn bits(&mut self) -> u64 {
         self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
         let mut z = self.0;
         z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
@@ -192,7 +192,7 @@ impl Mix {
     }
     /// Uniform in [lo, hi).
     pub fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * (self.next() >> 11) as f64 / (1u64 << 53) as f64
+        lo + (hi - lo) * (self.bits() >> 11) as f64 / (1u64 << 53) as f64
     }
 }
 
@@ -212,14 +212,14 @@ fn degrees(p: LonLat) -> [f64; 2] {
 /// the tests (tests/paper_a_earth.rs) and of the measurement (examples/earth_false_alarms.rs).
 pub fn encounter(seed: u64, lat: f64) -> EarthCase {
     let mut r = Mix(seed);
-    let lon = if r.next() % 3 == 0 {
+    let lon = if r.bits() % 3 == 0 {
         180.0 + r.uniform(-1.0, 1.0)
     } else {
         r.uniform(-180.0, 180.0)
     };
     let centre = LonLat::from_degrees(lon, lat);
     let radius = r.uniform(3.0, 40.0);
-    let n = 3 + (r.next() % 6) as usize;
+    let n = 3 + (r.bits() % 6) as usize;
     let mut angles: Vec<f64> = (0..n).map(|_| r.uniform(0.0, 360.0)).collect();
     angles.sort_by(f64::total_cmp);
     angles.dedup_by(|a, b| (*a - *b).abs() < 5.0);

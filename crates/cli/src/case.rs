@@ -18,7 +18,7 @@ pub struct ParsedLine {
 
 /// The case format (not a paper function): a JSON value read strictly: an object that gives a key twice is an error naming the
 /// key (serde_json alone keeps the last value, silently).
-struct Strict(Value);
+pub(crate) struct Strict(pub(crate) Value);
 
 impl<'de> serde::Deserialize<'de> for Strict {
     fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {

@@ -19,6 +19,9 @@ struct Cli {
 enum Command {
     /// Answer detection cases (JSON Lines, docs/cases.md), one line per case.
     Detect(polyguard_cli::commands::detect::DetectArgs),
+    /// Paper A on the Earth: does an aircraft come within BUFF nm of a drifting cell?
+    /// (JSON Lines in degrees, nm, knots, hours: docs/earth-cases.md)
+    DetectEarth(polyguard_cli::commands::detect_earth::DetectEarthArgs),
     /// A seeded safety-assurance run: engine vs paper-exact vs truth on boundary cases.
     Assure(polyguard_cli::commands::assure::AssureArgs),
     /// Which areas and tracks of a scenario GeoJSON conflict, and when (paper B).
@@ -31,6 +34,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match &cli.command {
         Command::Detect(a) => polyguard_cli::commands::detect::run(a),
+        Command::DetectEarth(a) => polyguard_cli::commands::detect_earth::run(a),
         Command::Assure(a) => polyguard_cli::commands::assure::run(a),
         Command::Conflicts(a) => polyguard_cli::commands::conflicts::run(a),
         Command::Generate(a) => polyguard_cli::commands::generate::run(a),

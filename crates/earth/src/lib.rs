@@ -8,6 +8,8 @@
 //!   positions ([`json`]) and written back.
 //! - [`analysis`]: Algorithm 1 on scenario text, the conflicts answer and its drawing.
 //! - [`generate`]: random scenarios as in Section VI.D.
+//! - [`paper_a`]: paper A's detection (Narkawicz & Hagen §II.H) on lon/lat input through
+//!   Section V's Mercator, with a buffer grown so that its "no" holds on the Earth.
 //! - [`reference`](mod@reference): the exact references the tests hold the f64 code to: Section IV in
 //!   rationals, and (feature `rug`) Section V in 256-bit MPFR.
 //!
@@ -20,6 +22,7 @@ pub mod conflict;
 pub mod generate;
 pub mod geodesy;
 pub mod json;
+pub mod paper_a;
 pub mod picture;
 pub mod reference;
 pub mod scenario;

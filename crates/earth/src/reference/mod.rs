@@ -6,7 +6,10 @@
 //! - `mpfr` (feature `rug`): Section V (Mercator, rhumb motion, `track_time`) in 256-bit
 //!   MPFR, to measure the f64 code in ulps.
 //! - [`truth`]: whether and when two features really meet (`assure --paper b`).
+//! - [`approach`]: how close an aircraft really comes to a drifting cell (the ground truth
+//!   of [`crate::paper_a`]).
 
+pub mod approach;
 #[cfg(feature = "rug")]
 pub mod mpfr;
 pub mod rational;

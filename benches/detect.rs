@@ -5,10 +5,14 @@
 //! in the same run, for the plain f64 transcription it replaced (`plain`, the engine of
 //! commit b0875a2, kept behind feature `plain`).
 //!
+//! Group `detect_time`: the f64 enclosure of the first-entry time (`entry::first_entry`)
+//! on the same workloads (n = 8 and 32, static and warping), beside the certified
+//! detector on the same cases.
+//!
 //! Group `large_polygon`: a circle of 4k, 16k and 64k vertices (radius 10⁴, BUFF 0.1, a
 //! point crossing it): `MovingPolygon::new` (the simplicity check every case passes) and
 //! `api::detect` (the decision and §II.J's well_formed), each with the sweeps that made
-//! them O(n log n).
+//! them O(n log n), and `api::detect_time`.
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use polyguard::detect::{detect_3d, detect_diff_2d, detect_same_2d};
@@ -113,6 +117,43 @@ fn bench(c: &mut Criterion) {
     g.finish();
 }
 
+/// The time of first entry against the detection, on the uniform workload.
+fn entry_time(c: &mut Criterion) {
+    use polyguard::entry::{first_entry, EntryTime};
+    let mut g = c.benchmark_group("detect_time");
+    g.throughput(Throughput::Elements(CASES as u64));
+    for (label, n, warping) in [
+        ("static/8", 8usize, false),
+        ("warping/8", 8, true),
+        ("static/32", 32, false),
+        ("warping/32", 32, true),
+    ] {
+        let w = workload(n, warping, 42 + n as u64);
+        let time =
+            |w: &Workload, i: usize| first_entry(T, w.s[i], w.v[i], &w.verts[i], &w.vels[i], None);
+        let enters = (0..CASES)
+            .filter(|&i| matches!(time(&w, i), EntryTime::Enters { .. }))
+            .count();
+        eprintln!("detect_time {label}: {enters} of {CASES} certified entries");
+        g.bench_with_input(BenchmarkId::new("first_entry", label), &w, |b, w| {
+            b.iter(|| {
+                (0..CASES)
+                    .filter(|&i| black_box(time(black_box(w), i)) != EntryTime::Never)
+                    .count()
+            })
+        });
+        let f = if warping { diff as Detector } else { same };
+        g.bench_with_input(BenchmarkId::new("detect", label), &w, |b, w| {
+            b.iter(|| {
+                (0..CASES)
+                    .filter(|&i| black_box(f(Engine::Certified, black_box(w), i)))
+                    .count()
+            })
+        });
+    }
+    g.finish();
+}
+
 /// A counterclockwise circle of `n` vertices, radius 10⁴ (neighbours 2π·10⁴/n apart).
 fn circle(n: usize) -> Vec<polyguard::vect2::Vect2> {
     (0..n)
@@ -145,6 +186,13 @@ fn large(c: &mut Criterion) {
         g.bench_with_input(BenchmarkId::new("detect", n), &case, |b, c| {
             b.iter(|| detect(black_box(c)).detected)
         });
+        assert!(matches!(
+            polyguard::api::detect_time(&case),
+            polyguard::entry::EntryTime::Enters { .. }
+        ));
+        g.bench_with_input(BenchmarkId::new("detect_time", n), &case, |b, c| {
+            b.iter(|| polyguard::api::detect_time(black_box(c)))
+        });
     }
     g.finish();
 }
@@ -158,6 +206,6 @@ criterion_group! {
 criterion_group! {
     name = benches;
     config = Criterion::default().warm_up_time(std::time::Duration::from_millis(500)).measurement_time(std::time::Duration::from_secs(2));
-    targets = bench
+    targets = bench, entry_time
 }
 criterion_main!(benches, large_polygons);

@@ -203,6 +203,70 @@ impl Edge {
         [g, h1, h2]
     }
 
+    /// A crossing of this edge alone, resolved without halving (the scan's shortcut):
+    /// over [a, b] (centre m, half width h) h₁ > 0 and h₂ > 0 throughout and g′ ≠ 0
+    /// throughout, so the point meets the edge exactly where g = 0, at most once. `None`
+    /// when those conditions or the signs of g at a and b are not certain. `Some(None)`:
+    /// g has the same sign at a and b, so no contact on [a, b]. `Some(Some((t1, t2)))`:
+    /// a ≤ t1 < t2 ≤ b, no contact on [a, t1] (g monotone with one sign at a and t1), and
+    /// a contact in (t1, t2) (g changes sign there with h₁, h₂ > 0).
+    fn lone_crossing(
+        &self,
+        a: f64,
+        b: f64,
+        m: f64,
+        h: f64,
+        eps: f64,
+    ) -> Option<Option<(f64, f64)>> {
+        let (q, e, w) = self.at(m);
+        let g1 = self.q1.cross(e).add(q.cross(self.e1));
+        let h1 = range(q.dot(e), self.q1.dot(e).add(q.dot(self.e1)), self.h12, h);
+        let h2 = range(w.dot(e), self.w1.dot(e).add(w.dot(self.e1)), self.h22, h);
+        // g′(t) = g′(m) + 2·(g″/2)·(t − m).
+        let slope = Ball {
+            z: g1.z,
+            r: up(g1.r + 2.0 * (self.g2.z.abs() + self.g2.r) * h),
+        };
+        if !(h1.lo() > 0.0 && h2.lo() > 0.0 && (slope.lo() > 0.0 || slope.hi() < 0.0)) {
+            return None;
+        }
+        let sign = |x: Ball| -> Option<bool> {
+            if x.lo() > 0.0 {
+                Some(true)
+            } else if x.hi() < 0.0 {
+                Some(false)
+            } else {
+                None
+            }
+        };
+        let (sa, sb) = (sign(self.g_at(a))?, sign(self.g_at(b))?);
+        if sa == sb {
+            return Some(None);
+        }
+        // The root, estimated by Newton's method on the float centres (any estimate in
+        // [a, b] will do: what follows certifies the bracket around it).
+        let mut r = m;
+        for _ in 0..6 {
+            let (q, e, _) = self.at(r);
+            let d = self.q1.cross(e).add(q.cross(self.e1)).z;
+            let step = q.cross(e).z / d;
+            if !step.is_finite() {
+                break;
+            }
+            r = (r - step).clamp(a, b);
+        }
+        let mut delta = eps * (1.0 / 16.0);
+        for _ in 0..80 {
+            let t1 = if r - delta > a { r - delta } else { a };
+            let t2 = if r + delta < b { r + delta } else { b };
+            if t1 < t2 && sign(self.g_at(t1)) == Some(sa) && sign(self.g_at(t2)) == Some(sb) {
+                return Some(Some((t1, t2)));
+            }
+            delta *= 2.0;
+        }
+        None
+    }
+
     /// Can the point be on this edge at some time of |t − m| ≤ h? `false` is certain.
     /// A NaN range compares false both ways, so it is "may touch".
     #[inline]
@@ -387,6 +451,25 @@ impl Scan<'_> {
                 _ => {
                     self.lo.get_or_insert(a);
                     false
+                }
+            }
+        } else if let Some(lone) = (end - start == 1 && self.state == State::Outside)
+            .then(|| self.edges[self.cands[start] as usize].lone_crossing(a, b, m, h, self.eps))
+            .flatten()
+        {
+            // One edge may touch, and the point is outside before: its crossing settles
+            // [a, b] at once (see `Edge::lone_crossing`).
+            match lone {
+                None => false,
+                Some((t1, t2)) => {
+                    self.lo.get_or_insert(t1);
+                    if slab == InSlab::Always {
+                        self.hi = Some(t2);
+                        true
+                    } else {
+                        self.state = State::Unknown;
+                        false
+                    }
                 }
             }
         } else if small {

@@ -85,9 +85,27 @@ pub fn well_formed<F: ExactField>(p: &[V2<F>], buff: &F, cos_kappa: &F) -> bool 
 /// in the interval kernel first and in the exact kernel when that one abstains, so
 /// every decision is the exact one.
 pub fn well_formed_fault<F: ExactField>(p: &[V2<F>], buff: &F, cos_kappa: &F) -> Option<Fault> {
-    let n = p.len();
-    if n < SWEEP_MIN_VERTICES {
+    if p.len() < SWEEP_MIN_VERTICES {
         return well_formed_fault_pairwise(p, buff, cos_kappa);
+    }
+    well_formed_fault_skipping(p, buff, cos_kappa, &|_, _, _| false)
+}
+
+/// [`well_formed_fault`]'s sweep at any size, leaving out the candidate pairs for which
+/// `skip(rule, i, j)` holds (rule 1 or 2): the hook of the tests' canary, which shows
+/// that a broad phase wrong by one pair is caught by the comparison with
+/// [`well_formed_fault_pairwise`]. `&|_, _, _| false` is the sweep itself.
+/// (Paper A §II.J, extended as [`well_formed_fault`] says.)
+#[doc(hidden)]
+pub fn well_formed_fault_skipping<F: ExactField>(
+    p: &[V2<F>],
+    buff: &F,
+    cos_kappa: &F,
+    skip: &dyn Fn(u8, usize, usize) -> bool,
+) -> Option<Fault> {
+    let n = p.len();
+    if n < 3 {
+        return None;
     }
     let ip: Vec<V2<Iv>> = p.iter().map(enclose2).collect();
     let ib = enclose(buff);
@@ -98,7 +116,7 @@ pub fn well_formed_fault<F: ExactField>(p: &[V2<F>], buff: &F, cos_kappa: &F) ->
     let four_b2_iv = Iv::from_i64(4).times(&ib.sq());
     let mut first: Option<(usize, usize)> = None;
     near_pairs(&boxes, &buff.twice(), |i, j| {
-        if first.is_some_and(|f| f <= (i, j)) {
+        if first.is_some_and(|f| f <= (i, j)) || skip(1, i, j) {
             return;
         }
         let close = match Intervals.lt(&ip[i].minus(&ip[j]).sq(), &four_b2_iv) {
@@ -118,7 +136,8 @@ pub fn well_formed_fault<F: ExactField>(p: &[V2<F>], buff: &F, cos_kappa: &F) ->
         .map(|i| EdgeLine::new(&ip[i], &ip[next(i)], &ib))
         .collect();
     near_pairs(&edge_boxes(&boxes), buff, |i, k| {
-        if k == i + 1 || (i == 0 && k == n - 1) || first.is_some_and(|f| f <= (i, k)) {
+        let adjacent = k == i + 1 || (i == 0 && k == n - 1);
+        if adjacent || first.is_some_and(|f| f <= (i, k)) || skip(2, i, k) {
             return;
         }
         let (a, b, c, d) = (&ip[i], &ip[next(i)], &ip[k], &ip[next(k)]);

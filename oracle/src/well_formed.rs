@@ -75,7 +75,7 @@ pub fn well_formed<F: ExactField>(p: &[V2<F>], buff: &F, cos_kappa: &F) -> bool 
 /// O(n log n + k) for the k pairs a sweep finds near (it extends §II.J, which compares
 /// every pair).
 ///
-/// Rules 1 and 2 are asked only of the pairs [`near_pairs`] finds within reach (2·|BUFF|
+/// Rules 1 and 2 are asked only of the pairs a box sweep finds within reach (2·|BUFF|
 /// for vertices, |BUFF| for edges), in increasing order, the first failure winning as in
 /// the pairwise loops. Nothing is missed: both rules say "too close" only with a witness,
 /// two points of the pair closer than 2·|BUFF| (rule 1: ‖p − q‖² < 4·BUFF²) or than

@@ -41,7 +41,7 @@ use crate::case::ExactCase;
 use crate::detect::{dot_nn_lin, slab_window, Interval, Sign as Side};
 use crate::field::{Arith, ExactField, V2};
 use crate::kernel::interval::{self, edge_boxes, enclose, meeting_pairs, Iv, VertexBox};
-use crate::kernel::run::{Filtered, Resolve, Scene, Single, Unit};
+use crate::kernel::run::{Filtered, FirstKernel, Resolve, Scene, Single, Unit};
 use crate::kernel::{
     all, all_of, and, any_of, certainly, not, or, Decided, Exact, Intervals, Kernel,
 };
@@ -805,6 +805,20 @@ fn collapse<F: ExactField>(sc: &Scene<'_, F>, i: usize) -> Collapse<F> {
     }
 }
 
+/// Whether edge i of the scene certainly keeps a positive length throughout [0, T]: one
+/// coordinate of b − a = d0 + t·dv (linear in t) has one strict sign at both ends of the
+/// window, so at every time of it. Decided by the runner's first kernel on the
+/// enclosures (an O(n) pass of float work in front of [`collapse`]'s exact one); false
+/// when not certain. (Paper A §II's premise: an edge of positive length.)
+fn never_collapses(k: &dyn FirstKernel, sc: &Scene<'_, Iv>, i: usize) -> bool {
+    let j = (i + 1) % sc.p.len();
+    let d0 = sc.p[j].minus(&sc.p[i]);
+    let dv = sc.vels[j].minus(&sc.vels[i]);
+    let d1 = d0.at(&dv, &sc.t);
+    let one_sign = |a: &Iv, b: &Iv| (k.pos(a) && k.pos(b)) || (k.neg(a) && k.neg(b));
+    one_sign(&d0.x, &d1.x) || one_sign(&d0.y, &d1.y)
+}
+
 /// The truth on the scene restarted at the window's start t0 (see the module
 /// doc), each sign test and contact test run by `r`.
 /// (Paper A §II's question (and §III's in the slab window), answered exactly.)
@@ -841,6 +855,9 @@ fn ground_truth<F: ExactField, R: Resolve<F>>(r: &R, t0: &F) -> Truth {
     let sc = r.exact_scene();
     let mut point_edges = vec![false; n];
     for (i, is_point) in point_edges.iter_mut().enumerate() {
+        if r.certainly_first(|k, e| never_collapses(k, e, i)) {
+            continue;
+        }
         match collapse(sc, i) {
             Collapse::Never => {}
             Collapse::Always => *is_point = true,

@@ -19,7 +19,7 @@ const KERNEL_PARAM: &str = "k";
 
 /// Engine functions with no oracle counterpart, each for its reason. Every name
 /// must exist in the engine (a stale entry fails the test).
-const ENGINE_ONLY: [(&str, &str, &str); 12] = [
+const ENGINE_ONLY: [(&str, &str, &str); 11] = [
     // Three-valued (Tri: Yes, No, Unsure) forms of the float engine's functions:
     // in the oracle every paper function already is kernel-generic and returns
     // Result<_, Abstain>, and the exact kernel never abstains.
@@ -51,13 +51,6 @@ const ENGINE_ONLY: [(&str, &str, &str); 12] = [
         "detect",
         "slab_window_balls",
         "float certification: the window as balls",
-    ),
-    // The engine sweeps §II.J's rules 1 and 2 on large polygons and keeps the pairwise
-    // form as the sweep's reference; the oracle's well_formed_fault is the pairwise form.
-    (
-        "well_formed",
-        "well_formed_fault_pairwise",
-        "the engine's pairwise reference for its sweep",
     ),
 ];
 

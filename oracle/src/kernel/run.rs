@@ -212,6 +212,27 @@ pub(crate) trait Resolve<F: ExactField>: Runner<Abstain = Infallible> {
     fn as_exact<'r>(&self, r: &'r Self::Root) -> Option<&'r Alg<F>>;
     /// Whether a < b is certain (false when it is not decided).
     fn certainly_before(&self, a: &Self::Root, b: &Self::Root) -> bool;
+    /// Whether `test` is certain on the scene in the first kernel (false when the runner
+    /// has none, or the kernel abstains): the truth's O(n) filters in front of exact
+    /// passes.
+    fn certainly_first(&self, test: impl Fn(&dyn FirstKernel, &Scene<'_, Iv>) -> bool) -> bool;
+}
+
+/// A first kernel seen through a trait object: the tests the truth's filters run.
+pub(crate) trait FirstKernel {
+    /// x > 0 certified (false when not certain).
+    fn pos(&self, x: &Iv) -> bool;
+    /// x < 0 certified (false when not certain).
+    fn neg(&self, x: &Iv) -> bool;
+}
+
+impl<K: Kernel<Iv>> FirstKernel for K {
+    fn pos(&self, x: &Iv) -> bool {
+        certainly(self.is_pos(x))
+    }
+    fn neg(&self, x: &Iv) -> bool {
+        certainly(self.is_neg(x))
+    }
 }
 
 impl<F: ExactField> Resolve<F> for Single<'_, F, Exact> {
@@ -223,6 +244,9 @@ impl<F: ExactField> Resolve<F> for Single<'_, F, Exact> {
     }
     fn certainly_before(&self, a: &Alg<F>, b: &Alg<F>) -> bool {
         certainly(Exact.root_lt(a, b))
+    }
+    fn certainly_first(&self, _: impl Fn(&dyn FirstKernel, &Scene<'_, Iv>) -> bool) -> bool {
+        false
     }
 }
 
@@ -241,5 +265,8 @@ impl<F: ExactField, K: Kernel<Iv>> Resolve<F> for Filtered<'_, F, K> {
             (Found::Enclosed(a), Found::Enclosed(b)) => certainly(self.first.root_lt(a, b)),
             _ => false,
         }
+    }
+    fn certainly_first(&self, test: impl Fn(&dyn FirstKernel, &Scene<'_, Iv>) -> bool) -> bool {
+        test(self.first, &self.iv)
     }
 }

@@ -25,6 +25,13 @@
 //! non-zero, possible only when P is not simple, stays unknown, as it is undefined in
 //! the truth).
 //!
+//! Two shortcuts keep the scan short. Where one edge alone may touch, the point is
+//! outside before, and on the interval that edge's h₁ and h₂ are certainly positive and
+//! g is certainly monotone, the crossing is bracketed at once: Newton's method on the
+//! float centres gives an estimate r, and floats r − δ and r + δ at which g has certain,
+//! opposite signs bound it (`Edge::lone_crossing`). And once lo is known, hi need not be
+//! finer than a 64th of the distance from lo.
+//!
 //! - **lo**: the start of the first interval on which an entry could not be excluded
 //!   (an edge may touch there, or the state is inside or unknown, and the slab may
 //!   hold). Every earlier time is certified: no entry.
@@ -646,5 +653,175 @@ pub fn first_entry(
         },
         (Some(lo), None, None) => EntryTime::Possible { lo, hi: t },
         (None, _, _) => EntryTime::Never,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn square(d: f64) -> Vec<Vect2> {
+        vec![
+            Vect2::new(0.0, 0.0),
+            Vect2::new(d, 0.0),
+            Vect2::new(d, d),
+            Vect2::new(0.0, d),
+        ]
+    }
+
+    fn encloses(e: EntryTime, t: f64, width: f64) -> bool {
+        matches!(e, EntryTime::Enters { lo, hi } if lo <= t && t <= hi && hi - lo <= width)
+    }
+
+    #[test]
+    fn a_crossing_is_enclosed_tightly() {
+        // The point (1, −3) moving up at 1 meets the square's bottom edge at t = 3.
+        let p = square(2.0);
+        let e = first_entry(
+            10.0,
+            Vect2::new(1.0, -3.0),
+            Vect2::new(0.0, 1.0),
+            &p,
+            &[Vect2::ZERO; 4],
+            None,
+        );
+        assert!(encloses(e, 3.0, 1e-9 * 10.0), "{e:?}");
+        // Missing it by 0.5 to the right: certified never.
+        let e = first_entry(
+            10.0,
+            Vect2::new(2.5, -3.0),
+            Vect2::new(0.0, 1.0),
+            &p,
+            &[Vect2::ZERO; 4],
+            None,
+        );
+        assert_eq!(e, EntryTime::Never);
+        // Inside from the start.
+        let e = first_entry(
+            10.0,
+            Vect2::new(1.0, 1.0),
+            Vect2::new(5.0, 0.0),
+            &p,
+            &[Vect2::ZERO; 4],
+            None,
+        );
+        assert_eq!(e, EntryTime::Enters { lo: 0.0, hi: 0.0 });
+    }
+
+    #[test]
+    fn a_warping_polygon_that_grows_over_the_point() {
+        // The point rests at (1, 3); the square's top edge rises at 1 from y = 2: the
+        // point is on it at t = 1.
+        let p = square(2.0);
+        let v = [
+            Vect2::ZERO,
+            Vect2::ZERO,
+            Vect2::new(0.0, 1.0),
+            Vect2::new(0.0, 1.0),
+        ];
+        let e = first_entry(4.0, Vect2::new(1.0, 3.0), Vect2::ZERO, &p, &v, None);
+        assert!(encloses(e, 1.0, 1e-9 * 4.0), "{e:?}");
+    }
+
+    #[test]
+    fn the_slab_starts_the_window() {
+        // Inside the square all along, descending at 2 from 20 into a slab topped at 10:
+        // in the slab from t = 5.
+        let p = square(2.0);
+        let z = Heights {
+            sz: 20.0,
+            vz: -2.0,
+            bottom: 0.0,
+            top: 10.0,
+            vsp: 0.0,
+        };
+        let e = first_entry(
+            10.0,
+            Vect2::new(1.0, 1.0),
+            Vect2::ZERO,
+            &p,
+            &[Vect2::ZERO; 4],
+            Some(z),
+        );
+        assert!(encloses(e, 5.0, 1e-9 * 10.0), "{e:?}");
+        // Passing over it: never.
+        let high = Heights {
+            sz: 30.0,
+            vz: 0.0,
+            ..z
+        };
+        let e = first_entry(
+            10.0,
+            Vect2::new(1.0, 1.0),
+            Vect2::ZERO,
+            &p,
+            &[Vect2::ZERO; 4],
+            Some(high),
+        );
+        assert_eq!(e, EntryTime::Never);
+    }
+
+    #[test]
+    fn every_scale_gives_the_same_time() {
+        // The same crossing at t = 3 with every length times 2^k: exact, so the same
+        // question; the products would overflow at 2^600 without the scan's rescaling.
+        for k in [-1000, -600, -300, 0, 300, 600, 1000] {
+            let c = libm::scalbn(1.0, k);
+            let p: Vec<Vect2> = square(2.0).iter().map(|q| q.scale(c)).collect();
+            let e = first_entry(
+                10.0,
+                Vect2::new(c, -3.0 * c),
+                Vect2::new(0.0, c),
+                &p,
+                &[Vect2::ZERO; 4],
+                None,
+            );
+            assert!(encloses(e, 3.0, 1e-9 * 10.0), "2^{k}: {e:?}");
+        }
+    }
+
+    #[test]
+    fn a_tangent_touch_is_possible_not_certain() {
+        // Sliding along the bottom edge's line y = 0 from the left: on the boundary from
+        // t = 1 (at the corner), which f64 cannot certify.
+        let p = square(2.0);
+        let e = first_entry(
+            4.0,
+            Vect2::new(-1.0, 0.0),
+            Vect2::new(1.0, 0.0),
+            &p,
+            &[Vect2::ZERO; 4],
+            None,
+        );
+        match e {
+            EntryTime::Possible { lo, hi } => assert!(lo <= 1.0 && hi == 4.0, "{e:?}"),
+            EntryTime::Enters { lo, hi } => assert!(lo <= 1.0 && 1.0 <= hi, "{e:?}"),
+            EntryTime::Never => panic!("never, but it touches at t = 1"),
+        }
+    }
+
+    #[test]
+    fn a_repeated_vertex_is_skipped_not_a_contact() {
+        // The square with vertex 1 given twice: the zero edge is no contact.
+        let mut p = square(2.0);
+        p.insert(1, p[1]);
+        let e = first_entry(
+            10.0,
+            Vect2::new(5.0, -3.0),
+            Vect2::new(0.0, 1.0),
+            &p,
+            &[Vect2::ZERO; 5],
+            None,
+        );
+        assert_eq!(e, EntryTime::Never);
+        let e = first_entry(
+            10.0,
+            Vect2::new(1.0, -3.0),
+            Vect2::new(0.0, 1.0),
+            &p,
+            &[Vect2::ZERO; 5],
+            None,
+        );
+        assert!(encloses(e, 3.0, 1e-9 * 10.0), "{e:?}");
     }
 }

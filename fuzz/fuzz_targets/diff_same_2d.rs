@@ -1,5 +1,5 @@
 //! Engine vs exact oracle on boundary-biased Static cases decoded from the input;
-//! aborts on missed_detection and false_alarm_far (see fuzz/README.md).
+//! aborts on missed_detection, false_alarm_far and time_outside (see fuzz/README.md).
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;

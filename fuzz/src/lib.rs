@@ -3,7 +3,7 @@
 //! - [`differential`]: decode the fuzzer's bytes into a boundary-biased case through the
 //!   harness's generators (the same ones `polyguard assure` and the proptest suites use),
 //!   compare the f64 engine with paper A in exact arithmetic and the exact truth, and
-//!   abort on the two failures (`missed_detection`, `false_alarm_far`) with the case as a
+//!   abort on the three failures (`missed_detection`, `false_alarm_far`, `time_outside`) with the case as a
 //!   line of the case format, ready for `tests/regressions/`.
 //! - [`Num`]: an `arbitrary` f64 that favours the values that break float code (NaN, ±∞,
 //!   ±0, subnormals, the overflow and underflow thresholds of a square).
@@ -82,7 +82,11 @@ pub fn differential(data: &[u8], shape: Shape) {
             .as_deref()
             .map(|t| format!(" at t = {t}"))
             .unwrap_or_default(),
-    );
+    ) + &verdict
+        .time_failure
+        .as_deref()
+        .map(|f| format!("; entry time: {f}"))
+        .unwrap_or_default();
     let id = format!("fuzz-{}", shape_name(shape));
     let line = raw.to_json_line(
         &id,

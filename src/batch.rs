@@ -480,7 +480,8 @@ impl Prepared {
         }
         Prepared {
             bx: Aabb { lo, hi },
-            unbounded: unbounded || !(lo[0].is_finite() && lo[1].is_finite())
+            unbounded: unbounded
+                || !(lo[0].is_finite() && lo[1].is_finite())
                 || !(hi[0].is_finite() && hi[1].is_finite()),
         }
     }
@@ -673,7 +674,10 @@ mod tests {
         assert!(lo <= 1e16 && hi > 1e16 + 0.5, "{lo} {hi}");
         let (lo, hi) = swept(0.1, -0.7, 3.0);
         // exact end 0.1 − 2.1 = −2.0 (for the decimals; the floats are within 1e-15)
-        assert!(lo < -2.0 + 1e-14 && lo > -2.0 - 1e-14 && hi == 0.1, "{lo} {hi}");
+        assert!(
+            lo < -2.0 + 1e-14 && lo > -2.0 - 1e-14 && hi == 0.1,
+            "{lo} {hi}"
+        );
     }
 
     /// A statically shaped polygon reaches BUFF; a warping one F times its longest
@@ -725,7 +729,9 @@ mod tests {
             let mut got = Vec::new();
             g.candidates(&b, &prepared, &mut got);
             got.sort_unstable();
-            let want: Vec<u32> = (0..40).filter(|&j| b.meets(&prepared[j as usize].bx)).collect();
+            let want: Vec<u32> = (0..40)
+                .filter(|&j| b.meets(&prepared[j as usize].bx))
+                .collect();
             assert_eq!(got, want, "point {k}");
         }
     }

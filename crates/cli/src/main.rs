@@ -19,6 +19,8 @@ struct Cli {
 enum Command {
     /// Answer detection cases (JSON Lines, docs/cases.md), one line per case.
     Detect(polyguard_cli::commands::detect::DetectArgs),
+    /// Every point of one JSON Lines file against every polygon of another (docs/batch.md).
+    DetectBatch(polyguard_cli::commands::detect_batch::DetectBatchArgs),
     /// A seeded safety-assurance run: engine vs paper-exact vs truth on boundary cases.
     Assure(polyguard_cli::commands::assure::AssureArgs),
     /// Which areas and tracks of a scenario GeoJSON conflict, and when (paper B).
@@ -31,6 +33,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match &cli.command {
         Command::Detect(a) => polyguard_cli::commands::detect::run(a),
+        Command::DetectBatch(a) => polyguard_cli::commands::detect_batch::run(a),
         Command::Assure(a) => polyguard_cli::commands::assure::run(a),
         Command::Conflicts(a) => polyguard_cli::commands::conflicts::run(a),
         Command::Generate(a) => polyguard_cli::commands::generate::run(a),

@@ -3,4 +3,5 @@ pub mod assure;
 pub mod assure_b;
 pub mod conflicts;
 pub mod detect;
+pub mod detect_batch;
 pub mod generate;

@@ -5,9 +5,10 @@
 //! **Density.** M polygons of 8 vertices, each about 1 across (star-shaped, radii 0.3 to
 //! 0.6 around its centre), their centres uniform in a square of side 31.6·√M (1000 for
 //! M = 1000: one polygon per 1000 square units), drifting at up to 1 unit per time
-//! unit. N points uniform in the same square, moving at 2 to 5 units per time unit for
-//! T = 10: a path of 20 to 50 units, whose swept box meets a few polygons' boxes.
-//! BUFF = 0.05, F = 10⁻⁴.
+//! unit. N points uniform in the same square, moving at 5 to 15 units per time unit for
+//! T = 10: a path of 50 to 150 units, whose swept box meets the grown boxes of 3.6
+//! polygons on average (2,000 points and 200 polygons of seed 1: 7,135 pairs of 400,000,
+//! 293 hits). BUFF = 0.05, F = 10⁻⁴.
 //!
 //! **Boundary pairs.** A share of the points ([`Mix::aimed`]) is aimed at a vertex of a
 //! random polygon, arriving at 0, ½, 1, 1 + 2⁻²⁰ or 2 times BUFF (or F times the edge
@@ -127,7 +128,7 @@ fn polygon(rng: &mut SplitMix, side: f64, mix: Mix) -> Option<MovingPolygon> {
 
 /// One point: uniform, or aimed at a polygon's vertex (see the module doc).
 fn point(rng: &mut SplitMix, side: f64, mix: Mix, polygons: &[MovingPolygon]) -> MovingPoint {
-    let speed = rng.range(2.0, 5.0);
+    let speed = rng.range(5.0, 15.0);
     let a = rng.range(0.0, std::f64::consts::TAU);
     let v = Vect2::new(speed * a.cos(), speed * a.sin());
     let vz = rng.range(-10.0, 10.0);

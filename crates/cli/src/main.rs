@@ -19,6 +19,8 @@ struct Cli {
 enum Command {
     /// Answer detection cases (JSON Lines, docs/cases.md), one line per case.
     Detect(polyguard_cli::commands::detect::DetectArgs),
+    /// Every point of one JSON Lines file against every polygon of another (docs/batch.md).
+    DetectBatch(polyguard_cli::commands::detect_batch::DetectBatchArgs),
     /// Paper A on the Earth: does an aircraft come within BUFF nm of a drifting cell?
     /// (JSON Lines in degrees, nm, knots, hours: docs/earth-cases.md)
     DetectEarth(polyguard_cli::commands::detect_earth::DetectEarthArgs),
@@ -34,6 +36,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match &cli.command {
         Command::Detect(a) => polyguard_cli::commands::detect::run(a),
+        Command::DetectBatch(a) => polyguard_cli::commands::detect_batch::run(a),
         Command::DetectEarth(a) => polyguard_cli::commands::detect_earth::run(a),
         Command::Assure(a) => polyguard_cli::commands::assure::run(a),
         Command::Conflicts(a) => polyguard_cli::commands::conflicts::run(a),

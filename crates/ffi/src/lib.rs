@@ -795,6 +795,29 @@ mod tests {
         assert_eq!(message(), "");
     }
 
+    /// The message is per thread: a failure on one thread leaves another's message as
+    /// it was (the header promises it).
+    #[test]
+    fn the_message_is_per_thread() {
+        // SAFETY: NULL `out` is allowed; it is the failure under test.
+        assert_eq!(
+            unsafe { pg_params_default(core::ptr::null_mut()) },
+            PG_ERR_NULL_POINTER
+        );
+        assert_eq!(message(), "out: NULL pointer");
+        let other = std::thread::spawn(|| {
+            let before = message();
+            let mut p = PgParams::default();
+            // SAFETY: a valid `out`.
+            let rc = unsafe { pg_params_default(&mut p) };
+            (before, rc, message())
+        })
+        .join()
+        .unwrap();
+        assert_eq!(other, (String::new(), PG_OK, String::new()));
+        assert_eq!(message(), "out: NULL pointer");
+    }
+
     /// Every status has its own name (no two codes share one, none is "unknown").
     #[test]
     fn status_names_are_distinct() {

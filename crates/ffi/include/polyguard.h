@@ -83,8 +83,7 @@
 // with the input).
 #define PG_ERR_PANIC -12
 
-// Any other invalid input (reserved: no input through this interface produces it
-// today).
+// Any other invalid input: a pointer not aligned for its type (the message names it).
 #define PG_ERR_INVALID -13
 
 // `pg_detection.kind` and `pg_hit.kind`: every comparison behind the answer was

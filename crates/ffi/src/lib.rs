@@ -64,8 +64,7 @@ pub const PG_ERR_CAPACITY: c_int = -11;
 /// The engine panicked: a bug in polyguard, caught at the boundary (please report it
 /// with the input).
 pub const PG_ERR_PANIC: c_int = -12;
-/// Any other invalid input (reserved: no input through this interface produces it
-/// today).
+/// Any other invalid input: a pointer not aligned for its type (the message names it).
 pub const PG_ERR_INVALID: c_int = -13;
 
 /// `pg_detection.kind` and `pg_hit.kind`: every comparison behind the answer was
@@ -252,6 +251,13 @@ impl Failure {
         Failure::new(PG_ERR_NULL_POINTER, format!("{field}: NULL pointer"))
     }
 
+    fn misaligned(field: &str) -> Self {
+        Failure::new(
+            PG_ERR_INVALID,
+            format!("{field}: misaligned pointer (not a pointer to this type)"),
+        )
+    }
+
     /// An engine error, its message with the field renamed (`point.` to `points[3].`
     /// in a batch).
     fn case(e: CaseError, rename: Option<(&str, String)>) -> Self {
@@ -330,6 +336,9 @@ unsafe fn slice_of<'a, T>(ptr: *const T, len: usize, field: &str) -> Result<&'a 
     if ptr.is_null() {
         return Err(Failure::null(field));
     }
+    if !ptr.is_aligned() {
+        return Err(Failure::misaligned(field));
+    }
     if len > isize::MAX as usize / core::mem::size_of::<T>().max(1) {
         return Err(Failure::new(
             PG_ERR_WRONG_LENGTH,
@@ -345,7 +354,10 @@ unsafe fn slice_of<'a, T>(ptr: *const T, len: usize, field: &str) -> Result<&'a 
 /// # Safety
 /// A non-NULL `ptr` must point to a valid `T`.
 unsafe fn deref<'a, T>(ptr: *const T, field: &str) -> Result<&'a T, Failure> {
-    // SAFETY: the caller's promise.
+    if !ptr.is_aligned() {
+        return Err(Failure::misaligned(field));
+    }
+    // SAFETY: aligned, and the caller's promise.
     unsafe { ptr.as_ref() }.ok_or_else(|| Failure::null(field))
 }
 
@@ -437,7 +449,10 @@ fn method_code(m: Method) -> c_int {
 #[no_mangle]
 pub unsafe extern "C" fn pg_params_default(out: *mut PgParams) -> c_int {
     guard(|| {
-        // SAFETY: the caller's promise.
+        if !out.is_aligned() {
+            return Err(Failure::misaligned("out"));
+        }
+        // SAFETY: aligned, and the caller's promise.
         let out = unsafe { out.as_mut() }.ok_or_else(|| Failure::null("out"))?;
         *out = PgParams {
             lookahead: 0.0,
@@ -472,7 +487,10 @@ pub unsafe extern "C" fn pg_detect(
     polygon: *const PgPolygon,
     out: *mut PgDetection,
 ) -> c_int {
-    // SAFETY: the caller's promise.
+    if !out.is_aligned() {
+        return guard(|| Err(Failure::misaligned("out")));
+    }
+    // SAFETY: aligned, and the caller's promise.
     let out = match unsafe { out.as_mut() } {
         Some(o) => o,
         None => return guard(|| Err(Failure::null("out"))),
@@ -532,7 +550,10 @@ pub unsafe extern "C" fn pg_detect_time(
     polygon: *const PgPolygon,
     out: *mut PgEntryTime,
 ) -> c_int {
-    // SAFETY: the caller's promise.
+    if !out.is_aligned() {
+        return guard(|| Err(Failure::misaligned("out")));
+    }
+    // SAFETY: aligned, and the caller's promise.
     let out = match unsafe { out.as_mut() } {
         Some(o) => o,
         None => return guard(|| Err(Failure::null("out"))),
@@ -597,7 +618,10 @@ pub unsafe extern "C" fn pg_detect_batch(
     cap: usize,
     n_hits: *mut usize,
 ) -> c_int {
-    // SAFETY: the caller's promise.
+    if !n_hits.is_aligned() {
+        return guard(|| Err(Failure::misaligned("n_hits")));
+    }
+    // SAFETY: aligned, and the caller's promise.
     let n_hits = match unsafe { n_hits.as_mut() } {
         Some(n) => n,
         None => return guard(|| Err(Failure::null("n_hits"))),
@@ -610,6 +634,9 @@ pub unsafe extern "C" fn pg_detect_batch(
         let points = unsafe { slice_of(points, n_points, "points") }?;
         if cap > 0 && hits.is_null() {
             return Err(Failure::null("hits"));
+        }
+        if cap > 0 && !hits.is_aligned() {
+            return Err(Failure::misaligned("hits"));
         }
         let offsets_len = polys
             .count
@@ -816,6 +843,23 @@ mod tests {
         .unwrap();
         assert_eq!(other, (String::new(), PG_OK, String::new()));
         assert_eq!(message(), "out: NULL pointer");
+    }
+
+    /// A misaligned pointer is refused with its name, never read.
+    #[test]
+    fn a_misaligned_pointer_is_refused() {
+        let bytes = [0u8; 64];
+        let params = bytes.as_ptr().wrapping_add(1).cast::<PgParams>();
+        let mut out = PgDetection::default();
+        // SAFETY: the misaligned pointer is checked before any read.
+        let rc = unsafe { pg_detect(params, core::ptr::null(), core::ptr::null(), &mut out) };
+        assert_eq!(rc, PG_ERR_INVALID);
+        assert!(
+            message().starts_with("params: misaligned pointer"),
+            "{}",
+            message()
+        );
+        assert_eq!(out.detected, 1);
     }
 
     /// Every status has its own name (no two codes share one, none is "unknown").

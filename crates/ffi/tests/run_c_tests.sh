@@ -42,7 +42,10 @@ echo "== C, static library"
 
 echo "== C, shared library"
 "$cc" "${flags[@]}" "$src" -L"$lib" -lpolyguard_ffi -lm -o "$out/test_shared"
-if ! LD_LIBRARY_PATH="$lib" ldd "$out/test_shared" | grep -q libpolyguard_ffi; then
+# ldd's output captured first: `ldd | grep -q` fails under pipefail when grep's early
+# exit kills ldd with SIGPIPE
+linked=$(LD_LIBRARY_PATH="$lib" ldd "$out/test_shared")
+if [[ $linked != *libpolyguard_ffi.so* ]]; then
   echo "test_shared is not linked against libpolyguard_ffi.so" >&2
   exit 1
 fi

@@ -1,0 +1,897 @@
+//! The C interface of polyguard: paper A's detection (Narkawicz & Hagen, §II.H, §II.I,
+//! §III), its entry time and the batch over plain C arrays.
+//!
+//! The header is `include/polyguard.h`, generated from this file by cbindgen
+//! (`cbindgen.toml`; `tests/header.rs` fails when the checked-in header is stale and
+//! rewrites it with `UPDATE_HEADER=1`).
+//!
+//! Rules every entry point follows (they extend the engine's API, `polyguard::api` and
+//! `polyguard::batch`, to C):
+//!
+//! - It returns an `int` status: `PG_OK` or a negative `PG_ERR_*` code, one per kind
+//!   of bad input, and keeps a message naming the field (`polygon.vertices: clockwise
+//!   order …`) for `pg_last_error_message`, per thread.
+//! - It never unwinds into C: its body runs under `std::panic::catch_unwind`, and a
+//!   panic becomes `PG_ERR_PANIC`.
+//! - It reads the caller's arrays only during the call and never keeps a pointer; it
+//!   never allocates memory the caller must free (the batch writes into the caller's
+//!   array and says how many hits there were).
+//! - On an error, the answer written for a single case is the most conservative one
+//!   (detected; entry possible at any time), so that a caller who forgets the status
+//!   still does not read "no".
+#![deny(missing_docs)]
+
+use std::cell::RefCell;
+use std::os::raw::{c_char, c_int};
+use std::panic::{catch_unwind, AssertUnwindSafe};
+
+use polyguard::api::{self, Case, Kind, MovingPoint, MovingPolygon, Params};
+use polyguard::batch;
+use polyguard::entry::EntryTime;
+use polyguard::error::CaseError;
+use polyguard::well_formed::Fault;
+use polyguard::{Method, Vect2};
+
+/// Success.
+pub const PG_OK: c_int = 0;
+/// A pointer that must not be NULL is NULL (the message names it).
+pub const PG_ERR_NULL_POINTER: c_int = -1;
+/// A coordinate, speed or parameter is NaN or infinite (the message names it, down to
+/// the coordinate: `polygon.vertices[2][1]`).
+pub const PG_ERR_NOT_FINITE: c_int = -2;
+/// A polygon has fewer than 3 vertices (paper A §II).
+pub const PG_ERR_TOO_FEW_VERTICES: c_int = -3;
+/// An array has the wrong length: batch offsets that do not start at 0 or decrease, or
+/// a length too large to address.
+pub const PG_ERR_WRONG_LENGTH: c_int = -4;
+/// A polygon's vertices run clockwise; paper A §II lists them counterclockwise.
+pub const PG_ERR_CLOCKWISE: c_int = -5;
+/// A polygon's edges cross (paper A §II needs a simple polygon).
+pub const PG_ERR_SELF_INTERSECTING: c_int = -6;
+/// A polygon's vertices all lie on one line: it encloses nothing.
+pub const PG_ERR_ZERO_AREA: c_int = -7;
+/// 2D and 3D mixed: a point with a height (`has_z`) and a polygon without a slab, or
+/// the reverse (paper A §III).
+pub const PG_ERR_DIMENSION_MISMATCH: c_int = -8;
+/// A parameter outside its domain: lookahead or buff not > 0, fac outside (0, 1),
+/// kappa_deg outside (0, 180).
+pub const PG_ERR_BAD_PARAMETER: c_int = -9;
+/// A slab's bottom lies above its top (paper A §III).
+pub const PG_ERR_SLAB_INVERTED: c_int = -10;
+/// The caller's buffer is too small: the batch's hits (the count is still written) or
+/// the error message (truncated, still NUL-terminated).
+pub const PG_ERR_CAPACITY: c_int = -11;
+/// The engine panicked: a bug in polyguard, caught at the boundary (please report it
+/// with the input).
+pub const PG_ERR_PANIC: c_int = -12;
+/// Any other invalid input: a pointer not aligned for its type (the message names it).
+pub const PG_ERR_INVALID: c_int = -13;
+
+/// `pg_detection.kind` and `pg_hit.kind`: every comparison behind the answer was
+/// certified; paper A computed without rounding answers the same.
+pub const PG_KIND_EXACT: c_int = 0;
+/// A "yes" taken on a comparison f64 could not decide; paper A without rounding may
+/// answer no. Never a "no".
+pub const PG_KIND_CONSERVATIVE: c_int = 1;
+
+/// No method: the call failed.
+pub const PG_METHOD_NONE: c_int = 0;
+/// Paper A §II.H detect_same_2D: all vertex velocities equal (statically shaped).
+pub const PG_METHOD_SAME_2D: c_int = 1;
+/// Paper A §II.I detect_diff_2D: a warping polygon.
+pub const PG_METHOD_DIFF_2D: c_int = 2;
+/// Paper A §III detect_3D: a point with a height and a polygon with a slab.
+pub const PG_METHOD_3D: c_int = 3;
+
+/// `PgEntryTime::kind`: certified, the point never enters during [0, T].
+pub const PG_ENTRY_NEVER: c_int = 0;
+/// Certified: the point enters, first at a time in [lo, hi].
+pub const PG_ENTRY_ENTERS: c_int = 1;
+/// Not certified either way: no entry before lo; if the point enters, it is first at a
+/// time in [lo, hi] (hi is then T).
+pub const PG_ENTRY_POSSIBLE: c_int = 2;
+
+/// A 2D vector or point (paper A §I); the same layout as two `double`s.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct PgVec2 {
+    /// The first coordinate.
+    pub x: f64,
+    /// The second coordinate.
+    pub y: f64,
+}
+
+/// The moving point s + t·v (paper A §II), with height z + t·vz when `has_z` is non-zero
+/// (§III; `z` and `vz` are ignored otherwise).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct PgPoint {
+    /// s, the horizontal position at t = 0.
+    pub pos: PgVec2,
+    /// v, the horizontal velocity.
+    pub vel: PgVec2,
+    /// Non-zero for a 3D point.
+    pub has_z: c_int,
+    /// The height at t = 0 (3D only).
+    pub z: f64,
+    /// The vertical speed (3D only).
+    pub vz: f64,
+}
+
+/// The vertical extent of a 3D polygon (paper A §III): bottom + t·vz ≤ z ≤ top + t·vz.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct PgSlab {
+    /// pmin, the bottom at t = 0.
+    pub bottom: f64,
+    /// pmax, the top at t = 0 (not below the bottom).
+    pub top: f64,
+    /// vsp, the slab's vertical speed.
+    pub vz: f64,
+}
+
+/// A moving polygon P + t·V (paper A §II): `n` ≥ 3 vertices in counterclockwise order,
+/// simple; `velocities` NULL for a polygon at rest, else `n` velocities, one per vertex;
+/// with a slab (§III) when `has_slab` is non-zero. The arrays are the caller's, read
+/// during the call only.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct PgPolygon {
+    /// P: `n` vertices.
+    pub vertices: *const PgVec2,
+    /// V: `n` velocities, or NULL (all zero).
+    pub velocities: *const PgVec2,
+    /// The number of vertices.
+    pub n: usize,
+    /// Non-zero for a 3D polygon.
+    pub has_slab: c_int,
+    /// The slab (3D only).
+    pub slab: PgSlab,
+}
+
+/// Many moving polygons in flat arrays, for `pg_detect_batch`: polygon i has the
+/// vertices `vertices[offsets[i]] … vertices[offsets[i + 1] - 1]` (and the velocities at
+/// the same indices, or all at rest when `velocities` is NULL); `offsets` holds
+/// `count + 1` entries, `offsets[0] == 0`, never decreasing. `slabs` is NULL for 2D
+/// polygons, else `count` slabs (paper A §III).
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct PgPolygons {
+    /// All vertices, polygon after polygon: `offsets[count]` of them.
+    pub vertices: *const PgVec2,
+    /// As many velocities, or NULL.
+    pub velocities: *const PgVec2,
+    /// `count + 1` offsets into `vertices`.
+    pub offsets: *const usize,
+    /// The number of polygons.
+    pub count: usize,
+    /// `count` slabs, or NULL for 2D polygons.
+    pub slabs: *const PgSlab,
+}
+
+/// The case's parameters: the lookahead T (> 0), BUFF (> 0, paper A §II.A), F (in
+/// (0, 1), §II.I) and the corner angle κ in degrees (in (0, 180), §II.J).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct PgParams {
+    /// T, the lookahead time.
+    pub lookahead: f64,
+    /// BUFF, the distance that counts as contact.
+    pub buff: f64,
+    /// F, the relative slack of detect_diff_2D and detect_3D.
+    pub fac: f64,
+    /// κ in degrees, for the well-formedness check only.
+    pub kappa_deg: f64,
+}
+
+/// The answer of `pg_detect` (paper A §II.H, §II.I, §III; §II.J for `well_formed`).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct PgDetection {
+    /// 1 when the point comes within BUFF (or the F slack) of the polygon during
+    /// [0, T], or when a comparison on the way could not be decided; else 0.
+    pub detected: c_int,
+    /// `PG_KIND_EXACT` or `PG_KIND_CONSERVATIVE`.
+    pub kind: c_int,
+    /// `PG_METHOD_*`: which paper function decided.
+    pub method: c_int,
+    /// 1 when the polygon is well formed at t = 0 (§II.J), for information only: a
+    /// polygon that is not is still checked.
+    pub well_formed: c_int,
+    /// 0 when well formed, else the first §II.J rule that fails (1 to 4).
+    pub well_formed_rule: c_int,
+    /// The vertex the failing rule names (rule 1: the first of two close vertices;
+    /// rule 2: the start of the first of two close edges; rules 3, 4: the corner).
+    pub well_formed_a: usize,
+    /// The second vertex rules 1 and 2 name (the start of the second edge for rule 2);
+    /// equal to `well_formed_a` for rules 3 and 4.
+    pub well_formed_b: usize,
+}
+
+/// The answer of `pg_detect_time`: where the first time the point is in the closed
+/// polygon (and slab) lies.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct PgEntryTime {
+    /// `PG_ENTRY_NEVER`, `PG_ENTRY_ENTERS` or `PG_ENTRY_POSSIBLE`.
+    pub kind: c_int,
+    /// No entry before lo (NaN for `PG_ENTRY_NEVER`).
+    pub lo: f64,
+    /// Entered by hi (`PG_ENTRY_ENTERS`), or T (`PG_ENTRY_POSSIBLE`); NaN for
+    /// `PG_ENTRY_NEVER`.
+    pub hi: f64,
+}
+
+/// One detected pair of `pg_detect_batch`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct PgHit {
+    /// The point's index in the points given.
+    pub point: usize,
+    /// The polygon's index in the polygons given.
+    pub polygon: usize,
+    /// `PG_KIND_EXACT` or `PG_KIND_CONSERVATIVE`.
+    pub kind: c_int,
+    /// `PG_METHOD_*`.
+    pub method: c_int,
+}
+
+/// A failed call: its status and its message.
+struct Failure {
+    code: c_int,
+    message: String,
+}
+
+impl Failure {
+    fn new(code: c_int, message: String) -> Self {
+        Failure { code, message }
+    }
+
+    fn null(field: &str) -> Self {
+        Failure::new(PG_ERR_NULL_POINTER, format!("{field}: NULL pointer"))
+    }
+
+    fn misaligned(field: &str) -> Self {
+        Failure::new(
+            PG_ERR_INVALID,
+            format!("{field}: misaligned pointer (not a pointer to this type)"),
+        )
+    }
+
+    /// An engine error, its message with the field renamed (`point.` to `points[3].`
+    /// in a batch).
+    fn case(e: CaseError, rename: Option<(&str, String)>) -> Self {
+        let mut message = e.to_string();
+        if let Some((from, to)) = rename {
+            if let Some(rest) = message.strip_prefix(from) {
+                message = format!("{to}{rest}");
+            }
+        }
+        Failure::new(status_of(&e), message)
+    }
+}
+
+/// The status code of an engine error (extends polyguard::error::CaseError to C).
+fn status_of(e: &CaseError) -> c_int {
+    match e {
+        CaseError::NotFinite { .. } | CaseError::NotJsonNumber { .. } => PG_ERR_NOT_FINITE,
+        CaseError::TooFewVertices { .. } => PG_ERR_TOO_FEW_VERTICES,
+        CaseError::WrongLength { .. } | CaseError::PointLength { .. } => PG_ERR_WRONG_LENGTH,
+        CaseError::Clockwise { .. } => PG_ERR_CLOCKWISE,
+        CaseError::SelfIntersecting { .. } => PG_ERR_SELF_INTERSECTING,
+        CaseError::ZeroArea => PG_ERR_ZERO_AREA,
+        CaseError::DimensionMismatch { .. } => PG_ERR_DIMENSION_MISMATCH,
+        CaseError::NotPositive { .. } | CaseError::OutOfRange { .. } => PG_ERR_BAD_PARAMETER,
+        CaseError::SlabInverted { .. } => PG_ERR_SLAB_INVERTED,
+        CaseError::Syntax { .. }
+        | CaseError::Missing { .. }
+        | CaseError::WrongType { .. }
+        | CaseError::UnknownField { .. } => PG_ERR_INVALID,
+    }
+}
+
+thread_local! {
+    /// The message of this thread's last failed call ("" after a successful one).
+    static LAST_ERROR: RefCell<String> = const { RefCell::new(String::new()) };
+}
+
+fn set_last_error(message: String) {
+    LAST_ERROR.with(|m| *m.borrow_mut() = message);
+}
+
+/// Runs an entry point's body: clears the thread's message, catches a panic (never
+/// unwinds into C), records a failure's message and returns its status.
+fn guard<F: FnOnce() -> Result<(), Failure>>(body: F) -> c_int {
+    set_last_error(String::new());
+    match catch_unwind(AssertUnwindSafe(body)) {
+        Ok(Ok(())) => PG_OK,
+        Ok(Err(f)) => {
+            set_last_error(f.message);
+            f.code
+        }
+        Err(payload) => {
+            let what = payload
+                .downcast_ref::<&str>()
+                .map(|s| String::from(*s))
+                .or_else(|| payload.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| String::from("no message"));
+            set_last_error(format!(
+                "internal error: polyguard panicked ({what}); please report it with the input"
+            ));
+            PG_ERR_PANIC
+        }
+    }
+}
+
+/// A C array as a slice: NULL only when empty (then an empty slice); a length whose
+/// bytes exceed isize::MAX is refused.
+///
+/// # Safety
+/// A non-NULL `ptr` must point to `len` valid, initialised `T`s that stay unchanged
+/// during the call.
+unsafe fn slice_of<'a, T>(ptr: *const T, len: usize, field: &str) -> Result<&'a [T], Failure> {
+    if len == 0 {
+        return Ok(&[]);
+    }
+    if ptr.is_null() {
+        return Err(Failure::null(field));
+    }
+    if !ptr.is_aligned() {
+        return Err(Failure::misaligned(field));
+    }
+    if len > isize::MAX as usize / core::mem::size_of::<T>().max(1) {
+        return Err(Failure::new(
+            PG_ERR_WRONG_LENGTH,
+            format!("{field}: {len} elements are more than memory can hold"),
+        ));
+    }
+    // SAFETY: non-null, the caller's promise of `len` valid elements, size checked.
+    Ok(unsafe { core::slice::from_raw_parts(ptr, len) })
+}
+
+/// A reference to a caller's struct, or the NULL-pointer failure naming it.
+///
+/// # Safety
+/// A non-NULL `ptr` must point to a valid `T`.
+unsafe fn deref<'a, T>(ptr: *const T, field: &str) -> Result<&'a T, Failure> {
+    if !ptr.is_aligned() {
+        return Err(Failure::misaligned(field));
+    }
+    // SAFETY: aligned, and the caller's promise.
+    unsafe { ptr.as_ref() }.ok_or_else(|| Failure::null(field))
+}
+
+fn vects(v: &[PgVec2]) -> Vec<Vect2> {
+    v.iter().map(|p| Vect2::new(p.x, p.y)).collect()
+}
+
+/// The engine's parameters from the C ones (paper A §II.A, §II.I, §II.J).
+fn params_of(p: &PgParams) -> Result<Params, Failure> {
+    Params::new(p.buff)
+        .and_then(|q| q.with_fac(p.fac))
+        .and_then(|q| q.with_kappa_degrees(p.kappa_deg))
+        .map_err(|e| Failure::case(e, None))
+}
+
+/// The engine's moving point from the C one (paper A §II, §III).
+fn point_of(p: &PgPoint) -> Result<MovingPoint, CaseError> {
+    if p.has_z != 0 {
+        MovingPoint::new_3d([p.pos.x, p.pos.y, p.z], [p.vel.x, p.vel.y, p.vz])
+    } else {
+        MovingPoint::new_2d(Vect2::new(p.pos.x, p.pos.y), Vect2::new(p.vel.x, p.vel.y))
+    }
+}
+
+/// The engine's validated polygon from vertex and velocity slices (paper A §II, §III).
+fn polygon_of(
+    vertices: &[PgVec2],
+    velocities: Option<&[PgVec2]>,
+    slab: Option<&PgSlab>,
+) -> Result<MovingPolygon, CaseError> {
+    let poly = MovingPolygon::new(vects(vertices), velocities.map(vects))?;
+    match slab {
+        Some(s) => poly.with_slab(s.bottom, s.top, s.vz),
+        None => Ok(poly),
+    }
+}
+
+/// The validated case behind `pg_detect` and `pg_detect_time` (paper A §II, §III).
+///
+/// # Safety
+/// As `pg_detect`.
+unsafe fn case_of(
+    params: *const PgParams,
+    point: *const PgPoint,
+    polygon: *const PgPolygon,
+) -> Result<Case, Failure> {
+    // SAFETY (all three): the caller's promise of valid pointers or NULL.
+    let params = unsafe { deref(params, "params") }?;
+    let point = unsafe { deref(point, "point") }?;
+    let polygon = unsafe { deref(polygon, "polygon") }?;
+    let p = params_of(params)?;
+    let pt = point_of(point).map_err(|e| Failure::case(e, None))?;
+    // SAFETY: the caller's promise about the polygon's arrays.
+    let vertices = unsafe { slice_of(polygon.vertices, polygon.n, "polygon.vertices") }?;
+    let velocities = if polygon.velocities.is_null() {
+        None
+    } else {
+        // SAFETY: as above.
+        Some(unsafe { slice_of(polygon.velocities, polygon.n, "polygon.velocities") }?)
+    };
+    let slab = (polygon.has_slab != 0).then_some(&polygon.slab);
+    let poly = polygon_of(vertices, velocities, slab).map_err(|e| Failure::case(e, None))?;
+    Case::new(params.lookahead, pt, poly, p).map_err(|e| Failure::case(e, None))
+}
+
+fn kind_code(k: Kind) -> c_int {
+    match k {
+        Kind::Exact => PG_KIND_EXACT,
+        Kind::Conservative => PG_KIND_CONSERVATIVE,
+    }
+}
+
+fn method_code(m: Method) -> c_int {
+    match m {
+        Method::DetectSame2d => PG_METHOD_SAME_2D,
+        Method::DetectDiff2d => PG_METHOD_DIFF_2D,
+        Method::Detect3d => PG_METHOD_3D,
+    }
+}
+
+/// The parameters' defaults: F = 0.0001 (paper A §II.I's example) and κ = 5° (§II.J);
+/// `lookahead` and `buff` are 0, which every call refuses (`PG_ERR_BAD_PARAMETER`)
+/// until the caller sets them, as the paper gives them no default.
+///
+/// Returns `PG_OK`, or `PG_ERR_NULL_POINTER` when `out` is NULL.
+///
+/// # Safety
+/// `out` is NULL or points to a writable `pg_params`.
+#[no_mangle]
+pub unsafe extern "C" fn pg_params_default(out: *mut PgParams) -> c_int {
+    guard(|| {
+        if !out.is_aligned() {
+            return Err(Failure::misaligned("out"));
+        }
+        // SAFETY: aligned, and the caller's promise.
+        let out = unsafe { out.as_mut() }.ok_or_else(|| Failure::null("out"))?;
+        *out = PgParams {
+            lookahead: 0.0,
+            buff: 0.0,
+            fac: Params::DEFAULT_FAC,
+            kappa_deg: 5.0,
+        };
+        Ok(())
+    })
+}
+
+/// Does the point come within BUFF of the polygon during [0, T]? Paper A end to end:
+/// detect_3D (§III) when the point has a height and the polygon a slab, else
+/// detect_same_2D (§II.H) when all vertex velocities are equal, else detect_diff_2D
+/// (§II.I); plus the well-formedness check of §II.J at t = 0, for information.
+///
+/// The contract: if paper A computed without rounding says yes, `out->detected` is 1.
+/// A 1 taken on a comparison f64 could not decide has `kind == PG_KIND_CONSERVATIVE`.
+///
+/// Returns `PG_OK`, or a `PG_ERR_*` code with a message naming the field (see
+/// `pg_last_error_message`); on an error `*out` (when `out` is not NULL) holds the
+/// conservative answer: detected 1, kind conservative, method `PG_METHOD_NONE`,
+/// well_formed 0.
+///
+/// # Safety
+/// Each pointer is NULL or valid for the call; `polygon->vertices` (and
+/// `polygon->velocities` unless NULL) point to `polygon->n` elements. Nothing is kept.
+#[no_mangle]
+pub unsafe extern "C" fn pg_detect(
+    params: *const PgParams,
+    point: *const PgPoint,
+    polygon: *const PgPolygon,
+    out: *mut PgDetection,
+) -> c_int {
+    if !out.is_aligned() {
+        return guard(|| Err(Failure::misaligned("out")));
+    }
+    // SAFETY: aligned, and the caller's promise.
+    let out = match unsafe { out.as_mut() } {
+        Some(o) => o,
+        None => return guard(|| Err(Failure::null("out"))),
+    };
+    *out = PgDetection {
+        detected: 1,
+        kind: PG_KIND_CONSERVATIVE,
+        method: PG_METHOD_NONE,
+        well_formed: 0,
+        well_formed_rule: 0,
+        well_formed_a: 0,
+        well_formed_b: 0,
+    };
+    guard(|| {
+        // SAFETY: the caller's promise.
+        let case = unsafe { case_of(params, point, polygon) }?;
+        let d = api::detect(&case);
+        let (rule, a, b) = match d.well_formed_fault {
+            None => (0, 0, 0),
+            Some(Fault::CloseVertices(i, j)) => (1, i, j),
+            Some(Fault::CloseEdges(i, k)) => (2, i, k),
+            Some(Fault::SharpCorner(j)) => (3, j, j),
+            Some(Fault::TurnsRight(m)) => (4, m, m),
+        };
+        *out = PgDetection {
+            detected: c_int::from(d.detected),
+            kind: kind_code(d.kind),
+            method: method_code(d.method),
+            well_formed: c_int::from(d.well_formed),
+            well_formed_rule: rule,
+            well_formed_a: a,
+            well_formed_b: b,
+        };
+        Ok(())
+    })
+}
+
+/// When does the point first lie in the closed polygon (and, in 3D, the slab) during
+/// [0, T]? The moment paper A's detection (§II.H, §II.I, §III) guarantees to flag,
+/// without BUFF: an f64 enclosure [lo, hi] of the exact first-entry time, by a certified
+/// branch and bound over each edge's contact quadratics (§II.C's, without the BUFF
+/// band). `PG_ENTRY_NEVER` is certified; `PG_ENTRY_ENTERS` certifies the entry and its
+/// enclosure; `PG_ENTRY_POSSIBLE` says f64 could not tell (tangent contacts): no entry
+/// before lo, and any entry is by hi = T.
+///
+/// BUFF, F and κ are not used, but `params` is validated as for `pg_detect`.
+///
+/// Returns `PG_OK` or a `PG_ERR_*` code (message: `pg_last_error_message`); on an error
+/// `*out` (when `out` is not NULL) is `PG_ENTRY_POSSIBLE` on [0, +∞].
+///
+/// # Safety
+/// As `pg_detect`.
+#[no_mangle]
+pub unsafe extern "C" fn pg_detect_time(
+    params: *const PgParams,
+    point: *const PgPoint,
+    polygon: *const PgPolygon,
+    out: *mut PgEntryTime,
+) -> c_int {
+    if !out.is_aligned() {
+        return guard(|| Err(Failure::misaligned("out")));
+    }
+    // SAFETY: aligned, and the caller's promise.
+    let out = match unsafe { out.as_mut() } {
+        Some(o) => o,
+        None => return guard(|| Err(Failure::null("out"))),
+    };
+    *out = PgEntryTime {
+        kind: PG_ENTRY_POSSIBLE,
+        lo: 0.0,
+        hi: f64::INFINITY,
+    };
+    guard(|| {
+        // SAFETY: the caller's promise.
+        let case = unsafe { case_of(params, point, polygon) }?;
+        *out = match api::detect_time(&case) {
+            EntryTime::Never => PgEntryTime {
+                kind: PG_ENTRY_NEVER,
+                lo: f64::NAN,
+                hi: f64::NAN,
+            },
+            EntryTime::Enters { lo, hi } => PgEntryTime {
+                kind: PG_ENTRY_ENTERS,
+                lo,
+                hi,
+            },
+            EntryTime::Possible { lo, hi } => PgEntryTime {
+                kind: PG_ENTRY_POSSIBLE,
+                lo,
+                hi,
+            },
+        };
+        Ok(())
+    })
+}
+
+/// Every point against every polygon (paper A §II.H, §II.I, §III per pair, behind a
+/// broad phase that never drops a pair paper A detects; across threads): exactly the
+/// pairs `pg_detect` answers detected, sorted by (point, polygon). A batch is all 2D or
+/// all 3D (`points[i].has_z` all zero and `polygons->slabs` NULL, or the reverse).
+///
+/// Ownership: the library allocates nothing the caller frees. It writes at most `cap`
+/// hits into the caller's `hits` (NULL allowed when `cap` is 0) and the total number of
+/// hits into `*n_hits`. When the total exceeds `cap`, the first `cap` hits (in order) are
+/// written and the status is `PG_ERR_CAPACITY`: call again with `cap >= *n_hits` (at
+/// most `n_points * polygons->count` hits exist). So a truncated answer is never a
+/// `PG_OK`.
+///
+/// Returns `PG_OK`, `PG_ERR_CAPACITY`, or another `PG_ERR_*` code with a message naming
+/// the element (`polygons[2].vertices: clockwise order …`, `points[0].pos: …`); on
+/// those `*n_hits` is 0.
+///
+/// # Safety
+/// Each pointer is NULL or valid for the call: `points` holds `n_points` points,
+/// `polygons->offsets` `polygons->count + 1` offsets, `polygons->vertices` (and
+/// `velocities` unless NULL) `offsets[count]` elements, `polygons->slabs` (unless
+/// NULL) `count` slabs, `hits` room for `cap` hits. Nothing is kept.
+#[no_mangle]
+pub unsafe extern "C" fn pg_detect_batch(
+    params: *const PgParams,
+    points: *const PgPoint,
+    n_points: usize,
+    polygons: *const PgPolygons,
+    hits: *mut PgHit,
+    cap: usize,
+    n_hits: *mut usize,
+) -> c_int {
+    if !n_hits.is_aligned() {
+        return guard(|| Err(Failure::misaligned("n_hits")));
+    }
+    // SAFETY: aligned, and the caller's promise.
+    let n_hits = match unsafe { n_hits.as_mut() } {
+        Some(n) => n,
+        None => return guard(|| Err(Failure::null("n_hits"))),
+    };
+    *n_hits = 0;
+    guard(|| {
+        // SAFETY (this block): the caller's promise of valid pointers and lengths.
+        let params = unsafe { deref(params, "params") }?;
+        let polys = unsafe { deref(polygons, "polygons") }?;
+        let points = unsafe { slice_of(points, n_points, "points") }?;
+        if cap > 0 && hits.is_null() {
+            return Err(Failure::null("hits"));
+        }
+        if cap > 0 && !hits.is_aligned() {
+            return Err(Failure::misaligned("hits"));
+        }
+        let offsets_len = polys
+            .count
+            .checked_add(1)
+            .ok_or_else(|| Failure::new(PG_ERR_WRONG_LENGTH, "polygons.count: too large".into()))?;
+        let offsets = unsafe { slice_of(polys.offsets, offsets_len, "polygons.offsets") }?;
+        if offsets[0] != 0 {
+            return Err(Failure::new(
+                PG_ERR_WRONG_LENGTH,
+                format!("polygons.offsets[0]: {}, 0 expected", offsets[0]),
+            ));
+        }
+        if let Some(i) = (1..offsets.len()).find(|&i| offsets[i] < offsets[i - 1]) {
+            return Err(Failure::new(
+                PG_ERR_WRONG_LENGTH,
+                format!(
+                    "polygons.offsets[{i}]: {} is less than offsets[{}] = {}",
+                    offsets[i],
+                    i - 1,
+                    offsets[i - 1]
+                ),
+            ));
+        }
+        let total = offsets[polys.count];
+        let vertices = unsafe { slice_of(polys.vertices, total, "polygons.vertices") }?;
+        let velocities = if polys.velocities.is_null() {
+            None
+        } else {
+            Some(unsafe { slice_of(polys.velocities, total, "polygons.velocities") }?)
+        };
+        let slabs = if polys.slabs.is_null() {
+            None
+        } else {
+            Some(unsafe { slice_of(polys.slabs, polys.count, "polygons.slabs") }?)
+        };
+        let p = params_of(params)?;
+        let pts = points
+            .iter()
+            .enumerate()
+            .map(|(i, q)| {
+                point_of(q).map_err(|e| Failure::case(e, Some(("point.", format!("points[{i}].")))))
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        let mut polygons = Vec::with_capacity(polys.count);
+        for i in 0..polys.count {
+            let r = offsets[i]..offsets[i + 1];
+            let poly = polygon_of(
+                &vertices[r.clone()],
+                velocities.map(|v| &v[r]),
+                slabs.map(|s| &s[i]),
+            )
+            .map_err(|e| Failure::case(e, Some(("polygon.", format!("polygons[{i}].")))))?;
+            polygons.push(poly);
+        }
+        let found = batch::detect_batch(params.lookahead, &pts, &polygons, &p)
+            .map_err(|e| Failure::case(e, None))?;
+        let written = found.len().min(cap);
+        for (k, h) in found.iter().take(written).enumerate() {
+            // SAFETY: k < cap, and `hits` holds `cap` elements (non-NULL as cap > 0).
+            unsafe {
+                hits.add(k).write(PgHit {
+                    point: h.point,
+                    polygon: h.polygon,
+                    kind: kind_code(h.kind),
+                    method: method_code(h.method),
+                })
+            };
+        }
+        *n_hits = found.len();
+        if found.len() > cap {
+            return Err(Failure::new(
+                PG_ERR_CAPACITY,
+                format!(
+                    "hits: {} hits, room for {cap}; the first {cap} are written, call again with cap >= {}",
+                    found.len(),
+                    found.len()
+                ),
+            ));
+        }
+        Ok(())
+    })
+}
+
+/// Copies this thread's message about its last failed call (empty after a successful
+/// one) into `buf` as a NUL-terminated UTF-8 string: the field first, as in the case
+/// format of docs/cases.md (`polygon.vertices: clockwise order …`). (Extends the
+/// engine's typed errors, polyguard::error, to C.)
+///
+/// Returns `PG_OK`; `PG_ERR_CAPACITY` when the message was cut to fit `len` bytes (at
+/// a character boundary, still NUL-terminated when `len > 0`); `PG_ERR_NULL_POINTER`
+/// when `buf` is NULL and `len > 0`. It does not change the message itself.
+///
+/// # Safety
+/// `buf` is NULL or points to `len` writable bytes.
+#[no_mangle]
+pub unsafe extern "C" fn pg_last_error_message(buf: *mut c_char, len: usize) -> c_int {
+    let caught = catch_unwind(AssertUnwindSafe(|| {
+        LAST_ERROR.with(|m| {
+            let m = m.borrow();
+            if len == 0 {
+                return if m.is_empty() { PG_OK } else { PG_ERR_CAPACITY };
+            }
+            if buf.is_null() {
+                return PG_ERR_NULL_POINTER;
+            }
+            let mut n = m.len().min(len - 1);
+            while !m.is_char_boundary(n) {
+                n -= 1;
+            }
+            // SAFETY: `buf` holds `len` > n bytes (the caller's promise).
+            unsafe {
+                core::ptr::copy_nonoverlapping(m.as_ptr(), buf.cast::<u8>(), n);
+                buf.add(n).write(0);
+            }
+            if n < m.len() {
+                PG_ERR_CAPACITY
+            } else {
+                PG_OK
+            }
+        })
+    }));
+    caught.unwrap_or(PG_ERR_PANIC)
+}
+
+/// The name of a status code (`"PG_OK"`, `"PG_ERR_CLOCKWISE"`, …; `"unknown"` for any
+/// other value), as a NUL-terminated string in static storage: never freed, never NULL.
+/// For logs beside `pg_last_error_message`. (Extends this interface's status codes;
+/// no paper section.)
+#[no_mangle]
+pub extern "C" fn pg_status_name(status: c_int) -> *const c_char {
+    let s: &'static [u8] = match status {
+        PG_OK => b"PG_OK\0",
+        PG_ERR_NULL_POINTER => b"PG_ERR_NULL_POINTER\0",
+        PG_ERR_NOT_FINITE => b"PG_ERR_NOT_FINITE\0",
+        PG_ERR_TOO_FEW_VERTICES => b"PG_ERR_TOO_FEW_VERTICES\0",
+        PG_ERR_WRONG_LENGTH => b"PG_ERR_WRONG_LENGTH\0",
+        PG_ERR_CLOCKWISE => b"PG_ERR_CLOCKWISE\0",
+        PG_ERR_SELF_INTERSECTING => b"PG_ERR_SELF_INTERSECTING\0",
+        PG_ERR_ZERO_AREA => b"PG_ERR_ZERO_AREA\0",
+        PG_ERR_DIMENSION_MISMATCH => b"PG_ERR_DIMENSION_MISMATCH\0",
+        PG_ERR_BAD_PARAMETER => b"PG_ERR_BAD_PARAMETER\0",
+        PG_ERR_SLAB_INVERTED => b"PG_ERR_SLAB_INVERTED\0",
+        PG_ERR_CAPACITY => b"PG_ERR_CAPACITY\0",
+        PG_ERR_PANIC => b"PG_ERR_PANIC\0",
+        PG_ERR_INVALID => b"PG_ERR_INVALID\0",
+        _ => b"unknown\0",
+    };
+    s.as_ptr().cast()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn message() -> String {
+        let mut buf = [0 as c_char; 256];
+        // SAFETY: buf holds 256 bytes.
+        let rc = unsafe { pg_last_error_message(buf.as_mut_ptr(), buf.len()) };
+        assert_eq!(rc, PG_OK);
+        // SAFETY: NUL-terminated by pg_last_error_message.
+        unsafe { std::ffi::CStr::from_ptr(buf.as_ptr()) }
+            .to_str()
+            .unwrap()
+            .to_owned()
+    }
+
+    /// A panic inside an entry point's body comes back as PG_ERR_PANIC with its message,
+    /// not as an unwind (no input reaches a panic today, so the guard is tested alone).
+    #[test]
+    fn a_panic_becomes_a_status() {
+        let rc = guard(|| panic!("boom {}", 7));
+        assert_eq!(rc, PG_ERR_PANIC);
+        let m = message();
+        assert!(
+            m.contains("boom 7") && m.starts_with("internal error"),
+            "{m}"
+        );
+        let rc = guard(|| std::panic::panic_any(42u8));
+        assert_eq!(rc, PG_ERR_PANIC);
+        assert!(message().contains("no message"));
+        // and the next successful call clears it
+        assert_eq!(guard(|| Ok(())), PG_OK);
+        assert_eq!(message(), "");
+    }
+
+    /// The message is per thread: a failure on one thread leaves another's message as
+    /// it was (the header promises it).
+    #[test]
+    fn the_message_is_per_thread() {
+        // SAFETY: NULL `out` is allowed; it is the failure under test.
+        assert_eq!(
+            unsafe { pg_params_default(core::ptr::null_mut()) },
+            PG_ERR_NULL_POINTER
+        );
+        assert_eq!(message(), "out: NULL pointer");
+        let other = std::thread::spawn(|| {
+            let before = message();
+            let mut p = PgParams::default();
+            // SAFETY: a valid `out`.
+            let rc = unsafe { pg_params_default(&mut p) };
+            (before, rc, message())
+        })
+        .join()
+        .unwrap();
+        assert_eq!(other, (String::new(), PG_OK, String::new()));
+        assert_eq!(message(), "out: NULL pointer");
+    }
+
+    /// A misaligned pointer is refused with its name, never read.
+    #[test]
+    fn a_misaligned_pointer_is_refused() {
+        let bytes = [0u8; 64];
+        let params = bytes.as_ptr().wrapping_add(1).cast::<PgParams>();
+        let mut out = PgDetection::default();
+        // SAFETY: the misaligned pointer is checked before any read.
+        let rc = unsafe { pg_detect(params, core::ptr::null(), core::ptr::null(), &mut out) };
+        assert_eq!(rc, PG_ERR_INVALID);
+        assert!(
+            message().starts_with("params: misaligned pointer"),
+            "{}",
+            message()
+        );
+        assert_eq!(out.detected, 1);
+    }
+
+    /// Every status has its own name (no two codes share one, none is "unknown").
+    #[test]
+    fn status_names_are_distinct() {
+        let codes = [
+            PG_OK,
+            PG_ERR_NULL_POINTER,
+            PG_ERR_NOT_FINITE,
+            PG_ERR_TOO_FEW_VERTICES,
+            PG_ERR_WRONG_LENGTH,
+            PG_ERR_CLOCKWISE,
+            PG_ERR_SELF_INTERSECTING,
+            PG_ERR_ZERO_AREA,
+            PG_ERR_DIMENSION_MISMATCH,
+            PG_ERR_BAD_PARAMETER,
+            PG_ERR_SLAB_INVERTED,
+            PG_ERR_CAPACITY,
+            PG_ERR_PANIC,
+            PG_ERR_INVALID,
+        ];
+        let names: std::collections::HashSet<String> = codes
+            .iter()
+            .map(|&c| {
+                // SAFETY: static NUL-terminated strings.
+                unsafe { std::ffi::CStr::from_ptr(pg_status_name(c)) }
+                    .to_str()
+                    .unwrap()
+                    .to_owned()
+            })
+            .collect();
+        assert_eq!(names.len(), codes.len());
+        assert!(!names.contains("unknown"));
+    }
+}

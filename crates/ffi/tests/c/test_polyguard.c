@@ -1,0 +1,514 @@
+/*
+ * The C interface of polyguard, tested from C (crates/ffi/tests/run_c_tests.sh builds
+ * and runs it against the static and the shared library).
+ *
+ * 1. The seven cases of examples/cases.jsonl, embedded below: each answer is checked
+ *    against the truth worked out by hand in its comment (does the point enter, and at
+ *    what time), and the method against paper A's dispatch rule (section II.F, III).
+ *    With --cli FILE (the output of `polyguard detect --time examples/cases.jsonl`),
+ *    every field is also compared with the command-line tool's line, floats bit for bit.
+ * 2. Bad input: status codes, the message naming the field, the conservative answer
+ *    written on an error, message truncation.
+ * 3. pg_detect_batch against pg_detect on every pair, the capacity protocol, errors
+ *    naming the element.
+ *
+ * Exit status 0 when every check passes; each failure is printed.
+ */
+#include "polyguard.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int failures = 0;
+static int checks = 0;
+
+#define CHECK(cond, ...)                                                   \
+    do {                                                                   \
+        checks++;                                                          \
+        if (!(cond)) {                                                     \
+            failures++;                                                    \
+            fprintf(stderr, "FAIL %s:%d: %s: ", __FILE__, __LINE__, #cond); \
+            fprintf(stderr, __VA_ARGS__);                                  \
+            fprintf(stderr, "\n");                                         \
+        }                                                                  \
+    } while (0)
+
+static const char *last_message(void) {
+    static char buf[512];
+    int rc = pg_last_error_message(buf, sizeof buf);
+    CHECK(rc == PG_OK, "pg_last_error_message: %s", pg_status_name(rc));
+    return buf;
+}
+
+static int starts_with(const char *s, const char *prefix) {
+    return strncmp(s, prefix, strlen(prefix)) == 0;
+}
+
+/* ---- 1. the example cases ---------------------------------------------------- */
+
+static const pg_vec2 SQUARE[4] = {{0.0, 0.0}, {2.0, 0.0}, {2.0, 2.0}, {0.0, 2.0}};
+static const pg_vec2 EAST[4] = {{1.0, 0.0}, {1.0, 0.0}, {1.0, 0.0}, {1.0, 0.0}};
+static const pg_vec2 TRIANGLE[3] = {{0.0, 0.0}, {2.0, 0.0}, {1.0, 2.0}};
+static const pg_vec2 BIG[4] = {{0.0, 0.0}, {10.0, 0.0}, {10.0, 10.0}, {0.0, 10.0}};
+static const pg_vec2 GROW[4] = {{-0.1, -0.05}, {0.1, -0.05}, {0.1, 0.05}, {-0.1, 0.05}};
+
+struct example {
+    const char *id;
+    double lookahead, buff, fac;
+    pg_point point;
+    pg_polygon polygon;
+    /* the truth, by hand: does the point enter the closed polygon (and slab), when */
+    int enters;
+    double entry;
+    int method;
+};
+
+#define P2(x, y, vx, vy) {{x, y}, {vx, vy}, 0, 0.0, 0.0}
+#define P3(x, y, z, vx, vy, vz) {{x, y}, {vx, vy}, 1, z, vz}
+#define POLY(v, vel, n) {v, vel, n, 0, {0.0, 0.0, 0.0}}
+#define POLY3(v, vel, n, b, t, vz) {v, vel, n, 1, {b, t, vz}}
+
+static const struct example EXAMPLES[] = {
+    /* The square's x-range is [t, 2 + t], the point's x is 5: inside for t in [3, 5];
+       its y = -3 + t reaches 0 at t = 3. First contact at the corner (5, 0), t = 3. */
+    {"static-hit", 10.0, 0.01, 0.0001, P2(5.0, -3.0, 0.0, 1.0), POLY(SQUARE, EAST, 4), 1, 3.0,
+     PG_METHOD_SAME_2D},
+    /* The same until T = 2.5: y <= -0.5 while the square keeps y >= 0, 50 BUFFs away. */
+    {"static-miss", 2.5, 0.01, 0.0001, P2(5.0, -3.0, 0.0, 1.0), POLY(SQUARE, EAST, 4), 0, 0.0,
+     PG_METHOD_SAME_2D},
+    /* (1, 1) is inside the resting triangle from the start. */
+    {"at-rest-inside", 1.0, 0.01, 0.0001, P2(1.0, 1.0, 0.0, 0.0), POLY(TRIANGLE, NULL, 3), 1, 0.0,
+     PG_METHOD_SAME_2D},
+    /* The left edge is x = -0.1 t for y in [-0.05 t, 10 + 0.05 t], which holds y = 5;
+       the point's x = -50 + 0.5 t meets it when 0.6 t = 50: t = 83.33... */
+    {"warping-hit", 300.0, 0.01, 0.0001, P2(-50.0, 5.0, 0.5, 0.0), POLY(BIG, GROW, 4), 1,
+     50.0 / 0.6, PG_METHOD_DIFF_2D},
+    /* y = 50 while the top edge stays below 10 + 0.05 * 300 = 25. */
+    {"warping-miss", 300.0, 0.01, 0.0001, P2(-50.0, 50.0, 0.5, 0.0), POLY(BIG, GROW, 4), 0, 0.0,
+     PG_METHOD_DIFF_2D},
+    /* x = -3 + t is in [0, 2] for t in [3, 5]; z = 20 - 2 t reaches the top 10 at t = 5,
+       when the point is on the right edge: a touch at t = 5 (tangent in time). */
+    {"3d-descends-in", 10.0, 0.01, 0.0001, P3(-3.0, 1.0, 20.0, 1.0, 0.0, -2.0),
+     POLY3(SQUARE, NULL, 4, 0.0, 10.0, 0.0), 1, 5.0, PG_METHOD_3D},
+    /* z = 20 - t is 15 to 17 while x is in [0, 2]: 5 above the top. */
+    {"3d-passes-over", 10.0, 0.01, 0.0001, P3(-3.0, 1.0, 20.0, 1.0, 0.0, -1.0),
+     POLY3(SQUARE, NULL, 4, 0.0, 10.0, 0.0), 0, 0.0, PG_METHOD_3D},
+};
+#define N_EXAMPLES (sizeof EXAMPLES / sizeof EXAMPLES[0])
+
+static pg_params params_for(double lookahead, double buff, double fac) {
+    pg_params p;
+    int rc = pg_params_default(&p);
+    CHECK(rc == PG_OK, "pg_params_default: %s", pg_status_name(rc));
+    p.lookahead = lookahead;
+    p.buff = buff;
+    p.fac = fac;
+    return p;
+}
+
+static const char *method_name(int m) {
+    switch (m) {
+    case PG_METHOD_SAME_2D: return "detect_same_2d";
+    case PG_METHOD_DIFF_2D: return "detect_diff_2d";
+    case PG_METHOD_3D: return "detect_3d";
+    default: return "none";
+    }
+}
+
+static const char *entry_name(int k) {
+    switch (k) {
+    case PG_ENTRY_NEVER: return "never";
+    case PG_ENTRY_ENTERS: return "enters";
+    case PG_ENTRY_POSSIBLE: return "possible";
+    default: return "?";
+    }
+}
+
+/* The text after "key": in a JSON line (the CLI's flat answers), or NULL. */
+static const char *json_value(const char *line, const char *key) {
+    char pattern[64];
+    const char *at;
+    snprintf(pattern, sizeof pattern, "\"%s\":", key);
+    at = strstr(line, pattern);
+    return at ? at + strlen(pattern) : NULL;
+}
+
+static int json_is(const char *line, const char *key, const char *literal) {
+    const char *v = json_value(line, key);
+    return v != NULL && strncmp(v, literal, strlen(literal)) == 0;
+}
+
+/* The CLI's line agrees with this answer in every field; its floats read back to the
+   same doubles (Rust prints the shortest string that reads back exactly). */
+static void compare_with_cli(const char *line, const struct example *e, const pg_detection *d,
+                             const pg_entry_time *t) {
+    char quoted[96];
+    const char *v;
+    snprintf(quoted, sizeof quoted, "\"%s\"", e->id);
+    CHECK(json_is(line, "id", quoted), "%s: the CLI's line is another case: %s", e->id, line);
+    CHECK(json_is(line, "detected", d->detected ? "true" : "false"), "%s: detected", e->id);
+    CHECK(json_is(line, "kind", d->kind == PG_KIND_EXACT ? "\"exact\"" : "\"conservative\""),
+          "%s: kind", e->id);
+    snprintf(quoted, sizeof quoted, "\"%s\"", method_name(d->method));
+    CHECK(json_is(line, "decided_by", quoted), "%s: decided_by", e->id);
+    CHECK(json_is(line, "well_formed", d->well_formed ? "true" : "false"), "%s: well_formed",
+          e->id);
+    snprintf(quoted, sizeof quoted, "\"%s\"", entry_name(t->kind));
+    CHECK(json_is(line, "entry", quoted), "%s: entry", e->id);
+    if (t->kind == PG_ENTRY_NEVER) {
+        CHECK(json_value(line, "entry_lo") == NULL, "%s: the CLI gives entry_lo", e->id);
+        return;
+    }
+    v = json_value(line, "entry_lo");
+    CHECK(v != NULL && strtod(v, NULL) == t->lo, "%s: entry_lo %.17g vs the CLI's %s", e->id,
+          t->lo, v ? v : "(none)");
+    v = json_value(line, "entry_hi");
+    CHECK(v != NULL && strtod(v, NULL) == t->hi, "%s: entry_hi %.17g vs the CLI's %s", e->id,
+          t->hi, v ? v : "(none)");
+}
+
+static void test_examples(FILE *cli) {
+    size_t i;
+    char line[1024];
+    for (i = 0; i < N_EXAMPLES; i++) {
+        const struct example *e = &EXAMPLES[i];
+        pg_params p = params_for(e->lookahead, e->buff, e->fac);
+        pg_detection d;
+        pg_entry_time t;
+        int rc = pg_detect(&p, &e->point, &e->polygon, &d);
+        CHECK(rc == PG_OK, "%s: pg_detect %s: %s", e->id, pg_status_name(rc), last_message());
+        /* far from every threshold (no contact at all, or a clear entry): the truth is
+           paper A's answer, and every comparison is decidable */
+        CHECK(d.detected == e->enters, "%s: detected %d, the truth %d", e->id, d.detected,
+              e->enters);
+        CHECK(d.kind == PG_KIND_EXACT, "%s: kind %d", e->id, d.kind);
+        CHECK(d.method == e->method, "%s: method %s, paper A's dispatch %s", e->id,
+              method_name(d.method), method_name(e->method));
+        CHECK(d.well_formed == 1 && d.well_formed_rule == 0, "%s: well_formed %d rule %d",
+              e->id, d.well_formed, d.well_formed_rule);
+
+        rc = pg_detect_time(&p, &e->point, &e->polygon, &t);
+        CHECK(rc == PG_OK, "%s: pg_detect_time %s: %s", e->id, pg_status_name(rc),
+              last_message());
+        if (e->enters) {
+            CHECK(t.kind == PG_ENTRY_ENTERS || t.kind == PG_ENTRY_POSSIBLE,
+                  "%s: entry %s, the truth enters", e->id, entry_name(t.kind));
+            CHECK(0.0 <= t.lo && t.lo <= e->entry && e->entry <= t.hi && t.hi <= e->lookahead,
+                  "%s: [%.17g, %.17g] misses the entry %.17g", e->id, t.lo, t.hi, e->entry);
+            /* an enclosure, not a guess: at most a few 2^-36 T wide when certified */
+            if (t.kind == PG_ENTRY_ENTERS)
+                CHECK(t.hi - t.lo <= 1e-9 * e->lookahead, "%s: [%.17g, %.17g] is wide", e->id,
+                      t.lo, t.hi);
+        } else {
+            CHECK(t.kind == PG_ENTRY_NEVER, "%s: entry %s, the truth never", e->id,
+                  entry_name(t.kind));
+            CHECK(isnan(t.lo) && isnan(t.hi), "%s: never has NaN bounds", e->id);
+        }
+        if (cli != NULL) {
+            if (fgets(line, sizeof line, cli) == NULL) {
+                CHECK(0, "%s: the CLI's output ends early", e->id);
+            } else {
+                compare_with_cli(line, e, &d, &t);
+            }
+        }
+    }
+    if (cli != NULL)
+        CHECK(fgets(line, sizeof line, cli) == NULL,
+              "the CLI answers more cases than the %u embedded: %s", (unsigned)N_EXAMPLES,
+              line);
+}
+
+/* ---- 2. bad input ------------------------------------------------------------- */
+
+static void expect_error(int rc, int code, const char *prefix, const char *what) {
+    const char *m = last_message();
+    CHECK(rc == code, "%s: status %s, %s expected (%s)", what, pg_status_name(rc),
+          pg_status_name(code), m);
+    CHECK(starts_with(m, prefix), "%s: message \"%s\" does not start with \"%s\"", what, m,
+          prefix);
+}
+
+static void test_bad_input(void) {
+    pg_params p = params_for(10.0, 0.01, 0.0001);
+    pg_point pt = P2(5.0, -3.0, 0.0, 1.0);
+    pg_polygon sq = POLY(SQUARE, NULL, 4);
+    pg_detection d;
+    pg_entry_time t;
+    pg_vec2 ring[4];
+    pg_polygon bad;
+    int rc;
+    char small[10];
+
+    rc = pg_detect(&p, NULL, &sq, &d);
+    expect_error(rc, PG_ERR_NULL_POINTER, "point: NULL pointer", "NULL point");
+    CHECK(d.detected == 1 && d.kind == PG_KIND_CONSERVATIVE && d.method == PG_METHOD_NONE,
+          "an error still writes the conservative answer");
+    expect_error(pg_detect(NULL, &pt, &sq, &d), PG_ERR_NULL_POINTER, "params: NULL pointer",
+                 "NULL params");
+    expect_error(pg_detect(&p, &pt, NULL, &d), PG_ERR_NULL_POINTER, "polygon: NULL pointer",
+                 "NULL polygon");
+    CHECK(pg_detect(&p, &pt, &sq, NULL) == PG_ERR_NULL_POINTER, "NULL out");
+    bad = sq;
+    bad.vertices = NULL;
+    expect_error(pg_detect(&p, &pt, &bad, &d), PG_ERR_NULL_POINTER,
+                 "polygon.vertices: NULL pointer", "NULL vertices");
+
+    /* clockwise: the square listed backwards */
+    ring[0] = SQUARE[3]; ring[1] = SQUARE[2]; ring[2] = SQUARE[1]; ring[3] = SQUARE[0];
+    bad = sq;
+    bad.vertices = ring;
+    expect_error(pg_detect(&p, &pt, &bad, &d), PG_ERR_CLOCKWISE,
+                 "polygon.vertices: clockwise order", "clockwise");
+
+    /* NaN in vertex 2's y */
+    memcpy(ring, SQUARE, sizeof ring);
+    ring[2].y = nan("");
+    expect_error(pg_detect(&p, &pt, &bad, &d), PG_ERR_NOT_FINITE,
+                 "polygon.vertices[2][1]: not a finite number", "NaN vertex");
+    rc = pg_detect_time(&p, &pt, &bad, &t);
+    expect_error(rc, PG_ERR_NOT_FINITE, "polygon.vertices[2][1]", "NaN vertex, time");
+    CHECK(t.kind == PG_ENTRY_POSSIBLE && t.lo == 0.0 && isinf(t.hi),
+          "an error's entry time is possible on [0, inf]");
+
+    pt.vel.x = INFINITY;
+    expect_error(pg_detect(&p, &pt, &sq, &d), PG_ERR_NOT_FINITE, "point.vel", "infinite speed");
+    pt.vel.x = 0.0;
+
+    /* a bow tie: edges 0-1 and 2-3 cross */
+    ring[0].x = 0.0; ring[0].y = 0.0; ring[1].x = 4.0; ring[1].y = 4.0;
+    ring[2].x = 4.0; ring[2].y = 0.0; ring[3].x = 0.0; ring[3].y = 4.0;
+    expect_error(pg_detect(&p, &pt, &bad, &d), PG_ERR_SELF_INTERSECTING,
+                 "polygon.vertices: edges 0", "bow tie");
+
+    bad = sq;
+    bad.n = 2;
+    expect_error(pg_detect(&p, &pt, &bad, &d), PG_ERR_TOO_FEW_VERTICES,
+                 "polygon.vertices: 2 points, at least 3 are needed", "two vertices");
+
+    p.buff = 0.0;
+    expect_error(pg_detect(&p, &pt, &sq, &d), PG_ERR_BAD_PARAMETER, "buff: 0 is not > 0",
+                 "zero buff");
+    p.buff = 0.01;
+    p.lookahead = -1.0;
+    expect_error(pg_detect(&p, &pt, &sq, &d), PG_ERR_BAD_PARAMETER, "lookahead", "negative T");
+    p.lookahead = 10.0;
+    p.fac = 1.0;
+    expect_error(pg_detect(&p, &pt, &sq, &d), PG_ERR_BAD_PARAMETER, "fac", "fac 1");
+    p.fac = 0.0001;
+    p.kappa_deg = nan("");
+    expect_error(pg_detect(&p, &pt, &sq, &d), PG_ERR_NOT_FINITE, "kappa", "NaN kappa");
+    p.kappa_deg = 5.0;
+    {
+        pg_params unset;
+        pg_params_default(&unset);
+        expect_error(pg_detect(&unset, &pt, &sq, &d), PG_ERR_BAD_PARAMETER, "buff",
+                     "the defaults without buff");
+    }
+
+    pt.has_z = 1;
+    expect_error(pg_detect(&p, &pt, &sq, &d), PG_ERR_DIMENSION_MISMATCH,
+                 "polygon.bottom: 2D and 3D mixed", "3D point, 2D polygon");
+    pt.has_z = 0;
+    bad = sq;
+    bad.has_slab = 1;
+    bad.slab.bottom = 0.0;
+    bad.slab.top = 10.0;
+    expect_error(pg_detect(&p, &pt, &bad, &d), PG_ERR_DIMENSION_MISMATCH, "point.pos",
+                 "2D point, 3D polygon");
+    bad.slab.bottom = 11.0;
+    pt.has_z = 1;
+    expect_error(pg_detect(&p, &pt, &bad, &d), PG_ERR_SLAB_INVERTED, "polygon.top",
+                 "inverted slab");
+    pt.has_z = 0;
+
+    /* the message is cut to the buffer, NUL-terminated, and says so */
+    pg_detect(&p, NULL, &sq, &d);
+    rc = pg_last_error_message(small, sizeof small);
+    CHECK(rc == PG_ERR_CAPACITY && strlen(small) == sizeof small - 1,
+          "truncated message: %s, \"%s\"", pg_status_name(rc), small);
+    CHECK(pg_last_error_message(NULL, 4) == PG_ERR_NULL_POINTER, "NULL message buffer");
+    /* a successful call clears it */
+    CHECK(pg_detect(&p, &pt, &sq, &d) == PG_OK, "a good case after the bad ones");
+    CHECK(strcmp(last_message(), "") == 0, "the message after success: %s", last_message());
+    CHECK(strcmp(pg_status_name(PG_ERR_CLOCKWISE), "PG_ERR_CLOCKWISE") == 0, "status name");
+    CHECK(strcmp(pg_status_name(12345), "unknown") == 0, "unknown status name");
+}
+
+/* ---- 3. batch ----------------------------------------------------------------- */
+
+#define NPOLY 5
+#define NPT 12
+
+/* Five polygons in a row along x (at rest, drifting, warping) and twelve points that
+   cross, graze or miss them. */
+static pg_vec2 VERTS[64];
+static pg_vec2 VELS[64];
+static size_t OFFSETS[NPOLY + 1];
+static pg_point POINTS[NPT];
+
+static void build_batch(void) {
+    size_t k = 0;
+    int i;
+    for (i = 0; i < NPOLY; i++) {
+        double x = 10.0 * i;
+        size_t n = (i % 2 == 0) ? 4 : 3, j;
+        OFFSETS[i] = k;
+        if (n == 4) {
+            VERTS[k].x = x;       VERTS[k].y = 0.0;
+            VERTS[k + 1].x = x + 4.0; VERTS[k + 1].y = 0.0;
+            VERTS[k + 2].x = x + 4.0; VERTS[k + 2].y = 4.0;
+            VERTS[k + 3].x = x;       VERTS[k + 3].y = 4.0;
+        } else {
+            VERTS[k].x = x;       VERTS[k].y = 0.0;
+            VERTS[k + 1].x = x + 4.0; VERTS[k + 1].y = 0.0;
+            VERTS[k + 2].x = x + 2.0; VERTS[k + 2].y = 3.0;
+        }
+        for (j = 0; j < n; j++) {
+            /* polygon 0 rests, 1 drifts north, 2 grows about its corner 0, others drift */
+            VELS[k + j].x = (i == 2) ? 0.05 * (VERTS[k + j].x - x) : (i == 0 ? 0.0 : -0.2);
+            VELS[k + j].y = (i == 2) ? 0.05 * VERTS[k + j].y : (i == 1 ? 0.3 : 0.0);
+        }
+        k += n;
+    }
+    OFFSETS[NPOLY] = k;
+    for (i = 0; i < NPT; i++) {
+        POINTS[i].pos.x = -5.0 + 4.5 * i;
+        POINTS[i].pos.y = (i % 3 == 0) ? -6.0 : (i % 3 == 1 ? 8.0 : 2.0);
+        POINTS[i].vel.x = (i % 4 == 0) ? 1.0 : -0.5;
+        POINTS[i].vel.y = (i % 3 == 0) ? 1.0 : (i % 3 == 1 ? -0.6 : 0.0);
+        POINTS[i].has_z = 0;
+        POINTS[i].z = 0.0;
+        POINTS[i].vz = 0.0;
+    }
+}
+
+static void test_batch(void) {
+    pg_params p = params_for(12.0, 0.01, 0.0001);
+    pg_polygons polys;
+    pg_hit hits[NPOLY * NPT], first;
+    size_t n_hits = 0, expected = 0, k = 0;
+    int rc, i, j;
+
+    build_batch();
+    polys.vertices = VERTS;
+    polys.velocities = VELS;
+    polys.offsets = OFFSETS;
+    polys.count = NPOLY;
+    polys.slabs = NULL;
+
+    rc = pg_detect_batch(&p, POINTS, NPT, &polys, hits, NPOLY * NPT, &n_hits);
+    CHECK(rc == PG_OK, "pg_detect_batch: %s: %s", pg_status_name(rc), last_message());
+    /* exactly pg_detect's detected pairs, in (point, polygon) order, same kind, method */
+    for (i = 0; i < NPT; i++) {
+        for (j = 0; j < NPOLY; j++) {
+            pg_polygon one;
+            pg_detection d;
+            one.vertices = VERTS + OFFSETS[j];
+            one.velocities = VELS + OFFSETS[j];
+            one.n = OFFSETS[j + 1] - OFFSETS[j];
+            one.has_slab = 0;
+            rc = pg_detect(&p, &POINTS[i], &one, &d);
+            CHECK(rc == PG_OK, "pair (%d, %d): %s", i, j, last_message());
+            if (!d.detected)
+                continue;
+            expected++;
+            CHECK(k < n_hits && hits[k].point == (size_t)i && hits[k].polygon == (size_t)j,
+                  "pair (%d, %d) detected by pg_detect, not hit %u of the batch", i, j,
+                  (unsigned)k);
+            if (k < n_hits) {
+                CHECK(hits[k].kind == d.kind && hits[k].method == d.method,
+                      "pair (%d, %d): kind/method differ", i, j);
+                if (hits[k].point == (size_t)i && hits[k].polygon == (size_t)j)
+                    k++;
+            }
+        }
+    }
+    CHECK(n_hits == expected, "the batch has %u hits, pairwise %u", (unsigned)n_hits,
+          (unsigned)expected);
+    /* the workload is not trivial: some pairs hit, most do not */
+    CHECK(expected >= 3 && expected < NPOLY * NPT / 2, "%u hits of %d pairs",
+          (unsigned)expected, NPOLY * NPT);
+
+    /* the capacity protocol: ask for the count, then a truncated prefix */
+    rc = pg_detect_batch(&p, POINTS, NPT, &polys, NULL, 0, &n_hits);
+    CHECK(rc == PG_ERR_CAPACITY && n_hits == expected, "cap 0: %s, %u", pg_status_name(rc),
+          (unsigned)n_hits);
+    rc = pg_detect_batch(&p, POINTS, NPT, &polys, &first, 1, &n_hits);
+    CHECK(rc == PG_ERR_CAPACITY && n_hits == expected && first.point == hits[0].point &&
+              first.polygon == hits[0].polygon,
+          "cap 1: %s", pg_status_name(rc));
+    rc = pg_detect_batch(&p, POINTS, NPT, &polys, hits, expected, &n_hits);
+    CHECK(rc == PG_OK && n_hits == expected, "cap exact: %s", pg_status_name(rc));
+    /* empty lists: no hits, no error */
+    rc = pg_detect_batch(&p, NULL, 0, &polys, NULL, 0, &n_hits);
+    CHECK(rc == PG_OK && n_hits == 0, "no points: %s", pg_status_name(rc));
+
+    /* errors name the element */
+    {
+        pg_vec2 saved = VERTS[OFFSETS[2] + 1];
+        VERTS[OFFSETS[2] + 1] = VERTS[OFFSETS[2] + 3];
+        VERTS[OFFSETS[2] + 3] = saved; /* polygon 2 now runs 0, 3, 2, 1: clockwise */
+        rc = pg_detect_batch(&p, POINTS, NPT, &polys, hits, NPOLY * NPT, &n_hits);
+        expect_error(rc, PG_ERR_CLOCKWISE, "polygons[2].vertices: clockwise order",
+                     "batch, clockwise polygon 2");
+        CHECK(n_hits == 0, "an error's count is 0");
+        VERTS[OFFSETS[2] + 3] = VERTS[OFFSETS[2] + 1];
+        VERTS[OFFSETS[2] + 1] = saved;
+    }
+    POINTS[1].pos.y = nan("");
+    expect_error(pg_detect_batch(&p, POINTS, NPT, &polys, hits, NPOLY * NPT, &n_hits),
+                 PG_ERR_NOT_FINITE, "points[1].pos", "batch, NaN point 1");
+    POINTS[1].pos.y = 8.0;
+    {
+        size_t saved = OFFSETS[2];
+        OFFSETS[2] = OFFSETS[3] + 1;
+        expect_error(pg_detect_batch(&p, POINTS, NPT, &polys, hits, NPOLY * NPT, &n_hits),
+                     PG_ERR_WRONG_LENGTH, "polygons.offsets[3]", "batch, decreasing offsets");
+        OFFSETS[2] = saved;
+    }
+    POINTS[0].has_z = 1;
+    expect_error(pg_detect_batch(&p, POINTS, NPT, &polys, hits, NPOLY * NPT, &n_hits),
+                 PG_ERR_DIMENSION_MISMATCH, "point.pos", "batch, 2D and 3D points");
+    POINTS[0].has_z = 0;
+    expect_error(pg_detect_batch(&p, POINTS, NPT, &polys, NULL, 5, &n_hits),
+                 PG_ERR_NULL_POINTER, "hits: NULL pointer", "batch, NULL hits with cap 5");
+
+    /* 3D: the two 3D examples' points against their slab */
+    {
+        pg_point pts3[2] = {P3(-3.0, 1.0, 20.0, 1.0, 0.0, -2.0),
+                            P3(-3.0, 1.0, 20.0, 1.0, 0.0, -1.0)};
+        size_t offs[2] = {0, 4};
+        pg_slab slab = {0.0, 10.0, 0.0};
+        pg_polygons one = {SQUARE, NULL, offs, 1, &slab};
+        pg_params p3 = params_for(10.0, 0.01, 0.0001);
+        rc = pg_detect_batch(&p3, pts3, 2, &one, hits, 2, &n_hits);
+        CHECK(rc == PG_OK && n_hits == 1 && hits[0].point == 0 && hits[0].polygon == 0 &&
+                  hits[0].method == PG_METHOD_3D,
+              "3D batch: %s, %u hits", pg_status_name(rc), (unsigned)n_hits);
+    }
+}
+
+int main(int argc, char **argv) {
+    FILE *cli = NULL;
+    if (argc == 3 && strcmp(argv[1], "--cli") == 0) {
+        cli = fopen(argv[2], "r");
+        if (cli == NULL) {
+            fprintf(stderr, "cannot read %s\n", argv[2]);
+            return 2;
+        }
+    } else if (argc != 1) {
+        fprintf(stderr, "usage: %s [--cli FILE]  (FILE: polyguard detect --time output)\n",
+                argv[0]);
+        return 2;
+    }
+    test_examples(cli);
+    if (cli != NULL)
+        fclose(cli);
+    test_bad_input();
+    test_batch();
+    printf("%d checks, %d failed%s\n", checks, failures,
+           cli != NULL ? " (examples also compared with the CLI)" : "");
+    return failures == 0 ? 0 : 1;
+}

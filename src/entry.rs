@@ -669,6 +669,19 @@ mod tests {
         ]
     }
 
+    /// The point (x, y) moving at (vx, vy) against the polygon p at rest, in 2D.
+    fn at_rest(t: f64, s: [f64; 2], v: [f64; 2], p: &[Vect2]) -> EntryTime {
+        let still = vec![Vect2::ZERO; p.len()];
+        first_entry(
+            t,
+            Vect2::new(s[0], s[1]),
+            Vect2::new(v[0], v[1]),
+            p,
+            &still,
+            None,
+        )
+    }
+
     fn encloses(e: EntryTime, t: f64, width: f64) -> bool {
         matches!(e, EntryTime::Enters { lo, hi } if lo <= t && t <= hi && hi - lo <= width)
     }
@@ -677,34 +690,13 @@ mod tests {
     fn a_crossing_is_enclosed_tightly() {
         // The point (1, −3) moving up at 1 meets the square's bottom edge at t = 3.
         let p = square(2.0);
-        let e = first_entry(
-            10.0,
-            Vect2::new(1.0, -3.0),
-            Vect2::new(0.0, 1.0),
-            &p,
-            &[Vect2::ZERO; 4],
-            None,
-        );
+        let e = at_rest(10.0, [1.0, -3.0], [0.0, 1.0], &p);
         assert!(encloses(e, 3.0, 1e-9 * 10.0), "{e:?}");
         // Missing it by 0.5 to the right: certified never.
-        let e = first_entry(
-            10.0,
-            Vect2::new(2.5, -3.0),
-            Vect2::new(0.0, 1.0),
-            &p,
-            &[Vect2::ZERO; 4],
-            None,
-        );
+        let e = at_rest(10.0, [2.5, -3.0], [0.0, 1.0], &p);
         assert_eq!(e, EntryTime::Never);
         // Inside from the start.
-        let e = first_entry(
-            10.0,
-            Vect2::new(1.0, 1.0),
-            Vect2::new(5.0, 0.0),
-            &p,
-            &[Vect2::ZERO; 4],
-            None,
-        );
+        let e = at_rest(10.0, [1.0, 1.0], [5.0, 0.0], &p);
         assert_eq!(e, EntryTime::Enters { lo: 0.0, hi: 0.0 });
     }
 
@@ -735,14 +727,11 @@ mod tests {
             top: 10.0,
             vsp: 0.0,
         };
-        let e = first_entry(
-            10.0,
-            Vect2::new(1.0, 1.0),
-            Vect2::ZERO,
-            &p,
-            &[Vect2::ZERO; 4],
-            Some(z),
-        );
+        let hover = |z: Heights| {
+            let centre = Vect2::new(1.0, 1.0);
+            first_entry(10.0, centre, Vect2::ZERO, &p, &[Vect2::ZERO; 4], Some(z))
+        };
+        let e = hover(z);
         assert!(encloses(e, 5.0, 1e-9 * 10.0), "{e:?}");
         // Passing over it: never.
         let high = Heights {
@@ -750,15 +739,7 @@ mod tests {
             vz: 0.0,
             ..z
         };
-        let e = first_entry(
-            10.0,
-            Vect2::new(1.0, 1.0),
-            Vect2::ZERO,
-            &p,
-            &[Vect2::ZERO; 4],
-            Some(high),
-        );
-        assert_eq!(e, EntryTime::Never);
+        assert_eq!(hover(high), EntryTime::Never);
     }
 
     #[test]
@@ -768,14 +749,7 @@ mod tests {
         for k in [-1000, -600, -300, 0, 300, 600, 1000] {
             let c = libm::scalbn(1.0, k);
             let p: Vec<Vect2> = square(2.0).iter().map(|q| q.scale(c)).collect();
-            let e = first_entry(
-                10.0,
-                Vect2::new(c, -3.0 * c),
-                Vect2::new(0.0, c),
-                &p,
-                &[Vect2::ZERO; 4],
-                None,
-            );
+            let e = at_rest(10.0, [c, -3.0 * c], [0.0, c], &p);
             assert!(encloses(e, 3.0, 1e-9 * 10.0), "2^{k}: {e:?}");
         }
     }
@@ -785,14 +759,7 @@ mod tests {
         // Sliding along the bottom edge's line y = 0 from the left: on the boundary from
         // t = 1 (at the corner), which f64 cannot certify.
         let p = square(2.0);
-        let e = first_entry(
-            4.0,
-            Vect2::new(-1.0, 0.0),
-            Vect2::new(1.0, 0.0),
-            &p,
-            &[Vect2::ZERO; 4],
-            None,
-        );
+        let e = at_rest(4.0, [-1.0, 0.0], [1.0, 0.0], &p);
         match e {
             EntryTime::Possible { lo, hi } => assert!(lo <= 1.0 && hi == 4.0, "{e:?}"),
             EntryTime::Enters { lo, hi } => assert!(lo <= 1.0 && 1.0 <= hi, "{e:?}"),
@@ -805,23 +772,9 @@ mod tests {
         // The square with vertex 1 given twice: the zero edge is no contact.
         let mut p = square(2.0);
         p.insert(1, p[1]);
-        let e = first_entry(
-            10.0,
-            Vect2::new(5.0, -3.0),
-            Vect2::new(0.0, 1.0),
-            &p,
-            &[Vect2::ZERO; 5],
-            None,
-        );
+        let e = at_rest(10.0, [5.0, -3.0], [0.0, 1.0], &p);
         assert_eq!(e, EntryTime::Never);
-        let e = first_entry(
-            10.0,
-            Vect2::new(1.0, -3.0),
-            Vect2::new(0.0, 1.0),
-            &p,
-            &[Vect2::ZERO; 5],
-            None,
-        );
+        let e = at_rest(10.0, [1.0, -3.0], [0.0, 1.0], &p);
         assert!(encloses(e, 3.0, 1e-9 * 10.0), "{e:?}");
     }
 }

@@ -951,7 +951,14 @@ fn swept_boxes_apart(w: &Sweep, pi: Vect2, pj: Vect2, vi: Vect2, vj: Vect2, f: f
 /// 6u·(|e_x·w_y| + |e_y·w_x|) of the exact one (8u leaves room for its own roundings),
 /// and the norms within 2u relative (8u on the comparison).
 #[inline(always)]
-fn never_collapses(t0: f64, t1: f64, pi: Vect2, pj: Vect2, vi: Vect2, vj: Vect2) -> bool {
+pub(crate) fn never_collapses(
+    t0: f64,
+    t1: f64,
+    pi: Vect2,
+    pj: Vect2,
+    vi: Vect2,
+    vj: Vect2,
+) -> bool {
     let e = pj - pi;
     let w = vj - vi;
     let (p, q) = (e.x * w.y, e.y * w.x);

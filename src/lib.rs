@@ -31,6 +31,8 @@
 //! - `plain`: the uncertified f64 transcription of the paper (module `plain`), for
 //!   comparison.
 //! - `nalgebra`: conversions between [`Vect2`] and nalgebra's `Point2`/`Vector2`.
+//! - `parallel`: `batch::detect_batch` (N points against M polygons) across cores with
+//!   rayon; without it the same API runs on the calling thread.
 //!
 //! A plain dependency pulls `libm` and nothing else. Paper B, the command-line tool and
 //! the exact oracle are other crates (`polyguard-earth`, `polyguard-cli`,
@@ -76,6 +78,8 @@ pub struct ReadmeDoctests;
 #[cfg(feature = "std")]
 pub mod api;
 pub mod ball;
+#[cfg(feature = "std")]
+pub mod batch;
 pub mod contain;
 pub mod detect;
 #[cfg(feature = "std")]

@@ -97,30 +97,17 @@ pub fn parse_line_with(line: &str, line_no: usize, default_kappa_deg: f64) -> Pa
     let value: Value = match serde_json::from_str::<Strict>(line) {
         Ok(Strict(v)) => v,
         Err(e) => {
-            // serde_json places the error "at line 1 column C" of this one line: say
-            // "at column C" (the file's line is in the answer). A line that is JSON but
-            // for a repeated key still gives its id back.
-            let text = e.to_string();
-            let message = match text.find(" at line ") {
-                Some(i) => format!("{} at column {}", &text[..i], e.column()),
-                None => text,
-            };
-            // NaN and ±Infinity (which Python's json writes) are not JSON: read them as
-            // marked strings to name their field and keep the id.
-            let lenient = serde_json::from_str::<Value>(&mark_non_json_numbers(line)).ok();
+            // A line that is JSON but for a repeated key still gives its id back.
+            let (error, lenient) = syntax_failure(line, &e);
             let id = lenient
                 .as_ref()
                 .and_then(|v| v.get("id").cloned())
                 .filter(|v| !is_marked(v))
                 .unwrap_or_else(|| Value::from(line_no));
-            let marked = lenient
-                .as_ref()
-                .and_then(|v| first_marked(v, String::new()));
-            let case = match marked {
-                Some((field, literal)) => Err(CaseError::NotJsonNumber { field, literal }),
-                None => Err(CaseError::Syntax { message }),
+            return ParsedLine {
+                id,
+                case: Err(error),
             };
-            return ParsedLine { id, case };
         }
     };
     let Value::Object(obj) = value else {
@@ -139,6 +126,124 @@ pub fn parse_line_with(line: &str, line_no: usize, default_kappa_deg: f64) -> Pa
         id,
         case: case_from_object_with(&obj, default_kappa_deg),
     }
+}
+
+/// The case format (not a paper function): the error of a line that strict JSON reading
+/// refused, and the line read leniently (NaN and ±Infinity as marked strings) when that
+/// works, for its id.
+fn syntax_failure(line: &str, e: &serde_json::Error) -> (CaseError, Option<Value>) {
+    // serde_json places the error "at line 1 column C" of this one line: say "at column
+    // C" (the file's line is in the answer).
+    let text = e.to_string();
+    let message = match text.find(" at line ") {
+        Some(i) => format!("{} at column {}", &text[..i], e.column()),
+        None => text,
+    };
+    // NaN and ±Infinity (which Python's json writes) are not JSON: read them as marked
+    // strings to name their field.
+    let lenient = serde_json::from_str::<Value>(&mark_non_json_numbers(line)).ok();
+    let marked = lenient
+        .as_ref()
+        .and_then(|v| first_marked(v, String::new()));
+    let error = match marked {
+        Some((field, literal)) => CaseError::NotJsonNumber { field, literal },
+        None => CaseError::Syntax { message },
+    };
+    (error, lenient)
+}
+
+/// The case format's point and polygon objects, one per line, for batch detection
+/// (docs/batch.md; extends the case format of docs/cases.md): a line's JSON object read
+/// strictly (no key twice), a byte-order mark in front skipped.
+fn read_object(line: &str) -> Result<Map<String, Value>, CaseError> {
+    let line = line.strip_prefix('\u{feff}').unwrap_or(line);
+    let line = line.trim_end_matches(['\n', '\r']);
+    match serde_json::from_str::<Strict>(line) {
+        Ok(Strict(Value::Object(obj))) => Ok(obj),
+        Ok(Strict(_)) => Err(CaseError::Syntax {
+            message: "the line is JSON but not an object".into(),
+        }),
+        Err(e) => Err(syntax_failure(line, &e).0),
+    }
+}
+
+/// A batch's point line (docs/batch.md): the case format's `point` object, `pos` and
+/// `vel` of two numbers each (three with a height), errors named `point.…` as in a case.
+pub fn point_from_line(line: &str) -> Result<MovingPoint, CaseError> {
+    let obj = read_object(line)?;
+    let (pos, vel) = point_fields(&obj)?;
+    moving_point(&pos, &vel)
+}
+
+/// A batch's polygon line (docs/batch.md): the case format's `polygon` object
+/// (`vertices`, optional `velocities`, and `bottom`, `top`, `vz` for a slab), errors
+/// named `polygon.…` as in a case.
+pub fn polygon_from_line(line: &str) -> Result<MovingPolygon, CaseError> {
+    let obj = read_object(line)?;
+    let (vertices, velocities, slab) = polygon_fields(&obj)?;
+    moving_polygon(&vertices, &velocities, slab)
+}
+
+/// The case format's `point` object: `pos` and `vel`, unvalidated but for `pos`'s length.
+fn point_fields(point: &Map<String, Value>) -> Result<(Vec<f64>, Vec<f64>), CaseError> {
+    only_known(point, &POINT_KEYS, "point.")?;
+    let pos = numbers(get(point, "pos", "point.pos")?, "point.pos")?;
+    let vel = numbers(get(point, "vel", "point.vel")?, "point.vel")?;
+    if pos.len() != 2 && pos.len() != 3 {
+        return Err(CaseError::PointLength { found: pos.len() });
+    }
+    Ok((pos, vel))
+}
+
+/// The fields of the case format's `polygon` object: vertices, velocities (empty when
+/// absent), and the slab.
+type PolygonFields = (Vec<[f64; 2]>, Vec<[f64; 2]>, Option<[f64; 3]>);
+
+/// The case format's `polygon` object, unvalidated but for the lengths.
+fn polygon_fields(poly: &Map<String, Value>) -> Result<PolygonFields, CaseError> {
+    only_known(poly, &POLYGON_KEYS, "polygon.")?;
+    let vertices = points(
+        get(poly, "vertices", "polygon.vertices")?,
+        "polygon.vertices",
+    )?;
+    let velocities = match poly.get("velocities") {
+        None | Some(Value::Null) => vec![],
+        Some(v) => {
+            // given, it must have one per vertex: `[]` is not read as "at rest" (too few
+            // vertices is the first thing wrong when it applies, as RawCase::to_api says)
+            let vels = points(v, "polygon.velocities")?;
+            if vels.len() != vertices.len() && vertices.len() >= 3 {
+                return Err(CaseError::WrongLength {
+                    field: "polygon.velocities".into(),
+                    expected: vertices.len(),
+                    found: vels.len(),
+                    what: "velocities (one per vertex)",
+                });
+            }
+            vels
+        }
+    };
+    let slab_fields = ["bottom", "top", "vz"].map(|k| poly.get(k).filter(|v| !v.is_null()));
+    let slab = match slab_fields {
+        [None, None, None] => None,
+        [Some(b), Some(t), Some(z)] => Some([
+            number(b, "polygon.bottom")?,
+            number(t, "polygon.top")?,
+            number(z, "polygon.vz")?,
+        ]),
+        _ => {
+            let missing = ["bottom", "top", "vz"]
+                .iter()
+                .zip(slab_fields.iter())
+                .find(|(_, v)| v.is_none())
+                .map(|(k, _)| *k)
+                .unwrap_or("bottom");
+            return Err(CaseError::Missing {
+                field: format!("polygon.{missing}"),
+            });
+        }
+    };
+    Ok((vertices, velocities, slab))
 }
 
 /// The literals some writers put where JSON wants a number.
@@ -322,56 +427,9 @@ pub fn case_from_object_with(
     };
 
     let point = object(get(obj, "point", "point")?, "point")?;
-    only_known(point, &POINT_KEYS, "point.")?;
-    let pos = numbers(get(point, "pos", "point.pos")?, "point.pos")?;
-    let vel = numbers(get(point, "vel", "point.vel")?, "point.vel")?;
-    if pos.len() != 2 && pos.len() != 3 {
-        return Err(CaseError::PointLength { found: pos.len() });
-    }
-
+    let (pos, vel) = point_fields(point)?;
     let poly = object(get(obj, "polygon", "polygon")?, "polygon")?;
-    only_known(poly, &POLYGON_KEYS, "polygon.")?;
-    let vertices = points(
-        get(poly, "vertices", "polygon.vertices")?,
-        "polygon.vertices",
-    )?;
-    let velocities = match poly.get("velocities") {
-        None | Some(Value::Null) => vec![],
-        Some(v) => {
-            // given, it must have one per vertex: `[]` is not read as "at rest" (too few
-            // vertices is the first thing wrong when it applies, as RawCase::to_api says)
-            let vels = points(v, "polygon.velocities")?;
-            if vels.len() != vertices.len() && vertices.len() >= 3 {
-                return Err(CaseError::WrongLength {
-                    field: "polygon.velocities".into(),
-                    expected: vertices.len(),
-                    found: vels.len(),
-                    what: "velocities (one per vertex)",
-                });
-            }
-            vels
-        }
-    };
-    let slab_fields = ["bottom", "top", "vz"].map(|k| poly.get(k).filter(|v| !v.is_null()));
-    let slab = match slab_fields {
-        [None, None, None] => None,
-        [Some(b), Some(t), Some(z)] => Some([
-            number(b, "polygon.bottom")?,
-            number(t, "polygon.top")?,
-            number(z, "polygon.vz")?,
-        ]),
-        _ => {
-            let missing = ["bottom", "top", "vz"]
-                .iter()
-                .zip(slab_fields.iter())
-                .find(|(_, v)| v.is_none())
-                .map(|(k, _)| *k)
-                .unwrap_or("bottom");
-            return Err(CaseError::Missing {
-                field: format!("polygon.{missing}"),
-            });
-        }
-    };
+    let (vertices, velocities, slab) = polygon_fields(poly)?;
     RawCase {
         lookahead,
         buff,
@@ -383,6 +441,36 @@ pub fn case_from_object_with(
         slab,
     }
     .to_api_with(kappa_deg)
+}
+
+/// The case format's point fields as the engine's validated point (2 or 3 numbers each).
+fn moving_point(pos: &[f64], vel: &[f64]) -> Result<MovingPoint, CaseError> {
+    match (pos, vel) {
+        ([x, y], [vx, vy]) => MovingPoint::new_2d(Vect2::new(*x, *y), Vect2::new(*vx, *vy)),
+        ([x, y, z], [vx, vy, vz]) => MovingPoint::new_3d([*x, *y, *z], [*vx, *vy, *vz]),
+        _ => Err(CaseError::WrongLength {
+            field: "point.vel".into(),
+            expected: pos.len(),
+            found: vel.len(),
+            what: "numbers (as many as point.pos)",
+        }),
+    }
+}
+
+/// The case format's polygon fields as the engine's validated polygon (no velocities: at
+/// rest).
+fn moving_polygon(
+    vertices: &[[f64; 2]],
+    velocities: &[[f64; 2]],
+    slab: Option<[f64; 3]>,
+) -> Result<MovingPolygon, CaseError> {
+    let velocities =
+        (!velocities.is_empty()).then(|| velocities.iter().map(|&p| p.into()).collect());
+    let poly = MovingPolygon::new(vertices.iter().map(|&p| p.into()).collect(), velocities)?;
+    match slab {
+        Some([b, t, z]) => poly.with_slab(b, t, z),
+        None => Ok(poly),
+    }
 }
 
 /// A case of docs/cases.md as its fields, unvalidated: the one case type of the I/O
@@ -421,28 +509,8 @@ impl RawCase {
         let params = Params::new(self.buff)?
             .with_fac(self.fac)?
             .with_kappa_degrees(kappa_deg)?;
-        let pt = match (self.pos.as_slice(), self.vel.as_slice()) {
-            ([x, y], [vx, vy]) => MovingPoint::new_2d(Vect2::new(*x, *y), Vect2::new(*vx, *vy))?,
-            ([x, y, z], [vx, vy, vz]) => MovingPoint::new_3d([*x, *y, *z], [*vx, *vy, *vz])?,
-            _ => {
-                return Err(CaseError::WrongLength {
-                    field: "point.vel".into(),
-                    expected: self.pos.len(),
-                    found: self.vel.len(),
-                    what: "numbers (as many as point.pos)",
-                })
-            }
-        };
-        // no velocities: a polygon at rest
-        let velocities = (!self.velocities.is_empty())
-            .then(|| self.velocities.iter().map(|&p| p.into()).collect());
-        let mut poly = MovingPolygon::new(
-            self.vertices.iter().map(|&p| p.into()).collect(),
-            velocities,
-        )?;
-        if let Some([b, t, z]) = self.slab {
-            poly = poly.with_slab(b, t, z)?;
-        }
+        let pt = moving_point(&self.pos, &self.vel)?;
+        let poly = moving_polygon(&self.vertices, &self.velocities, self.slab)?;
         Case::new(self.lookahead, pt, poly, params)
     }
 

@@ -5,8 +5,8 @@
 //! - [`case`]: reading case lines into the engine's [`polyguard::api::Case`].
 //! - [`harness`]: seeded and fuzzer-driven case generators, classification of engine
 //!   answers against paper A and the truth, minimisation, reports and pictures.
-//! - [`commands`]: `detect`, `detect-earth`, `assure`, `conflicts` and `generate`, the only
-//!   code that prints.
+//! - [`commands`]: `detect`, `detect-earth`, `detect-batch`, `assure`, `conflicts` and
+//!   `generate`, the only code that prints.
 #![deny(missing_docs)]
 
 pub mod case;

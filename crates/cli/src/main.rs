@@ -22,6 +22,8 @@ enum Command {
     /// Paper A on the Earth: does an aircraft come within BUFF nm of a drifting cell?
     /// (JSON Lines in degrees, nm, knots, hours: docs/earth-cases.md)
     DetectEarth(polyguard_cli::commands::detect_earth::DetectEarthArgs),
+    /// Every point of one JSON Lines file against every polygon of another (docs/batch.md).
+    DetectBatch(polyguard_cli::commands::detect_batch::DetectBatchArgs),
     /// A seeded safety-assurance run: engine vs paper-exact vs truth on boundary cases.
     Assure(polyguard_cli::commands::assure::AssureArgs),
     /// Which areas and tracks of a scenario GeoJSON conflict, and when (paper B).
@@ -35,6 +37,7 @@ fn main() -> ExitCode {
     match &cli.command {
         Command::Detect(a) => polyguard_cli::commands::detect::run(a),
         Command::DetectEarth(a) => polyguard_cli::commands::detect_earth::run(a),
+        Command::DetectBatch(a) => polyguard_cli::commands::detect_batch::run(a),
         Command::Assure(a) => polyguard_cli::commands::assure::run(a),
         Command::Conflicts(a) => polyguard_cli::commands::conflicts::run(a),
         Command::Generate(a) => polyguard_cli::commands::generate::run(a),

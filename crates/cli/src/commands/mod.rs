@@ -3,5 +3,6 @@ pub mod assure;
 pub mod assure_b;
 pub mod conflicts;
 pub mod detect;
+pub mod detect_batch;
 pub mod detect_earth;
 pub mod generate;

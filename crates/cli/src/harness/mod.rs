@@ -9,7 +9,9 @@
 //! - [`report`]: counts per function, mode and class; shards merge exactly.
 //! - [`minimise`]: a smaller case of the same class. [`svg`]: its picture.
 //! - [`workload`]: the uniform benchmark workload (no threshold sought).
+//! - [`batch`]: the seeded batch workload (N points, M polygons) of `detect-batch`.
 
+pub mod batch;
 pub mod classify;
 pub mod gen;
 pub mod minimise;

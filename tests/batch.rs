@@ -1,0 +1,184 @@
+//! Batch detection (`polyguard::batch`, issue 13) against the pairwise engine: on seeded
+//! workloads with touching and nearly touching pairs, 2D and 3D, rigid, warping and
+//! collapsing polygons, `detect_batch` returns exactly the pairs for which
+//! `api::detected` says yes, with the same kind and method; a broad phase with boxes
+//! shrunk by BUFF (the canary) is caught dropping pairs.
+
+use polyguard::api::{decide, Case, Kind, MovingPoint, MovingPolygon, Params};
+use polyguard::batch::{detect_batch, detect_batch_with, Broad, Hit, Options};
+use polyguard::Tri;
+use polyguard_cli::harness::batch::{batch_workload, Mix, BUFF, T};
+use proptest::prelude::*;
+
+fn cases() -> u32 {
+    std::env::var("POLYGUARD_PROPTEST_CASES")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(32)
+}
+
+/// The pairwise engine's answer for every pair, as hits, in (point, polygon) order.
+fn pairwise(points: &[MovingPoint], polygons: &[MovingPolygon], params: &Params) -> Vec<Hit> {
+    let mut out = Vec::new();
+    for (i, p) in points.iter().enumerate() {
+        for (j, q) in polygons.iter().enumerate() {
+            let case = Case::new(T, *p, q.clone(), *params).expect("a valid pair");
+            let tri = decide(&case);
+            assert_eq!(
+                polyguard::api::detected(&case),
+                tri != Tri::No,
+                "pair ({i}, {j})"
+            );
+            let kind = match tri {
+                Tri::No => continue,
+                Tri::Yes => Kind::Exact,
+                Tri::Unsure => Kind::Conservative,
+            };
+            out.push(Hit {
+                point: i,
+                polygon: j,
+                kind,
+                method: case.method(),
+            });
+        }
+    }
+    out
+}
+
+fn params(fac: f64) -> Params {
+    Params::new(BUFF).and_then(|p| p.with_fac(fac)).unwrap()
+}
+
+fn mix(three_d: bool, fac: f64) -> Mix {
+    Mix {
+        three_d,
+        warping: 0.4,
+        aimed: 0.4,
+        collapsing: 0.02,
+        fac,
+    }
+}
+
+/// The first pair on which two answers differ, for the message.
+fn first_difference(a: &[Hit], b: &[Hit]) -> String {
+    let k = a
+        .iter()
+        .zip(b)
+        .position(|(x, y)| x != y)
+        .unwrap_or(a.len().min(b.len()));
+    format!(
+        "{} against {} hits; first difference at {k}: {:?} / {:?}",
+        a.len(),
+        b.len(),
+        a.get(k),
+        b.get(k)
+    )
+}
+
+/// The contract on four seeded workloads (2D and 3D, F = 10⁻⁴ where BUFF is the reach
+/// and F = 0.5 where F times an edge is): the batch is the pairwise engine, pair for
+/// pair, and the workloads are not trivial (hits at the boundary, misses near it).
+#[test]
+fn batch_is_the_pairwise_engine_on_seeded_workloads() {
+    for (seed, three_d, fac) in [
+        (1, false, 1e-4),
+        (2, false, 0.5),
+        (3, true, 1e-4),
+        (4, true, 0.5),
+    ] {
+        let w = batch_workload(600, 120, seed, mix(three_d, fac));
+        let p = params(fac);
+        let want = pairwise(&w.points, &w.polygons, &p);
+        let got = detect_batch(T, &w.points, &w.polygons, &p).unwrap();
+        assert!(
+            got == want,
+            "seed {seed}: {}",
+            first_difference(&got, &want)
+        );
+        // not trivial: hits, several methods, and far fewer candidates than pairs
+        assert!(want.len() > 60, "seed {seed}: {} hits", want.len());
+        let b = detect_batch_with(T, &w.points, &w.polygons, &p, &Options::default()).unwrap();
+        assert!(b.candidates < 600 * 120 / 10, "{} candidates", b.candidates);
+        assert!(
+            b.unbounded_polygons > 0,
+            "seed {seed}: no collapsing polygon"
+        );
+        // every pair with an unbounded polygon is a candidate, and detected (an edge
+        // that collapses accepts any point that is in the slab then)
+        if !three_d {
+            assert!(b.candidates >= (b.unbounded_polygons * 600) as u64);
+        }
+        // the all-pairs box test and the sequential run give the same answer
+        for opts in [
+            Options {
+                broad: Broad::AllPairs,
+                ..Options::default()
+            },
+            Options {
+                parallel: false,
+                ..Options::default()
+            },
+        ] {
+            let other = detect_batch_with(T, &w.points, &w.polygons, &p, &opts).unwrap();
+            assert_eq!(other.hits, got, "{opts:?}");
+            assert_eq!(other.candidates, b.candidates, "{opts:?}");
+        }
+    }
+}
+
+/// The canary: the same comparison with every polygon's box shrunk by BUFF (its reach
+/// lowered by 2·BUFF) must fail: the workloads hold pairs that only the full reach
+/// keeps, so the comparison above can see a dropped pair.
+#[test]
+fn a_broad_phase_with_boxes_shrunk_by_buff_is_caught() {
+    for (seed, three_d) in [(1, false), (3, true)] {
+        let w = batch_workload(600, 120, seed, mix(three_d, 1e-4));
+        let p = params(1e-4);
+        let want = pairwise(&w.points, &w.polygons, &p);
+        let shrunk = Options {
+            reach_offset: -2.0 * BUFF,
+            ..Options::default()
+        };
+        let got = detect_batch_with(T, &w.points, &w.polygons, &p, &shrunk).unwrap();
+        let dropped = want.iter().filter(|h| !got.hits.contains(h)).count();
+        assert!(
+            dropped > 0,
+            "seed {seed}: the shrunk broad phase dropped nothing"
+        );
+        // and shrinking by only a hundredth of BUFF is caught too on the aimed pairs
+        let slightly = Options {
+            reach_offset: -0.02 * BUFF,
+            ..Options::default()
+        };
+        let got = detect_batch_with(T, &w.points, &w.polygons, &p, &slightly).unwrap();
+        assert!(
+            got.hits != want,
+            "seed {seed}: shrinking by BUFF/100 went unseen"
+        );
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(cases()))]
+
+    /// Small random workloads of every mix: the batch is the pairwise engine.
+    #[test]
+    fn batch_is_the_pairwise_engine_on_small_workloads(
+        seed in any::<u64>(),
+        n in 0usize..40,
+        m in 0usize..12,
+        three_d in any::<bool>(),
+        warping in 0.0f64..1.0,
+        aimed in 0.0f64..1.0,
+        collapsing in 0.0f64..0.3,
+        big_f in any::<bool>(),
+    ) {
+        let fac = if big_f { 0.5 } else { 1e-4 };
+        let mix = Mix { three_d, warping, aimed, collapsing, fac };
+        let w = batch_workload(n, m, seed, mix);
+        let p = params(fac);
+        let want = pairwise(&w.points, &w.polygons, &p);
+        let got = detect_batch(T, &w.points, &w.polygons, &p).unwrap();
+        prop_assert!(got == want, "{}", first_difference(&got, &want));
+    }
+}

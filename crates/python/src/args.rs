@@ -8,6 +8,7 @@
 use polyguard::api::{Case, Params};
 use polyguard::error::CaseError;
 use polyguard_cli::case::RawCase;
+use numpy::PyReadonlyArrayDyn;
 use pyo3::prelude::*;
 use pyo3::types::PyString;
 
@@ -55,6 +56,13 @@ pub fn pairs(obj: &Bound<'_, PyAny>, field: &str) -> Result<Vec<[f64; 2]>, CaseE
     };
     if obj.is_instance_of::<PyString>() {
         return Err(wrong());
+    }
+    // An (n, 2) float64 array is read in place (any strides), not element by element.
+    if let Ok(a) = obj.extract::<PyReadonlyArrayDyn<'_, f64>>() {
+        let v = a.as_array();
+        if v.ndim() == 2 && v.shape()[1] == 2 {
+            return Ok(v.outer_iter().map(|r| [r[0], r[1]]).collect());
+        }
     }
     let iter = obj.try_iter().map_err(|_| wrong())?;
     let mut out = Vec::new();

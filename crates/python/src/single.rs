@@ -167,6 +167,25 @@ pub fn detection(case: &Case) -> Detection {
     }
 }
 
+/// Polygons of at least this many vertices are answered without the GIL: their time
+/// (tens of µs and up) is worth the hand-over (well under a µs); a small one is answered
+/// faster holding it.
+pub const GIL_FREE_VERTICES: usize = 64;
+
+/// `answer(case)` (paper A's detection or entry time), without the GIL for a polygon of
+/// [`GIL_FREE_VERTICES`] or more.
+fn detect_large_without_gil<T: Send>(
+    py: Python<'_>,
+    case: &Case,
+    answer: impl Fn(&Case) -> T + Send + Sync,
+) -> T {
+    if case.polygon().vertices().len() >= GIL_FREE_VERTICES {
+        py.detach(|| answer(case))
+    } else {
+        answer(case)
+    }
+}
+
 /// The oracle's exact truth on a validated case (paper A's ground truth), without the
 /// GIL: `None` when the point never enters.
 fn exact_truth(py: Python<'_>, case: Case) -> PyResult<Option<Truth>> {
@@ -257,14 +276,15 @@ pub fn detect<'py>(
         kappa_deg,
         [bottom, top, vz],
     )?;
-    Ok(detection(&case))
+    Ok(detect_large_without_gil(py, &case, detection))
 }
 
 /// `detect` on a case object of docs/cases.md (a dict, or one JSON line as a str), read
 /// by the case format's own reader: unknown keys are errors (paper A §II.H, §II.I, §III).
 #[pyfunction]
 pub fn detect_case(py: Python<'_>, case: &Bound<'_, PyAny>) -> PyResult<Detection> {
-    Ok(detection(&case_from_object(py, case)?))
+    let case = case_from_object(py, case)?;
+    Ok(detect_large_without_gil(py, &case, detection))
 }
 
 /// When the point first enters the closed polygon (and slab), enclosed in f64: kind
@@ -303,13 +323,14 @@ pub fn detect_time<'py>(
         kappa_deg,
         [bottom, top, vz],
     )?;
-    Ok(api::detect_time(&case).into())
+    Ok(detect_large_without_gil(py, &case, |c| api::detect_time(c).into()))
 }
 
 /// `detect_time` on a case object of docs/cases.md (paper A §II–III's entry, timed).
 #[pyfunction]
 pub fn detect_time_case(py: Python<'_>, case: &Bound<'_, PyAny>) -> PyResult<EntryTime> {
-    Ok(api::detect_time(&case_from_object(py, case)?).into())
+    let case = case_from_object(py, case)?;
+    Ok(detect_large_without_gil(py, &case, |c| api::detect_time(c).into()))
 }
 
 /// The exact ground truth (the oracle, in rational arithmetic): the exact time the

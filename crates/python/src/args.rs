@@ -5,44 +5,79 @@
 //! spells it (`polygon.vertices[2]`), so that Python sees the same field names and
 //! messages as `polyguard detect`.
 
+use numpy::{PyArrayDyn, PyArrayMethods};
 use polyguard::api::{Case, Params};
 use polyguard::error::CaseError;
 use polyguard_cli::case::RawCase;
-use numpy::PyReadonlyArrayDyn;
 use pyo3::prelude::*;
-use pyo3::types::PyString;
+use pyo3::types::{PyFloat, PyList, PyString, PyTuple};
 
 /// A number for `field` (docs/cases.md's number fields): a Python float or int, or
 /// anything with `__float__` (a numpy scalar). Not finiteness: the engine checks that,
 /// naming the field down to the coordinate.
 pub fn number(obj: &Bound<'_, PyAny>, field: &str) -> Result<f64, CaseError> {
-    if obj.is_instance_of::<PyString>() {
-        return Err(CaseError::WrongType {
-            field: field.into(),
-            expected: "a number",
-        });
-    }
-    obj.extract::<f64>().map_err(|_| CaseError::WrongType {
+    to_f64(obj).ok_or_else(|| CaseError::WrongType {
         field: field.into(),
         expected: "a number",
     })
 }
 
+/// The value of a Python number (a float first, without a lookup), or `None` for a str
+/// or anything without `__float__`.
+fn to_f64(obj: &Bound<'_, PyAny>) -> Option<f64> {
+    if let Ok(f) = obj.cast::<PyFloat>() {
+        return Some(f.value());
+    }
+    if obj.is_instance_of::<PyString>() {
+        return None;
+    }
+    obj.extract::<f64>().ok()
+}
+
 /// A list of numbers for `field` (a point's `pos` or `vel`): any iterable of numbers but a
 /// string (a list, a tuple, a 1-D numpy array).
 pub fn numbers(obj: &Bound<'_, PyAny>, field: &str) -> Result<Vec<f64>, CaseError> {
+    numbers_named(obj, &|| field.to_string())
+}
+
+/// [`numbers`] with the field's name made only when there is an error (the names of
+/// vertices are not built for every vertex read).
+fn numbers_named(
+    obj: &Bound<'_, PyAny>,
+    field: &dyn Fn() -> String,
+) -> Result<Vec<f64>, CaseError> {
+    let item = |k: usize, x: &Bound<'_, PyAny>| {
+        to_f64(x).ok_or_else(|| CaseError::WrongType {
+            field: format!("{}[{k}]", field()),
+            expected: "a number",
+        })
+    };
+    // Lists and tuples by index (the common case, without an iterator object).
+    if let Ok(list) = obj.cast::<PyList>() {
+        return list.iter().enumerate().map(|(k, x)| item(k, &x)).collect();
+    }
+    if let Ok(tuple) = obj.cast::<PyTuple>() {
+        return tuple.iter().enumerate().map(|(k, x)| item(k, &x)).collect();
+    }
     let wrong = || CaseError::WrongType {
-        field: field.into(),
+        field: field(),
         expected: "a list of numbers",
     };
     if obj.is_instance_of::<PyString>() {
         return Err(wrong());
     }
-    let iter = obj.try_iter().map_err(|_| wrong())?;
+    // A 1-D float64 array is read in place.
+    if let Ok(a) = obj.cast::<PyArrayDyn<f64>>() {
+        if let Ok(ro) = a.try_readonly() {
+            let v = ro.as_array();
+            if v.ndim() == 1 {
+                return Ok(v.iter().copied().collect());
+            }
+        }
+    }
     let mut out = Vec::new();
-    for (k, item) in iter.enumerate() {
-        let item = item.map_err(|_| wrong())?;
-        out.push(number(&item, &format!("{field}[{k}]"))?);
+    for (k, x) in obj.try_iter().map_err(|_| wrong())?.enumerate() {
+        out.push(item(k, &x.map_err(|_| wrong())?)?);
     }
     Ok(out)
 }
@@ -58,27 +93,37 @@ pub fn pairs(obj: &Bound<'_, PyAny>, field: &str) -> Result<Vec<[f64; 2]>, CaseE
         return Err(wrong());
     }
     // An (n, 2) float64 array is read in place (any strides), not element by element.
-    if let Ok(a) = obj.extract::<PyReadonlyArrayDyn<'_, f64>>() {
-        let v = a.as_array();
-        if v.ndim() == 2 && v.shape()[1] == 2 {
-            return Ok(v.outer_iter().map(|r| [r[0], r[1]]).collect());
+    if let Ok(a) = obj.cast::<PyArrayDyn<f64>>() {
+        if let Ok(ro) = a.try_readonly() {
+            let v = ro.as_array();
+            if v.ndim() == 2 && v.shape()[1] == 2 {
+                return Ok(v.outer_iter().map(|r| [r[0], r[1]]).collect());
+            }
         }
     }
-    let iter = obj.try_iter().map_err(|_| wrong())?;
     let mut out = Vec::new();
-    for (i, item) in iter.enumerate() {
-        let item = item.map_err(|_| wrong())?;
-        let f = format!("{field}[{i}]");
-        let xy = numbers(&item, &f)?;
+    let mut push = |i: usize, item: &Bound<'_, PyAny>| {
+        let name = || format!("{field}[{i}]");
+        let xy = numbers_named(item, &name)?;
         if xy.len() != 2 {
             return Err(CaseError::WrongLength {
-                field: f,
+                field: name(),
                 expected: 2,
                 found: xy.len(),
                 what: "numbers (a point is [x, y])",
             });
         }
         out.push([xy[0], xy[1]]);
+        Ok(())
+    };
+    if let Ok(list) = obj.cast::<PyList>() {
+        for (i, item) in list.iter().enumerate() {
+            push(i, &item)?;
+        }
+    } else {
+        for (i, item) in obj.try_iter().map_err(|_| wrong())?.enumerate() {
+            push(i, &item.map_err(|_| wrong())?)?;
+        }
     }
     Ok(out)
 }

@@ -323,14 +323,18 @@ pub fn detect_time<'py>(
         kappa_deg,
         [bottom, top, vz],
     )?;
-    Ok(detect_large_without_gil(py, &case, |c| api::detect_time(c).into()))
+    Ok(detect_large_without_gil(py, &case, |c| {
+        api::detect_time(c).into()
+    }))
 }
 
 /// `detect_time` on a case object of docs/cases.md (paper A §II–III's entry, timed).
 #[pyfunction]
 pub fn detect_time_case(py: Python<'_>, case: &Bound<'_, PyAny>) -> PyResult<EntryTime> {
     let case = case_from_object(py, case)?;
-    Ok(detect_large_without_gil(py, &case, |c| api::detect_time(c).into()))
+    Ok(detect_large_without_gil(py, &case, |c| {
+        api::detect_time(c).into()
+    }))
 }
 
 /// The exact ground truth (the oracle, in rational arithmetic): the exact time the

@@ -341,7 +341,7 @@ type Answer<'py> = (
 /// - points_pos, points_vel: (N, 2), or (N, 3) with the height (then every polygon needs
 ///   a slab).
 /// - poly_vertices: (M, n, 2) for polygons of n vertices each, or (V, 2) with
-///   poly_offsets (M + 1 integers from 0 to V: polygon j is rows offsets[j]..offsets[j+1]).
+///   poly_offsets (M + 1 integers from 0 to V: polygon j is rows `offsets[j]..offsets[j+1]`).
 ///   Counterclockwise, as in docs/cases.md.
 /// - poly_velocities: None (at rest), one per vertex (poly_vertices' shape), or one drift
 ///   per polygon (M, 2).

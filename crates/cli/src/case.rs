@@ -154,8 +154,9 @@ fn syntax_failure(line: &str, e: &serde_json::Error) -> (CaseError, Option<Value
 
 /// The case format's point and polygon objects, one per line, for batch detection
 /// (docs/batch.md; extends the case format of docs/cases.md): a line's JSON object read
-/// strictly (no key twice), a byte-order mark in front skipped.
-fn read_object(line: &str) -> Result<Map<String, Value>, CaseError> {
+/// strictly (no key twice), a byte-order mark in front skipped. `prefix` ("point." or
+/// "polygon.") puts a NaN's field in the case's terms, as every other error of the line.
+fn read_object(line: &str, prefix: &str) -> Result<Map<String, Value>, CaseError> {
     let line = line.strip_prefix('\u{feff}').unwrap_or(line);
     let line = line.trim_end_matches(['\n', '\r']);
     match serde_json::from_str::<Strict>(line) {
@@ -163,14 +164,20 @@ fn read_object(line: &str) -> Result<Map<String, Value>, CaseError> {
         Ok(Strict(_)) => Err(CaseError::Syntax {
             message: "the line is JSON but not an object".into(),
         }),
-        Err(e) => Err(syntax_failure(line, &e).0),
+        Err(e) => Err(match syntax_failure(line, &e).0 {
+            CaseError::NotJsonNumber { field, literal } => CaseError::NotJsonNumber {
+                field: format!("{prefix}{field}"),
+                literal,
+            },
+            other => other,
+        }),
     }
 }
 
 /// A batch's point line (docs/batch.md): the case format's `point` object, `pos` and
 /// `vel` of two numbers each (three with a height), errors named `point.…` as in a case.
 pub fn point_from_line(line: &str) -> Result<MovingPoint, CaseError> {
-    let obj = read_object(line)?;
+    let obj = read_object(line, "point.")?;
     let (pos, vel) = point_fields(&obj)?;
     moving_point(&pos, &vel)
 }
@@ -179,7 +186,7 @@ pub fn point_from_line(line: &str) -> Result<MovingPoint, CaseError> {
 /// (`vertices`, optional `velocities`, and `bottom`, `top`, `vz` for a slab), errors
 /// named `polygon.…` as in a case.
 pub fn polygon_from_line(line: &str) -> Result<MovingPolygon, CaseError> {
-    let obj = read_object(line)?;
+    let obj = read_object(line, "polygon.")?;
     let (vertices, velocities, slab) = polygon_fields(&obj)?;
     moving_polygon(&vertices, &velocities, slab)
 }

@@ -104,3 +104,27 @@ def test_conflicts_with_a_bad_feature_answer_the_good_ones_like_the_cli(tmp_path
         del answer["stats"]["timings_ms"]
     assert lean == cli
     assert "region" not in lean["conflicts"][0] and lean["conflicts"][0]["projection_windows"] is None
+
+
+def test_detect_batch_matches_the_cli_on_the_example_files():
+    points = jsonl((EXAMPLES / "batch-points.jsonl").read_text())
+    polygons = jsonl((EXAMPLES / "batch-polygons.jsonl").read_text())
+    code, out, err = run_cli("detect-batch", EXAMPLES / "batch-points.jsonl",
+                             EXAMPLES / "batch-polygons.jsonl", "--lookahead", "10",
+                             "--buff", "0.1")
+    assert code == 0, err
+    cli = [(h["point"], h["polygon"], h["kind"]) for h in jsonl(out)]
+    assert len(cli) >= 3
+    # polygons of different sizes: the (V, 2) layout with offsets; velocities per vertex
+    # (zero where a polygon has none)
+    verts = [q["vertices"] for q in polygons]
+    vels = [q.get("velocities", [[0, 0]] * len(q["vertices"])) for q in polygons]
+    offsets = [0]
+    for v in verts:
+        offsets.append(offsets[-1] + len(v))
+    pi, qi, kind = polyguard.detect_batch(
+        10.0, [p["pos"] for p in points], [p["vel"] for p in points],
+        [xy for v in verts for xy in v], offsets, [xy for v in vels for xy in v], buff=0.1)
+    names = {polyguard.KIND_EXACT: "exact", polyguard.KIND_CONSERVATIVE: "conservative"}
+    mine = [(int(i), int(j), names[int(k)]) for i, j, k in zip(pi, qi, kind)]
+    assert mine == cli

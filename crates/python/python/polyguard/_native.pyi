@@ -6,10 +6,30 @@ Paper B: A. Bienkowski, D. Sidoti and K. R. Pattipati, Interference Identificati
 Time-Varying Polyhedra, IEEE Access 9 (2021).
 """
 
-from typing import Any, Iterator, Literal, Mapping, Optional, Sequence, Tuple, Union
+from typing import Any, Iterator, Literal, Mapping, Optional, Sequence, Tuple, Union, final
 
 import numpy as np
 import numpy.typing as npt
+
+__all__ = [
+    "CaseError",
+    "Detection",
+    "EntryTime",
+    "Error",
+    "KIND_CONSERVATIVE",
+    "KIND_EXACT",
+    "ScenarioError",
+    "Truth",
+    "__version__",
+    "conflicts",
+    "detect",
+    "detect_batch",
+    "detect_case",
+    "detect_time",
+    "detect_time_case",
+    "truth",
+    "truth_case",
+]
 
 __version__: str
 
@@ -44,6 +64,7 @@ class ScenarioError(Error):
     field: str
     line: Optional[int]
 
+@final
 class Detection:
     """The answer of ``detect`` (the fields of a ``polyguard detect`` answer line)."""
 
@@ -62,6 +83,7 @@ class Detection:
         """The answer as ``polyguard detect`` writes it after ``id``."""
     def __bool__(self) -> bool: ...
 
+@final
 class EntryTime:
     """The answer of ``detect_time``: where the exact first-entry time t* lies."""
 
@@ -74,6 +96,7 @@ class EntryTime:
     def __iter__(self) -> Iterator[Any]:
         """``kind, lo, hi = detect_time(...)``."""
 
+@final
 class Truth:
     """The exact first-entry time from the oracle (rational arithmetic)."""
 
@@ -103,6 +126,7 @@ def detect(
     given: at rest), detect_diff_2D (§II.I) otherwise, detect_3D (§III) when ``pos`` and
     ``vel`` have a height and the polygon a slab (``bottom``, ``top``, ``vz``). Vertices
     counterclockwise. ``fac`` is F (§II.I), ``kappa_deg`` the corner angle of §II.J.
+    Polygons of 64 vertices or more are answered without the GIL.
 
     Raises CaseError naming the field.
     """

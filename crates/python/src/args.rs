@@ -23,7 +23,7 @@ pub fn number(obj: &Bound<'_, PyAny>, field: &str) -> Result<f64, CaseError> {
 }
 
 /// The value of a Python number (a float first, without a lookup), or `None` for a str
-/// or anything without `__float__`.
+/// or anything without `__float__` (the case format's numbers, docs/cases.md, from Python).
 fn to_f64(obj: &Bound<'_, PyAny>) -> Option<f64> {
     if let Ok(f) = obj.cast::<PyFloat>() {
         return Some(f.value());
@@ -34,14 +34,14 @@ fn to_f64(obj: &Bound<'_, PyAny>) -> Option<f64> {
     obj.extract::<f64>().ok()
 }
 
-/// A list of numbers for `field` (a point's `pos` or `vel`): any iterable of numbers but a
+/// A list of numbers for `field` (a point's `pos` or `vel`: paper A §II's s and v): any iterable of numbers but a
 /// string (a list, a tuple, a 1-D numpy array).
 pub fn numbers(obj: &Bound<'_, PyAny>, field: &str) -> Result<Vec<f64>, CaseError> {
     numbers_named(obj, &|| field.to_string())
 }
 
 /// [`numbers`] with the field's name made only when there is an error (the names of
-/// vertices are not built for every vertex read).
+/// vertices are not built for every vertex read; docs/cases.md's field paths).
 fn numbers_named(
     obj: &Bound<'_, PyAny>,
     field: &dyn Fn() -> String,
@@ -82,7 +82,8 @@ fn numbers_named(
     Ok(out)
 }
 
-/// A list of points [x, y] for `field` (a polygon's `vertices` or `velocities`): an
+/// A list of points [x, y] for `field` (a polygon's `vertices` or `velocities`: paper A
+/// §II's P and V): an
 /// iterable of pairs (a list of lists, an (n, 2) numpy array).
 pub fn pairs(obj: &Bound<'_, PyAny>, field: &str) -> Result<Vec<[f64; 2]>, CaseError> {
     let wrong = || CaseError::WrongType {

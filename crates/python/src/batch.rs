@@ -54,7 +54,8 @@ fn item_error(e: &CaseError, index: usize) -> Failure {
     (renamed.clone(), format!("{renamed}: {rest}"))
 }
 
-/// A float64 array for `field`: the array itself when it is one (no copy), else
+/// A float64 array for `field` (the batch's inputs, extending paper A's one case to many):
+/// the array itself when it is one (no copy), else
 /// `numpy.asarray(obj, "float64")` (one copy).
 fn f64_array<'py>(
     py: Python<'py>,
@@ -83,7 +84,8 @@ fn f64_array<'py>(
     })
 }
 
-/// An int64 array for `field` (the polygons' offsets): the array itself when it is one,
+/// An int64 array for `field` (the polygons' offsets, extending paper A's one polygon to
+/// many): the array itself when it is one,
 /// else a conversion that refuses non-integer values (2.5 is not an offset).
 fn i64_array<'py>(
     py: Python<'py>,
@@ -152,7 +154,7 @@ fn read_points(a: &Arrays<'_>) -> Result<Vec<MovingPoint>, Failure> {
     Ok(points)
 }
 
-/// Where polygon j's vertices lie: rows `ranges[j]` of the (V, 2) vertex array, or
+/// Where polygon j's vertices (paper A §II's P, one per polygon) lie: rows `ranges[j]` of the (V, 2) vertex array, or
 /// `poly_vertices[j]` of an (M, n, 2) one.
 fn polygon_ranges(a: &Arrays<'_>) -> Result<Vec<std::ops::Range<usize>>, Failure> {
     let v = &a.vertices;
@@ -307,7 +309,8 @@ fn read_polygons(a: &Arrays<'_>, three_d: bool) -> Result<Vec<MovingPolygon>, Fa
     Ok(polygons)
 }
 
-/// The hits, without the GIL's help: points, polygons, then the engine's batch.
+/// The hits, without the GIL's help: points, polygons, then the engine's batch (paper A
+/// §II.H, §II.I, §III on every kept pair).
 fn run(
     a: &Arrays<'_>,
     lookahead: f64,

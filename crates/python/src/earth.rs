@@ -7,7 +7,8 @@ use pyo3::prelude::*;
 
 use crate::ScenarioError;
 
-/// A [`ScenarioError`] with `field`, `line` (None when unknown) and the message.
+/// A [`ScenarioError`] with `field`, `line` (None when unknown) and the message: a
+/// scenario of docs/scenario.md (paper B's input) that cannot be read.
 fn scenario_error(py: Python<'_>, field: &str, line: Option<usize>, message: &str) -> PyErr {
     let err = ScenarioError::new_err(message.to_string());
     let v = err.value(py);

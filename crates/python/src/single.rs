@@ -46,11 +46,12 @@ impl Detection {
         Ok(d)
     }
 
-    /// `bool(detection)` is `detection.detected`.
+    /// `bool(detection)` is `detection.detected` (paper A's answer).
     fn __bool__(&self) -> bool {
         self.detected
     }
 
+    /// The Python repr of paper A's answer.
     fn __repr__(&self, py: Python<'_>) -> String {
         format!(
             "Detection(detected={}, kind={}, decided_by={}, well_formed={}{})",
@@ -68,14 +69,15 @@ impl Detection {
     }
 }
 
-/// Python's repr of a str (quotes and escapes as Python writes them), for reprs.
+/// Python's repr of a str (quotes and escapes as Python writes them), for the reprs of
+/// paper A's answers.
 fn py_str(py: Python<'_>, s: &str) -> String {
     pyo3::types::PyString::new(py, s)
         .repr()
         .map_or_else(|_| format!("{s:?}"), |r| r.to_string())
 }
 
-/// Python's spelling of a bool, for reprs.
+/// Python's spelling of a bool, for the reprs of paper A's answers.
 fn py_bool(b: bool) -> &'static str {
     if b {
         "True"
@@ -101,7 +103,7 @@ pub struct EntryTime {
 
 #[pymethods]
 impl EntryTime {
-    /// `kind, lo, hi = detect_time(...)` unpacks it.
+    /// `kind, lo, hi = detect_time(...)` unpacks it (the enclosure of paper A's entry time).
     fn __iter__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, pyo3::types::PyIterator>> {
         (self.kind, self.lo, self.hi)
             .into_pyobject(py)?
@@ -109,6 +111,7 @@ impl EntryTime {
             .try_iter()
     }
 
+    /// The Python repr of the entry-time enclosure (paper A §II–III, timed).
     fn __repr__(&self, py: Python<'_>) -> String {
         let f = |x: Option<f64>| x.map_or("None".to_string(), |v| format!("{v:?}"));
         format!(
@@ -121,6 +124,7 @@ impl EntryTime {
 }
 
 impl From<EngineEntry> for EntryTime {
+    /// The engine's enclosure of the first-entry time (paper A §II–III, timed), for Python.
     fn from(e: EngineEntry) -> Self {
         let (lo, hi) = e.enclosure().unzip();
         EntryTime {
@@ -144,6 +148,7 @@ pub struct Truth {
 
 #[pymethods]
 impl Truth {
+    /// The Python repr of the oracle's exact entry time.
     fn __repr__(&self, py: Python<'_>) -> String {
         format!(
             "Truth(entry_time={:?}, entry_time_exact={})",

@@ -6,7 +6,9 @@
 //! 1. **Broad phase** (not in the paper): each point gets the box swept by its positions
 //!    over [0, T], each polygon the box swept by its vertices, grown by the polygon's
 //!    *reach*, the farthest (in the max norm) that paper A computed without rounding can
-//!    answer "yes" from (see [`reach`]). Boxes are rounded outward, so a pair whose boxes
+//!    answer "yes" from (the private `reach`: BUFF; F times the longest edge for a
+//!    warping polygon when that is more; unbounded when an edge may shrink to a point;
+//!    docs/batch.md). Boxes are rounded outward, so a pair whose boxes
 //!    are disjoint is one that paper A certainly answers "no": the broad phase never drops
 //!    a pair paper A (or the engine) detects. Pairs are found through a uniform grid over
 //!    the polygons' boxes (`Broad::Grid`); `Broad::AllPairs` tests every pair's boxes,
@@ -81,7 +83,7 @@ pub struct Options {
     pub parallel: bool,
     /// Added to every polygon's reach. 0 in any real use: a negative value makes the
     /// broad phase unsound, on purpose, for the tests that must see it drop pairs (the
-    /// canary); see [`reach`].
+    /// canary).
     pub reach_offset: f64,
 }
 
@@ -137,7 +139,8 @@ pub fn detect_batch_with(
             field: "lookahead".into(),
         });
     }
-    if !(lookahead > 0.0) {
+    // finite here: not > 0 is ≤ 0
+    if lookahead <= 0.0 {
         return Err(CaseError::NotPositive {
             field: "lookahead",
             value: lookahead,
@@ -743,14 +746,14 @@ mod tests {
         let q3 = q2.clone().with_slab(0.0, 1.0, 0.0).unwrap();
         let p2 = MovingPoint::new_2d(Vect2::ZERO, Vect2::ZERO).unwrap();
         let p3 = MovingPoint::new_3d([0.0; 3], [0.0; 3]).unwrap();
-        let e = detect_batch(1.0, &[p3], &[q2.clone()], &params).unwrap_err();
+        let e = detect_batch(1.0, &[p3], std::slice::from_ref(&q2), &params).unwrap_err();
         assert_eq!(e.field(), "polygon.bottom");
-        let e = detect_batch(1.0, &[p2], &[q3.clone()], &params).unwrap_err();
+        let e = detect_batch(1.0, &[p2], std::slice::from_ref(&q3), &params).unwrap_err();
         assert_eq!(e.field(), "point.pos");
-        let e = detect_batch(1.0, &[p2, p3], &[q2.clone()], &params).unwrap_err();
+        let e = detect_batch(1.0, &[p2, p3], std::slice::from_ref(&q2), &params).unwrap_err();
         assert_eq!(e.field(), "point.pos");
         assert_eq!(
-            detect_batch(0.0, &[p2], &[q2.clone()], &params)
+            detect_batch(0.0, &[p2], std::slice::from_ref(&q2), &params)
                 .unwrap_err()
                 .field(),
             "lookahead"

@@ -287,6 +287,8 @@ pub fn detect<'py>(
 
 /// `detect` on a case object of docs/cases.md (a dict, or one JSON line as a str), read
 /// by the case format's own reader: unknown keys are errors (paper A §II.H, §II.I, §III).
+/// A dict is written by `json.dumps` first: its values must be JSON-serialisable (lists,
+/// not numpy arrays; a TypeError otherwise).
 #[pyfunction]
 pub fn detect_case(py: Python<'_>, case: &Bound<'_, PyAny>) -> PyResult<Detection> {
     let case = case_from_object(py, case)?;

@@ -132,7 +132,12 @@ def detect(
     """
 
 def detect_case(case: Union[Mapping[str, Any], str]) -> Detection:
-    """``detect`` on a case object of docs/cases.md (a dict, or a JSON line)."""
+    """``detect`` on a case object of docs/cases.md (a dict, or a JSON line).
+
+    A dict is written by ``json.dumps`` and read by the case format's own reader: its
+    values must be JSON-serialisable (lists, not numpy arrays); unknown or repeated keys
+    and NaN are errors naming the field.
+    """
 
 def detect_time(
     lookahead: _Number,

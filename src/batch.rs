@@ -110,8 +110,16 @@ pub struct Batch {
 }
 
 /// Paper A for every point against every polygon: the hits, sorted by (point, polygon),
-/// exactly the pairs for which [`api::detected`](crate::api::detected) says yes for
-/// `Case::new(lookahead, point, polygon, params)`.
+/// the pairs for which [`api::detected`](crate::api::detected) says yes for
+/// `Case::new(lookahead, point, polygon, params)`, with the same kind and method.
+///
+/// Every pair that paper A computed without rounding detects is among them (the broad
+/// phase drops a pair only when its grown boxes prove paper A's "no"). The one way the
+/// batch can differ from the pairwise engine is in its favour: a pair whose boxes are
+/// that far apart, which the pairwise engine would still answer with a conservative
+/// "yes" because some comparison could not be decided in f64 (magnitudes near overflow),
+/// is left out, as paper A certainly says no there. On the tested workloads (tests/batch.rs,
+/// examples/batch_vs_pairwise.rs) the two are equal pair for pair.
 ///
 /// Errors: `lookahead` not finite or not > 0 (field `lookahead`); a 3D point (with a
 /// height) in the same batch as a 2D polygon (without a slab), or the reverse (field

@@ -75,6 +75,11 @@
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
 
+/// docs/batch.md's library example, compiled and run as a doctest.
+#[cfg(all(doctest, feature = "std"))]
+#[doc = include_str!("../docs/batch.md")]
+pub struct BatchDocDoctests;
+
 #[cfg(feature = "std")]
 pub mod api;
 pub mod ball;

@@ -1,0 +1,55 @@
+"""polyguard: does a moving point enter a moving polygon, and which moving areas conflict?
+
+- Paper A (A. Narkawicz and G. Hagen, NASA, AIAA Aviation 2016): ``detect`` answers whether
+  a linearly moving point comes within BUFF of a moving, possibly warping polygon within a
+  lookahead time (detect_same_2D §II.H, detect_diff_2D §II.I, detect_3D §III). Every
+  comparison is certified: a "no" is always paper A's exact "no". ``detect_time`` encloses
+  the first entry time; ``truth`` computes it exactly (rational arithmetic);
+  ``detect_batch`` checks N points against M polygons from numpy arrays.
+- Paper B (A. Bienkowski, D. Sidoti and K. R. Pattipati, IEEE Access 9, 2021):
+  ``conflicts`` runs the four-stage interference identification (§IV) on a scenario
+  GeoJSON.
+
+Bad input raises ``CaseError`` / ``ScenarioError`` (both ``ValueError``), whose ``field``
+names the field as the case format spells it (``polygon.vertices[2][1]``).
+"""
+
+from ._native import (
+    KIND_CONSERVATIVE,
+    KIND_EXACT,
+    CaseError,
+    Detection,
+    EntryTime,
+    Error,
+    ScenarioError,
+    Truth,
+    __version__,
+    conflicts,
+    detect,
+    detect_batch,
+    detect_case,
+    detect_time,
+    detect_time_case,
+    truth,
+    truth_case,
+)
+
+__all__ = [
+    "KIND_CONSERVATIVE",
+    "KIND_EXACT",
+    "CaseError",
+    "Detection",
+    "EntryTime",
+    "Error",
+    "ScenarioError",
+    "Truth",
+    "__version__",
+    "conflicts",
+    "detect",
+    "detect_batch",
+    "detect_case",
+    "detect_time",
+    "detect_time_case",
+    "truth",
+    "truth_case",
+]

@@ -432,9 +432,18 @@ pub fn repeated_key(n: &Node) -> Option<(String, usize)> {
     walk(n, "")
 }
 
-/// The defined name that an unknown `key` most likely misspells: the same letters in
-/// another case, or at most three edits away and fewer than half its letters.
+/// The defined name that an unknown `key` most likely misspells: the name with its unit
+/// (`course` for `course_deg`), the same letters in another case, or at most three edits
+/// away and fewer than half its letters.
 pub fn suggest(key: &str, known: &[&'static str]) -> Option<&'static str> {
+    // A name given without its unit (`course` for `course_deg`, `buff` for `buff_nm`).
+    let lower = key.to_lowercase();
+    if let Some(&k) = known.iter().find(|k| {
+        k.strip_prefix(lower.as_str())
+            .is_some_and(|rest| rest.starts_with('_'))
+    }) {
+        return Some(k);
+    }
     known
         .iter()
         .map(|&k| (edit_distance(&key.to_lowercase(), k), k))
@@ -478,6 +487,16 @@ pub fn to_value(n: &Node) -> serde_json::Value {
 
 #[cfg(test)]
 mod tests {
+
+    #[test]
+    fn a_name_without_its_unit_is_suggested_with_it() {
+        let known = ["lookahead_h", "buff_nm", "course_deg", "speed_kn"];
+        assert_eq!(suggest("course", &known), Some("course_deg"));
+        assert_eq!(suggest("Buff", &known), Some("buff_nm"));
+        assert_eq!(suggest("speed_kts", &known), Some("speed_kn"));
+        assert_eq!(suggest("colour", &known), None);
+    }
+
     use super::*;
 
     #[test]

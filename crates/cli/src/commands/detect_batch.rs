@@ -23,17 +23,25 @@ pub struct DetectBatchArgs {
     /// `top`, `vz` in 3D): written with --generate.
     pub polygons: PathBuf,
     /// T, the lookahead (the case format's `lookahead`), > 0.
-    #[arg(long, required_unless_present = "generate")]
+    #[arg(
+        long,
+        required_unless_present = "generate",
+        allow_negative_numbers = true
+    )]
     pub lookahead: Option<f64>,
     /// BUFF (the case format's `buff`), > 0.
-    #[arg(long, required_unless_present = "generate")]
+    #[arg(
+        long,
+        required_unless_present = "generate",
+        allow_negative_numbers = true
+    )]
     pub buff: Option<f64>,
     /// F (the case format's `fac`), in (0, 1).
-    #[arg(long, default_value_t = polyguard::api::Params::DEFAULT_FAC)]
+    #[arg(long, default_value_t = polyguard::api::Params::DEFAULT_FAC, allow_negative_numbers = true)]
     pub fac: f64,
     /// κ in degrees (the case format's `kappa`), in (0, 180): checked, as in a case; the
     /// batch answer reports no well-formedness.
-    #[arg(long, default_value_t = DEFAULT_KAPPA_DEG)]
+    #[arg(long, default_value_t = DEFAULT_KAPPA_DEG, allow_negative_numbers = true)]
     pub kappa: f64,
     /// Instead of answering: write the seeded bench workload of N points and M polygons
     /// (8 vertices, docs/batch.md) to POINTS and POLYGONS, and say on standard error the

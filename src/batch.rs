@@ -117,9 +117,11 @@ pub struct Batch {
 /// phase drops a pair only when its grown boxes prove paper A's "no"). The one way the
 /// batch can differ from the pairwise engine is in its favour: a pair whose boxes are
 /// that far apart, which the pairwise engine would still answer with a conservative
-/// "yes" because some comparison could not be decided in f64 (magnitudes near overflow),
-/// is left out, as paper A certainly says no there. On the tested workloads (tests/batch.rs,
-/// examples/batch_vs_pairwise.rs) the two are equal pair for pair.
+/// "yes" because some comparison could not be decided in f64 (magnitudes near overflow,
+/// or an edge that nearly shrinks to a point), is left out, as paper A certainly says no
+/// there. tests/batch.rs checks exactly that against the oracle (a proptest found such a
+/// pair: `a_conservative_pairwise_yes_that_paper_a_denies_may_be_spared`); on the bench's
+/// workloads (examples/batch_vs_pairwise.rs) the two are equal pair for pair.
 ///
 /// Errors: `lookahead` not finite or not > 0 (field `lookahead`); a 3D point (with a
 /// height) in the same batch as a 2D polygon (without a slab), or the reverse (field

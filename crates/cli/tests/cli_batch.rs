@@ -259,8 +259,14 @@ fn bad_options_are_refused() {
         (vec!["--lookahead", "0", "--buff", "0.1"], "--lookahead"),
         (vec!["--lookahead", "1", "--buff=-1"], "--buff"),
         // a negative number after a space is the option's value, not another option
-        (vec!["--lookahead", "-1", "--buff", "0.1"], "--lookahead: -1"),
-        (vec!["--lookahead", "1", "--buff", "-0.1"], "--buff: buff: -0.1"),
+        (
+            vec!["--lookahead", "-1", "--buff", "0.1"],
+            "--lookahead: -1",
+        ),
+        (
+            vec!["--lookahead", "1", "--buff", "-0.1"],
+            "--buff: buff: -0.1",
+        ),
         (
             vec!["--lookahead", "1", "--buff", "0.1", "--fac", "1"],
             "--fac",

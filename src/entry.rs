@@ -687,6 +687,19 @@ mod tests {
     }
 
     #[test]
+    fn names_and_enclosures_are_the_answers_own() {
+        let enters = EntryTime::Enters { lo: 2.5, hi: 3.0 };
+        let possible = EntryTime::Possible { lo: 1.0, hi: 10.0 };
+        assert_eq!(
+            [EntryTime::Never.name(), enters.name(), possible.name()],
+            ["never", "enters", "possible"]
+        );
+        assert_eq!(EntryTime::Never.enclosure(), None);
+        assert_eq!(enters.enclosure(), Some((2.5, 3.0)));
+        assert_eq!(possible.enclosure(), Some((1.0, 10.0)));
+    }
+
+    #[test]
     fn a_crossing_is_enclosed_tightly() {
         // The point (1, −3) moving up at 1 meets the square's bottom edge at t = 3.
         let p = square(2.0);

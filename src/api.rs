@@ -413,33 +413,56 @@ pub struct Detection {
     pub well_formed_fault: Option<Fault>,
 }
 
+/// Paper A §II.F and §III for one point and one polygon, on the polygon's own slices
+/// (no case is built, nothing is cloned): which detector decides, and its three-valued
+/// answer. Shared by [`decide`] and the batch. A point and polygon of different
+/// dimensions (which `Case::new` refuses) are decided in 2D.
+#[inline]
+pub(crate) fn decide_pair(
+    t: f64,
+    pt: &MovingPoint,
+    q: &MovingPolygon,
+    params: &Params,
+) -> (Method, Tri) {
+    let (p, vels) = (&q.vertices[..], &q.velocities[..]);
+    let (s, v) = (pt.pos, pt.vel);
+    let (buff, fac) = (params.buff, params.fac);
+    match (pt.z, q.slab) {
+        (Some((sz, vz)), Some(slab)) => (
+            Method::Detect3d,
+            detect_3d_tri(
+                t,
+                s,
+                v,
+                sz,
+                vz,
+                p,
+                vels,
+                slab.bottom,
+                slab.top,
+                slab.vz,
+                buff,
+                fac,
+            ),
+        ),
+        _ => match dispatch(false, vels) {
+            Method::DetectSame2d => (
+                Method::DetectSame2d,
+                detect_same_2d_tri(t, s, v, p, vels, buff),
+            ),
+            _ => (
+                Method::DetectDiff2d,
+                detect_diff_2d_tri(t, s, v, p, vels, fac, buff),
+            ),
+        },
+    }
+}
+
 /// The three-valued decision: `Yes`/`No` certified, `Unsure` when a comparison could
 /// not be decided. The paper's functions see the case's own coordinates: every decision
 /// is taken on differences from the point, so no rounded translation is needed.
 pub fn decide(case: &Case) -> Tri {
-    let p = &case.polygon.vertices[..];
-    let vels = &case.polygon.velocities[..];
-    let (s, v, t) = (case.point.pos, case.point.vel, case.lookahead);
-    let (buff, fac) = (case.params.buff, case.params.fac);
-    match (case.method(), case.point.z, case.polygon.slab) {
-        (Method::Detect3d, Some((sz, vz)), Some(slab)) => detect_3d_tri(
-            t,
-            s,
-            v,
-            sz,
-            vz,
-            p,
-            vels,
-            slab.bottom,
-            slab.top,
-            slab.vz,
-            buff,
-            fac,
-        ),
-        (Method::DetectSame2d, ..) => detect_same_2d_tri(t, s, v, p, vels, buff),
-        // DetectDiff2d (Detect3d always has both heights: Case::new checks it)
-        _ => detect_diff_2d_tri(t, s, v, p, vels, fac, buff),
-    }
+    decide_pair(case.lookahead, &case.point, &case.polygon, &case.params).1
 }
 
 /// The decision alone (no well_formed check): the engine's hot path. Never `false` when

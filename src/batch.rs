@@ -14,8 +14,8 @@
 //!    the polygons' boxes (`Broad::Grid`); `Broad::AllPairs` tests every pair's boxes,
 //!    the reference the grid is measured and tested against.
 //! 2. **Narrow phase**: the certified paper functions on the slices, as
-//!    [`api::decide`](crate::api::decide) calls them ([`detect_same_2d_tri`],
-//!    [`detect_diff_2d_tri`], [`detect_3d_tri`]), with no allocation per pair.
+//!    [`api::decide`](crate::api::decide) calls them ([`detect_same_2d_tri`](crate::detect::detect_same_2d_tri),
+//!    [`detect_diff_2d_tri`](crate::detect::detect_diff_2d_tri), [`detect_3d_tri`](crate::detect::detect_3d_tri)), with no allocation per pair.
 //!
 //! With the feature `parallel` the points are answered in chunks across rayon's threads;
 //! without it the same code runs on the calling thread. The answer is the same either
@@ -43,11 +43,9 @@
 
 use std::vec::Vec;
 
-use crate::api::{Kind, MovingPoint, MovingPolygon, Params};
+use crate::api::{decide_pair, Kind, MovingPoint, MovingPolygon, Params};
 use crate::ball::{self, round_down, round_up, Ball, Tri};
-use crate::detect::{
-    detect_3d_tri, detect_diff_2d_tri, detect_same_2d_tri, dispatch, never_collapses, Method,
-};
+use crate::detect::{dispatch, never_collapses, Method};
 use crate::error::CaseError;
 
 /// One detected pair: point `point` (its index in the points given) may enter polygon
@@ -306,45 +304,6 @@ fn run_chunk(ctx: &Ctx<'_>, start: usize, end: usize, scratch: &mut Vec<u32>) ->
         }
     }
     out
-}
-
-/// Paper A §II.F and §III for one pair, as [`api::decide`](crate::api::decide) does it,
-/// on the polygon's own slices (no case is built, nothing is cloned). The caller has
-/// checked that both are 2D or both 3D.
-#[inline]
-fn decide_pair(t: f64, pt: &MovingPoint, q: &MovingPolygon, params: &Params) -> (Method, Tri) {
-    let (p, vels) = (q.vertices(), q.velocities());
-    let (s, v) = (pt.pos, pt.vel);
-    let (buff, fac) = (params.buff(), params.fac());
-    match (pt.z, q.slab()) {
-        (Some((sz, vz)), Some(slab)) => (
-            Method::Detect3d,
-            detect_3d_tri(
-                t,
-                s,
-                v,
-                sz,
-                vz,
-                p,
-                vels,
-                slab.bottom,
-                slab.top,
-                slab.vz,
-                buff,
-                fac,
-            ),
-        ),
-        _ => match dispatch(false, vels) {
-            Method::DetectSame2d => (
-                Method::DetectSame2d,
-                detect_same_2d_tri(t, s, v, p, vels, buff),
-            ),
-            _ => (
-                Method::DetectDiff2d,
-                detect_diff_2d_tri(t, s, v, p, vels, fac, buff),
-            ),
-        },
-    }
 }
 
 // ============================================================== the broad phase

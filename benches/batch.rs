@@ -1,6 +1,6 @@
 //! Criterion bench of batch detection (`polyguard::batch`, issue 13), group `batch`:
 //! 10⁴ points against 10³ polygons of 8 vertices at the harness's density
-//! (`polyguard_cli::harness::batch`: polygons about 1 across, one per 1000 square units
+//! (`polyguard_harness::batch`: polygons about 1 across, one per 1000 square units
 //! in a 1000 × 1000 square, a quarter warping; points at 2 to 5 units per time unit for
 //! T = 10, a tenth of them aimed at a polygon's vertex), seed 1.
 //!
@@ -15,7 +15,7 @@
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use polyguard::api::Params;
 use polyguard::batch::{detect_batch_with, Broad, Options};
-use polyguard_cli::harness::batch::{batch_workload, Mix, BUFF, FAC, T};
+use polyguard_harness::batch::{batch_workload, Mix, BUFF, FAC, T};
 
 fn batch(c: &mut Criterion) {
     let w = batch_workload(10_000, 1_000, 1, Mix::BENCH);

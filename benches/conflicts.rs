@@ -5,13 +5,13 @@
 //! (`polyguard generate … --density-box | polyguard conflicts -`), see the note.
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-use polyguard_cli::commands::generate::seeded;
 use polyguard_earth::analysis::analyse;
 use polyguard_earth::conflict::{
     pipeline, stage1, stage2, stage3, stage4, DEFAULT_TIME_TOLERANCE_H,
 };
 use polyguard_earth::generate::Mix;
 use polyguard_earth::scenario;
+use polyguard_harness::paper_b::seeded;
 
 fn text(n: usize, mix: Mix, density_box: bool) -> String {
     scenario::to_geojson(&seeded(n, mix, 1, density_box)).to_string()

@@ -17,7 +17,7 @@
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use polyguard::detect::{detect_3d, detect_diff_2d, detect_same_2d};
 use polyguard::plain::detect as plain;
-use polyguard_cli::harness::workload::{workload, Workload, BUFF, CASES, FAC, T};
+use polyguard_harness::workload::{workload, Workload, BUFF, CASES, FAC, T};
 
 fn hits(w: &Workload, f: impl Fn(&Workload, usize) -> bool) -> usize {
     (0..CASES).filter(|&i| f(w, i)).count()

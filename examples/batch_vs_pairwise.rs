@@ -1,5 +1,5 @@
 //! The batch contract at the bench's scale (batch detection, issue 13): on the seeded
-//! batch workload (`polyguard_cli::harness::batch`), `detect_batch` against
+//! batch workload (`polyguard_harness::batch`), `detect_batch` against
 //! `api::detected` on every one of the N·M pairs, 2D and 3D. Too slow for a unit test at
 //! 10⁴ × 10³ in debug; in release it takes seconds:
 //!
@@ -16,7 +16,7 @@ use std::time::Instant;
 use polyguard::api::{decide, Case, Kind, Params};
 use polyguard::batch::{detect_batch_with, Hit, Options};
 use polyguard::Tri;
-use polyguard_cli::harness::batch::{batch_workload, Mix, BUFF, FAC, T};
+use polyguard_harness::batch::{batch_workload, Mix, BUFF, FAC, T};
 
 fn main() -> ExitCode {
     let arg = |k: usize, d: u64| {

@@ -11,7 +11,7 @@ use std::hash::{DefaultHasher, Hash, Hasher};
 
 use polyguard::api::decide;
 use polyguard::ball::Tri;
-use polyguard_cli::harness::gen::{any_case, SplitMix};
+use polyguard_harness::gen::{any_case, SplitMix};
 
 fn main() {
     let mut args = std::env::args().skip(1);

@@ -1,5 +1,5 @@
 //! The certified engine against the plain f64 transcription (`polyguard::plain`, the
-//! engine of commit b0875a2) on the criterion workload (`polyguard_cli::harness::workload`),
+//! engine of commit b0875a2) on the criterion workload (`polyguard_harness::workload`),
 //! interleaved in one process: 30 rounds of `REPS` passes over the 256 cases per engine,
 //! the fastest round of each reported, and their ratio. A quick look between criterion
 //! runs on a noisy machine; callgrind gives instruction counts that the load does not
@@ -22,7 +22,7 @@ use std::time::Instant;
 
 use polyguard::detect::{detect_3d, detect_diff_2d, detect_same_2d};
 use polyguard::plain::detect as plain;
-use polyguard_cli::harness::workload::{workload, Workload, BUFF, CASES, FAC, T};
+use polyguard_harness::workload::{workload, Workload, BUFF, CASES, FAC, T};
 
 /// How many cases of `w` the engine finds, over `reps` passes.
 #[inline(never)]

@@ -1,4 +1,4 @@
-//! Writes the benchmark workload (`polyguard_cli::harness::workload`) as case lines, so that
+//! Writes the benchmark workload (`polyguard_harness::workload`) as case lines, so that
 //! `polyguard detect --repeat R --timing` times it and counts its answers' `kind`:
 //!
 //! ```text
@@ -14,7 +14,7 @@
 use std::io::{self, BufWriter, Write};
 
 use polyguard::Vect2;
-use polyguard_cli::harness::workload::{workload, BUFF, FAC, T};
+use polyguard_harness::workload::{workload, BUFF, FAC, T};
 
 fn pairs(v: &[Vect2]) -> String {
     let items: Vec<String> = v.iter().map(|p| format!("[{:?},{:?}]", p.x, p.y)).collect();

@@ -8,9 +8,9 @@
 use polyguard::api::{decide, Case, Kind, MovingPoint, MovingPolygon, Params};
 use polyguard::batch::{detect_batch, detect_batch_with, Broad, Hit, Options};
 use polyguard::Tri;
-use polyguard_cli::case::RawCase;
-use polyguard_cli::harness::batch::{batch_workload, Mix, BUFF, T};
-use polyguard_cli::harness::classify::Exact;
+use polyguard_harness::batch::{batch_workload, Mix, BUFF, T};
+use polyguard_harness::case::RawCase;
+use polyguard_harness::classify::Exact;
 use polyguard_oracle::paper_detect;
 use proptest::prelude::*;
 

@@ -3,7 +3,7 @@
 //! own theorem in exact arithmetic "truth enters ⇒ paper-exact detects", and the engine's
 //! certificate both ways: a certified yes or no is paper A's answer.
 //!
-//! The cases are the harness's (`polyguard_cli::harness::gen::any_case`, the generator
+//! The cases are the harness's (`polyguard_harness::gen::any_case`, the generator
 //! `polyguard assure` and the fuzz targets draw from): the point exactly at, or a few
 //! ulps / a relative 10⁻¹⁵…10⁻³ inside or outside of, the BUFF band around an edge or a
 //! vertex, through vertices, along edges, first contact at t = 0 or t = T, over the whole
@@ -12,8 +12,8 @@
 
 use polyguard::api::{decide, detected};
 use polyguard::ball::Tri;
-use polyguard_cli::harness::classify::Exact;
-use polyguard_cli::harness::gen::{any_case, SplitMix};
+use polyguard_harness::classify::Exact;
+use polyguard_harness::gen::{any_case, SplitMix};
 use polyguard_oracle::{paper_detect, truth, Truth};
 use proptest::prelude::*;
 

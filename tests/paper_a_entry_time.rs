@@ -7,8 +7,8 @@
 
 use polyguard::api::{detect_time, detected};
 use polyguard::entry::EntryTime;
-use polyguard_cli::harness::classify::{shifted, time_failure as judge, Exact, TIME_CANARY_STEPS};
-use polyguard_cli::harness::gen::{any_case, SplitMix};
+use polyguard_harness::classify::{shifted, time_failure as judge, Exact, TIME_CANARY_STEPS};
+use polyguard_harness::gen::{any_case, SplitMix};
 use polyguard_oracle::{truth, Truth};
 use proptest::prelude::*;
 

@@ -16,10 +16,10 @@ use std::path::Path;
 
 use polyguard::detect::Method;
 use polyguard::{api, detect, Tri, Vect2};
-use polyguard_cli::case::parse_line;
-use polyguard_cli::case::RawCase;
-use polyguard_cli::harness::classify::Exact;
-use polyguard_cli::harness::gen::{self, SplitMix};
+use polyguard_harness::case::parse_line;
+use polyguard_harness::case::RawCase;
+use polyguard_harness::classify::Exact;
+use polyguard_harness::gen::{self, SplitMix};
 
 /// The slice function paper A's dispatch picks, on the raw case's own numbers.
 fn slice_answer(raw: &RawCase) -> Tri {

@@ -12,9 +12,9 @@
 use std::fs;
 use std::path::{Path, PathBuf};
 
-use polyguard_cli::case::parse_line;
-use polyguard_cli::case::RawCase;
-use polyguard_cli::harness::classify::{compare, Class};
+use polyguard_harness::case::parse_line;
+use polyguard_harness::case::RawCase;
+use polyguard_harness::classify::{compare, Class};
 use serde_json::Value;
 
 fn corpus_files() -> Vec<PathBuf> {
@@ -123,7 +123,7 @@ fn every_recorded_case_keeps_its_class() {
 /// missing them, the cases no longer show what the certificate is for.
 #[test]
 fn the_plain_transcription_still_misses_the_canary_cases() {
-    use polyguard_cli::harness::classify::{compare_as, Hunted};
+    use polyguard_harness::classify::{compare_as, Hunted};
     let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/regressions/plain-canary.jsonl");
     let text = fs::read_to_string(&file).unwrap_or_else(|e| panic!("{}: {e}", file.display()));
     let mut n = 0;

@@ -7,7 +7,7 @@ use arbitrary::Arbitrary;
 use libfuzzer_sys::fuzz_target;
 use polyguard::api::{self, Case, MovingPoint, MovingPolygon, Params};
 use polyguard::detect::{dot_nn, slab_window, statically_shaped};
-use polyguard_cli::case::RawCase;
+use polyguard_harness::case::RawCase;
 use polyguard::{
     definitely_outside, detect_3d, detect_diff_2d, detect_same_2d, dot_nn_lin, edge_detect,
     edge_detect_simp, near_edge, num_cross, perturb, quad_min_box_le_d, quad_min_le_d,

@@ -3,7 +3,7 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use polyguard_cli::harness::gen::Shape;
+use polyguard_harness::gen::Shape;
 
 fuzz_target!(|data: &[u8]| {
     polyguard_fuzz::differential(data, Shape::Static);

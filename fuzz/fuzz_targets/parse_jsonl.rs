@@ -3,9 +3,9 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use polyguard_cli::case::parse_line;
+use polyguard_harness::case::parse_line;
 use polyguard_cli::commands::detect::{process, DetectArgs, Engine};
-use polyguard_cli::case::RawCase;
+use polyguard_harness::case::RawCase;
 
 /// Lines handed to `process` at most (each runs the engine once).
 const MAX_LINES: usize = 8;
@@ -35,7 +35,7 @@ fuzz_target!(|data: &[u8]| {
         engine: Engine::F64,
         repeat: 1,
         timing: false,
-        kappa: polyguard_cli::case::DEFAULT_KAPPA_DEG,
+        kappa: polyguard_harness::case::DEFAULT_KAPPA_DEG,
         case_timeout: None,
         time: false,
     };

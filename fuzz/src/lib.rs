@@ -9,10 +9,10 @@
 //!   ±0, subnormals, the overflow and underflow thresholds of a square).
 
 use arbitrary::{Arbitrary, Unstructured};
-use polyguard_cli::case::parse_line;
-use polyguard_cli::harness::classify::{self, Class};
-use polyguard_cli::harness::gen::{self, Bytes, Mode, Shape, Source};
-use polyguard_cli::case::RawCase;
+use polyguard_harness::case::parse_line;
+use polyguard_harness::classify::{self, Class};
+use polyguard_harness::gen::{self, Bytes, Mode, Shape, Source};
+use polyguard_harness::case::RawCase;
 
 /// The snake_case name of a shape, as the target names use it.
 pub fn shape_name(shape: Shape) -> &'static str {
@@ -159,11 +159,11 @@ impl<'a> Arbitrary<'a> for Num {
 }
 
 /// Paper B's pipeline against its ground truth on a two-feature scenario drawn by
-/// `assure --paper b`'s generator (`polyguard_cli::harness::paper_b`), steered by the
+/// `assure --paper b`'s generator (`polyguard_harness::paper_b`), steered by the
 /// input's bytes. Panics on a failure class (missed conflict, short window, far end,
 /// broken speed bound) or on a generated scenario the reader refuses.
 pub fn paper_b(data: &[u8]) {
-    use polyguard_cli::harness::paper_b as pb;
+    use polyguard_harness::paper_b as pb;
     let mut src = Bytes::new(data);
     let case = pb::draw(&mut src);
     match pb::judge(&case) {

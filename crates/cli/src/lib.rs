@@ -1,14 +1,7 @@
-//! polyguard-cli: the `polyguard` command-line tool, the harness that pits the engine
-//! against the exact oracle and the exact truth, and the case JSON Lines I/O
-//! (`docs/cases.md`).
-//!
-//! - [`case`]: reading case lines into the engine's [`polyguard::api::Case`].
-//! - [`harness`]: seeded and fuzzer-driven case generators, classification of engine
-//!   answers against paper A and the truth, minimisation, reports and pictures.
-//! - [`commands`]: `detect`, `detect-batch`, `detect-earth`, `assure`, `conflicts` and
-//!   `generate`, the only code that prints.
+//! polyguard-cli: the `polyguard` command-line tool. Its [`commands`] (`detect`,
+//! `detect-batch`, `detect-earth`, `assure`, `conflicts`, `generate`) are the only code
+//! that parses arguments and prints; the case format, the generators, the classification
+//! and the reports are the harness crate's (`polyguard-harness`).
 #![deny(missing_docs)]
 
-pub mod case;
 pub mod commands;
-pub mod harness;

@@ -120,7 +120,7 @@ fn edit(base: &str, from: &str, to: &str) -> String {
 }
 
 fn reader_accepts(line: &str) -> Result<(), String> {
-    polyguard_cli::case::parse_line(line, 1)
+    polyguard_harness::case::parse_line(line, 1)
         .case
         .map(|_| ())
         .map_err(|e| e.to_string())

@@ -4,12 +4,12 @@
 //! Scale with `POLYGUARD_PROPTEST_CASES` (default 64) and `POLYGUARD_DENSE_PAIRS`
 //! (default 300; the acceptance run uses 10000).
 
-use polyguard_cli::commands::generate::seeded;
 use polyguard_earth::conflict::{geom, pipeline, stage1, stage3, stage4, Object};
 use polyguard_earth::generate::Mix;
 use polyguard_earth::reference::rational as ex;
 use polyguard_earth::scenario;
 use polyguard_earth::sphere::{LonLat, RectDims};
+use polyguard_harness::paper_b::seeded;
 use proptest::prelude::*;
 
 fn cases() -> u32 {

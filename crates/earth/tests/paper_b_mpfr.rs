@@ -36,7 +36,7 @@ fn cases() -> usize {
 }
 
 use mp::error_ulps as ulps;
-use polyguard_cli::harness::gen::{Source, SplitMix};
+use polyguard_harness::gen::{Source, SplitMix};
 
 struct Max(&'static str, f64);
 impl Max {

@@ -8,7 +8,7 @@
 use numpy::{PyArrayDyn, PyArrayMethods};
 use polyguard::api::{Case, Params};
 use polyguard::error::CaseError;
-use polyguard_cli::case::RawCase;
+use polyguard_harness::case::RawCase;
 use pyo3::prelude::*;
 use pyo3::types::{PyFloat, PyList, PyString, PyTuple};
 
@@ -163,7 +163,7 @@ impl CaseArgs<'_, '_> {
         };
         let kappa_deg = match self.kappa_deg {
             Some(k) => number(k, "kappa")?,
-            None => polyguard_cli::case::DEFAULT_KAPPA_DEG,
+            None => polyguard_harness::case::DEFAULT_KAPPA_DEG,
         };
         let pos = numbers(self.pos, "point.pos")?;
         if pos.len() != 2 && pos.len() != 3 {
@@ -228,7 +228,7 @@ pub fn case_from_object(py: Python<'_>, case: &Bound<'_, PyAny>) -> PyResult<Cas
             .call_method1("dumps", (case,))?
             .extract()?
     };
-    let parsed = polyguard_cli::case::parse_line(&text, 1);
+    let parsed = polyguard_harness::case::parse_line(&text, 1);
     parsed
         .case
         .map_err(|e| crate::engine_error(py, &e, str::to_owned))

@@ -4,8 +4,8 @@
 
 use polyguard::api::{self, Case};
 use polyguard::entry::EntryTime as EngineEntry;
-use polyguard_cli::case::RawCase;
-use polyguard_cli::harness::classify::Exact;
+use polyguard_harness::case::RawCase;
+use polyguard_harness::classify::Exact;
 use pyo3::prelude::*;
 
 use crate::args::{case_from_object, CaseArgs};

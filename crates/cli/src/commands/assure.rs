@@ -10,14 +10,14 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Mutex;
 use std::time::Instant;
 
-use crate::case::RawCase;
-use crate::harness::classify::{check_contract, compare_as, Class, Hunted, Verdict};
-use crate::harness::gen::{any_case_in, bucket, Ends, Space, SplitMix};
-use crate::harness::minimise::minimise;
-use crate::harness::report::{Kept, Report};
-use crate::harness::svg::{picture, Picture};
+use polyguard_harness::case::RawCase;
+use polyguard_harness::classify::{check_contract, compare_as, Class, Hunted, Verdict};
+use polyguard_harness::gen::{any_case_in, bucket, Ends, Space, SplitMix};
+use polyguard_harness::minimise::minimise;
+use polyguard_harness::report::{Kept, Report};
+use polyguard_harness::svg::{picture, Picture};
 
-pub use crate::harness::report::KEEP_PER_CLASS;
+pub use polyguard_harness::report::KEEP_PER_CLASS;
 
 /// Arguments of `polyguard assure`.
 #[derive(Debug, clap::Args)]
@@ -232,7 +232,7 @@ fn parse_shard(s: &str) -> Result<(u64, u64), String> {
 /// The generator's seed for case k of a campaign.
 fn case_seed(seed: u64, k: u64) -> u64 {
     let mut m = SplitMix(seed ^ k.wrapping_mul(0xD1B5_4A32_D192_ED03));
-    crate::harness::gen::Source::next_u64(&mut m)
+    polyguard_harness::gen::Source::next_u64(&mut m)
 }
 
 /// Case k of a campaign drawn from `space`, with its generator mode.
@@ -318,7 +318,7 @@ fn draw(small: &RawCase, w: &Verdict, mode: &str, hunted: Hunted) -> String {
 fn redraw(case_file: &Path, mode: &str, hunted: Hunted) -> Result<String, String> {
     let text = fs::read_to_string(case_file).map_err(|e| e.to_string())?;
     let line = text.lines().next().unwrap_or_default();
-    let case = crate::case::parse_line(line, 1)
+    let case = polyguard_harness::case::parse_line(line, 1)
         .case
         .map_err(|e| e.to_string())?;
     let small = RawCase::from_api(&case);
@@ -534,7 +534,7 @@ fn finish(report: &Report, out: &Path) -> ExitCode {
     if !report.missing_shards.is_empty() {
         text += &format!(
             "PARTIAL: {} of this {}-case campaign are missing; the counts cover {} cases\n",
-            crate::harness::report::shard_ranges(&report.missing_shards),
+            polyguard_harness::report::shard_ranges(&report.missing_shards),
             report.campaign_cases,
             report.cases
         );

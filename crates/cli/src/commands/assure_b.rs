@@ -1,5 +1,5 @@
 //! `polyguard assure --paper b`: a seeded, sharded hunt of paper B's pipeline against the
-//! ground truth ([`crate::harness::paper_b`]), and `assure merge` of its reports.
+//! ground truth ([`polyguard_harness::paper_b`]), and `assure merge` of its reports.
 
 use std::fs;
 use std::io::Write;
@@ -9,11 +9,11 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Mutex;
 use std::time::Instant;
 
-use crate::harness::gen::{Source, SplitMix};
-use crate::harness::paper_b::{self, CaseB, ClassB, KeptB, ReportB, VerdictB};
 use polyguard_earth::conflict::{geom, pipeline, Object};
 use polyguard_earth::reference::truth::Outcome;
 use polyguard_earth::scenario::{self, Scenario};
+use polyguard_harness::gen::{Source, SplitMix};
+use polyguard_harness::paper_b::{self, CaseB, ClassB, KeptB, ReportB, VerdictB};
 
 /// Kept cases per class (failures and undecided ones), those of the lowest indices.
 pub const KEEP_PER_CLASS: usize = 5;

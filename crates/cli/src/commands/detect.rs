@@ -10,10 +10,10 @@ use std::time::Instant;
 
 use serde_json::{json, Map, Value};
 
-use crate::case::parse_line_with;
-use crate::case::RawCase;
-use crate::harness::classify::Exact;
 use polyguard::api::{self, Case};
+use polyguard_harness::case::parse_line_with;
+use polyguard_harness::case::RawCase;
+use polyguard_harness::classify::Exact;
 
 /// Which implementation answers.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -45,7 +45,7 @@ pub struct DetectArgs {
     pub timing: bool,
     /// κ, the corner angle of the well-formedness report (§II.J), in degrees, for cases
     /// that give no `kappa` of their own.
-    #[arg(long, default_value_t = crate::case::DEFAULT_KAPPA_DEG)]
+    #[arg(long, default_value_t = polyguard_harness::case::DEFAULT_KAPPA_DEG)]
     pub kappa: f64,
     /// Answer a case that takes longer than this many seconds with an error line and go on
     /// with the next (the case's computation is abandoned). Without it every case is

@@ -9,10 +9,10 @@ use std::time::Instant;
 
 use serde_json::{json, Value};
 
-use crate::case::{point_from_line, polygon_from_line, DEFAULT_KAPPA_DEG};
-use crate::harness::batch::{batch_workload, Mix, BUFF, FAC, T};
 use polyguard::api::{Kind, MovingPoint, MovingPolygon, Params};
 use polyguard::batch::{detect_batch_with, Options};
+use polyguard_harness::batch::{batch_workload, Mix, BUFF, FAC, T};
+use polyguard_harness::case::{point_from_line, polygon_from_line, DEFAULT_KAPPA_DEG};
 
 /// Arguments of `polyguard detect-batch`.
 #[derive(Debug, clap::Args)]
@@ -256,7 +256,7 @@ fn answer<W: Write>(
     Ok(bad)
 }
 
-/// `--generate N M`: the seeded workload of `crate::harness::batch` as the two files.
+/// `--generate N M`: the seeded workload of `polyguard_harness::batch` as the two files.
 fn generate(args: &DetectBatchArgs, n: usize, m: usize) -> ExitCode {
     let mix = Mix {
         three_d: args.three_d,

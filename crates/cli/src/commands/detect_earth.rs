@@ -9,10 +9,10 @@ use std::process::ExitCode;
 
 use serde_json::{json, Map, Value};
 
-use crate::case::Strict;
 use crate::commands::conflicts::GeodesyArg;
 use polyguard_earth::geodesy::Geodesy;
 use polyguard_earth::paper_a::{detect_earth, EarthCase, Motion};
+use polyguard_harness::case::Strict;
 
 /// Arguments of `polyguard detect-earth`.
 #[derive(Debug, clap::Args)]

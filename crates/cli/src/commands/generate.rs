@@ -1,8 +1,8 @@
 //! `polyguard generate`: random scenarios as in Paper B Section VI.D
 //! ([`polyguard_earth::generate`]), seeded with the harness's SplitMix64.
 
-use crate::harness::gen::{Source, SplitMix};
-use polyguard_earth::generate::{generate, Mix};
+use polyguard_earth::generate::Mix;
+use polyguard_harness::gen::{Source, SplitMix};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -45,18 +45,6 @@ pub struct GenerateArgs {
     /// Output file (standard output when absent).
     #[arg(long, short)]
     pub output: Option<PathBuf>,
-}
-
-/// Paper B §VI.D: a random scenario of `n` objects from `seed` (the same scenario for the
-/// same arguments on every machine).
-pub fn seeded(
-    n: usize,
-    mix: Mix,
-    seed: u64,
-    density_box: bool,
-) -> polyguard_earth::scenario::Scenario {
-    let mut rng = SplitMix(seed);
-    generate(n, mix, density_box, &mut || rng.next_u64())
 }
 
 /// Above this many objects in the paper's box (without `--density-box`), `generate` warns:
@@ -150,6 +138,7 @@ fn lon_mode(bx_lon: (f64, f64)) -> polyguard_earth::scenario::Longitudes {
 mod tests {
     use super::*;
     use polyguard_earth::scenario::{Kind, Scenario};
+    use polyguard_harness::paper_b::seeded;
 
     /// The file written feature by feature is the whole scenario's GeoJSON, on the Earth
     /// and on the unrolled strip.

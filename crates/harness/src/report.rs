@@ -242,7 +242,7 @@ impl EntryStats {
 
 /// The whole scale space's label, for reports written before `space`.
 fn full_space() -> String {
-    crate::harness::gen::Space::FULL.label()
+    crate::gen::Space::FULL.label()
 }
 
 /// A coverage bucket's name: `path=1eP,buff=1eB`.

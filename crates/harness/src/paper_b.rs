@@ -860,3 +860,16 @@ impl ReportB {
         s
     }
 }
+
+/// Paper B §VI.D: a random scenario of `n` objects from `seed` (the same scenario for the
+/// same arguments on every machine), drawn by [`polyguard_earth::generate::generate`] from
+/// the harness's SplitMix64.
+pub fn seeded(
+    n: usize,
+    mix: polyguard_earth::generate::Mix,
+    seed: u64,
+    density_box: bool,
+) -> polyguard_earth::scenario::Scenario {
+    let mut rng = crate::gen::SplitMix(seed);
+    polyguard_earth::generate::generate(n, mix, density_box, &mut || rng.next_u64())
+}

@@ -1,0 +1,26 @@
+//! polyguard-harness: the one place where the three answers meet (the f64 engine, paper A
+//! in exact arithmetic, the exact ground truth), and the case format's reader. The engine's
+//! tests, benches and fuzz targets, the Python package and the command-line tool
+//! (`polyguard assure`, `detect`, `detect-batch`) all call it. It prints nothing.
+//!
+//! The layers, each using only those above it:
+//! - [`case`]: the case JSON Lines format (docs/cases.md): a line to a [`case::RawCase`],
+//!   to the engine's `polyguard::api::Case`, to the oracle's exact case.
+//! - [`gen`]: boundary-biased case generators over a seeded or byte-fed [`gen::Source`];
+//!   [`workload`]: the uniform benchmark workload (no threshold sought); [`batch`]: the
+//!   seeded batch workload (N points, M polygons) of `detect-batch`.
+//! - [`classify`]: the verdict of one case (agree, float divergence, missed detection, …).
+//! - [`report`]: counts per function, mode and class; shards merge exactly.
+//! - [`minimise`]: a smaller case of the same class. [`svg`]: its picture.
+//! - [`paper_b`]: paper B's hunt (scenario generator, judge, pictures).
+#![deny(missing_docs)]
+
+pub mod batch;
+pub mod case;
+pub mod classify;
+pub mod gen;
+pub mod minimise;
+pub mod paper_b;
+pub mod report;
+pub mod svg;
+pub mod workload;

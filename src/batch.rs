@@ -119,7 +119,7 @@ pub struct Batch {
 /// or an edge that nearly shrinks to a point), is left out, as paper A certainly says no
 /// there. tests/batch.rs checks exactly that against the oracle (a proptest found such a
 /// pair: `a_conservative_pairwise_yes_that_paper_a_denies_may_be_spared`); on the bench's
-/// workloads (examples/batch_vs_pairwise.rs) the two are equal pair for pair.
+/// workloads (crates/harness/examples/batch_vs_pairwise.rs) the two are equal pair for pair.
 ///
 /// Errors: `lookahead` not finite or not > 0 (field `lookahead`); a 3D point (with a
 /// height) in the same batch as a 2D polygon (without a slab), or the reverse (field

@@ -1,5 +1,5 @@
 //! The benchmark workload, shared by benches/detect.rs (criterion),
-//! examples/speed_ratio.rs and examples/uniform_workload.rs (the same cases as case lines,
+//! crates/harness/examples/speed_ratio.rs and crates/harness/examples/uniform_workload.rs (the same cases as case lines,
 //! for `polyguard detect`):
 //! random star-shaped counterclockwise polygons of size ~1000, lookahead 300, BUFF 0.01,
 //! F 1e-4, a point starting 1500 from the centre aimed within 800 of it, about half the

@@ -209,7 +209,7 @@ fn degrees(p: LonLat) -> [f64; 2] {
 /// 3 to 40 nm across, drifting at up to 40 kn; an aircraft at 60 to 600 kn whose track
 /// passes the cell's centre at a random offset at a random time of [0, T]. One in three
 /// is placed on the antimeridian. BUFF is 1 nm (callers set their own). The generator of
-/// the tests (tests/paper_a_earth.rs) and of the measurement (examples/earth_false_alarms.rs).
+/// the tests (tests/paper_a_earth.rs) and of the measurement (crates/harness/examples/earth_false_alarms.rs).
 pub fn encounter(seed: u64, lat: f64) -> EarthCase {
     let mut r = Mix(seed);
     let lon = if r.bits() % 3 == 0 {

@@ -4,7 +4,7 @@
 //! 10⁴ × 10³ in debug; in release it takes seconds:
 //!
 //! ```text
-//! cargo run --release --features parallel --example batch_vs_pairwise -- 10000 1000 1
+//! cargo run --release -p polyguard-harness --features parallel --example batch_vs_pairwise -- 10000 1000 1
 //! ```
 //!
 //! Arguments: N points, M polygons, the seed (10000, 1000, 1 by default). Prints the

@@ -6,8 +6,8 @@
 //! move:
 //!
 //! ```text
-//! cargo run --release --features plain --example speed_ratio              # every group
-//! cargo run --release --features plain --example speed_ratio -- diff 4    # one group
+//! cargo run --release -p polyguard-harness --example speed_ratio              # every group
+//! cargo run --release -p polyguard-harness --example speed_ratio -- diff 4    # one group
 //! valgrind --tool=callgrind --toggle-collect='speed_ratio::run' \
 //!     target/release/examples/speed_ratio diff 4 certified 10
 //! ```

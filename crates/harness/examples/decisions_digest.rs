@@ -5,7 +5,7 @@
 //! be written for it; one whose digest is the same on 10⁶ cases of the scale-space
 //! generators is a candidate for "equivalent" (then argued in docs/mutation.md).
 //!
-//!   cargo run --release --example decisions_digest -- [N] [FIRST_SEED]
+//!   cargo run --release -p polyguard-harness --example decisions_digest -- [N] [FIRST_SEED]
 
 use std::hash::{DefaultHasher, Hash, Hasher};
 

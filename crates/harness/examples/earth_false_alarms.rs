@@ -6,7 +6,7 @@
 //! the false-alarm rate for aircraft passing 5 % and 20 % beyond BUFF. The same with one
 //! piece, and how often the canary (unscaled BUFF) misses an approach within BUFF.
 //!
-//! `cargo run --release --example earth_false_alarms [N per latitude]`
+//! `cargo run --release -p polyguard-harness --example earth_false_alarms [N per latitude]`
 
 use polyguard_earth::geodesy::Geodesy;
 use polyguard_earth::paper_a::{detect_earth_with, Buffer, EarthCase, Options, Pieces};

@@ -2,7 +2,7 @@
 //! `polyguard detect --repeat R --timing` times it and counts its answers' `kind`:
 //!
 //! ```text
-//! cargo run --release --example uniform_workload -- 256 > workload.jsonl
+//! cargo run --release -p polyguard-harness --example uniform_workload -- 256 > workload.jsonl
 //! polyguard detect workload.jsonl --repeat 200 --timing > answers.jsonl
 //! ```
 //!

@@ -6,6 +6,9 @@
    comments and attributes) says why, with the words "Long because".
 3. No crate has an import circle between sibling modules: a file of module a names
    module b (`crate::b`, `super::b`) and a file of b names a, directly or through others.
+4. Comments say what and why, never the history: no "issue N" and no commit hash
+   ("commit 1a2b3c4", or a bare hash of 7 to 40 hex digits holding a letter and a digit)
+   in the comments of Rust sources, build files and scripts. History goes in CHANGELOG.md.
 
 Usage: scripts/check-structure.py [ROOT] [--report]
 Exit 0 when every rule holds, 1 otherwise, listing each breach. --report prints the
@@ -130,6 +133,34 @@ def functions(path):
     return found
 
 
+HISTORY = re.compile(r"\bissue\s+#?\d+|\bcommit\s+[0-9a-f]{7,40}\b", re.IGNORECASE)
+HASH = re.compile(r"\b(?=[0-9a-f]*[a-f])(?=[0-9a-f]*[0-9])[0-9a-f]{7,40}\b")
+HISTORY_FILES = (".rs", ".toml", ".sh", ".py")
+HISTORY_NAMES = ("run", "build.sh")
+
+
+def comments(path):
+    """(line number, comment text) for each comment line of a Rust, TOML, shell or Python
+    file (`//` and `#` comments; a `#` inside a string is not told apart, which errs on the
+    side of reporting)."""
+    marker = "//" if path.endswith(".rs") else "#"
+    with open(path, encoding="utf-8") as f:
+        for k, line in enumerate(f, 1):
+            at = line.find(marker)
+            if at >= 0 and not (marker == "#" and line.lstrip().startswith("#!") and k == 1):
+                if marker == "#" and path.endswith(".rs"):
+                    continue
+                yield k, line[at:]
+
+
+def history_files(root):
+    for dirpath, dirnames, filenames in os.walk(root):
+        dirnames[:] = sorted(d for d in dirnames if d not in SKIP_DIRS and (not d.startswith(".") or d in (".ci", ".clusterfuzzlite")))
+        for name in sorted(filenames):
+            if name.endswith(HISTORY_FILES) or name in HISTORY_NAMES:
+                yield os.path.join(dirpath, name)
+
+
 def crate_roots(root):
     """Every src/ folder of a crate in the workspace (a folder holding Cargo.toml and src/)."""
     for dirpath, dirnames, filenames in os.walk(root):
@@ -251,6 +282,14 @@ def main(argv):
     for src in sorted(crate_roots(root)):
         for comp in circles(module_graph(src)):
             breaches.append(f"{os.path.relpath(src, root)}: import circle between the modules {', '.join(comp)}")
+
+    for path in history_files(root):
+        if os.path.basename(path) == "check-structure.py":
+            continue
+        for k, text in comments(path):
+            m = HISTORY.search(text) or HASH.search(text)
+            if m:
+                breaches.append(f"{os.path.relpath(path, root)}:{k}: history in a comment ({m.group(0)!r}); it belongs in CHANGELOG.md")
 
     if report:
         for count, where, exempt in sorted(longest, reverse=True)[:25]:

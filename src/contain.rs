@@ -17,6 +17,15 @@ use crate::vect2::Vect2;
 /// 2·BUFF puts the vertex at x ≤ s_x − BUFF < s_x, off the upward ray, as §II.D needs.
 /// The decision is exact (a sum of three floats); the moved x is rounded once.
 #[inline]
+///
+/// ```
+/// use polyguard::{perturb, Vect2};
+/// let s = Vect2::new(0.0, 0.0);
+/// // a vertex just above s, within BUFF of the upward ray, moves 2·BUFF left
+/// assert_eq!(perturb(Vect2::new(0.05, 3.0), s, 0.1), Vect2::new(0.05 - 0.2, 3.0));
+/// // a vertex below s stays
+/// assert_eq!(perturb(Vect2::new(0.05, -3.0), s, 0.1), Vect2::new(0.05, -3.0));
+/// ```
 pub fn perturb(p: Vect2, s: Vect2, buff: f64) -> Vect2 {
     let q = BallV::diff(p, s);
     if pr::perturbs(q, || Some(Terms::diff(p, s)), buff) == Tri::Yes {
@@ -256,6 +265,13 @@ pub fn near_edge_rel(
 /// Certified: `false` only when the exact answer is false; `true` when it is true or
 /// when a comparison could not be decided in f64 (see [`near_edge_tri`]).
 #[inline]
+///
+/// ```
+/// use polyguard::{near_edge, Vect2};
+/// let (a, b) = (Vect2::new(0.0, 0.0), Vect2::new(4.0, 0.0));
+/// assert!(near_edge(a, b, Vect2::new(2.0, 0.5), 1.0)); // 0.5 from the edge's middle
+/// assert!(!near_edge(a, b, Vect2::new(6.0, 0.0), 1.0)); // 2 beyond its end
+/// ```
 pub fn near_edge(pi: Vect2, pj: Vect2, s: Vect2, buff: f64) -> bool {
     near_edge_tri(pi, pj, s, buff).or_true()
 }
@@ -292,6 +308,13 @@ pub fn edge_crosses_ray(pi: Vect2, pj: Vect2, s: Vect2) -> bool {
 /// Paper A §II.D num_cross: how many edges of P cross the upward ray from s.
 /// P is assumed perturbed (no vertex on the ray), as the paper requires.
 #[inline]
+///
+/// ```
+/// use polyguard::{num_cross, Vect2};
+/// let square = [Vect2::new(0.0, 0.0), Vect2::new(2.0, 0.0), Vect2::new(2.0, 2.0), Vect2::new(0.0, 2.0)];
+/// assert_eq!(num_cross(&square[..], Vect2::new(1.0, 1.0)), 1); // inside: odd
+/// assert_eq!(num_cross(&square[..], Vect2::new(1.0, -1.0)), 2); // below it: even
+/// ```
 pub fn num_cross<P: VertexSeq + ?Sized>(p: &P, s: Vect2) -> usize {
     let n = p.count();
     (0..n)
@@ -304,6 +327,14 @@ pub fn num_cross<P: VertexSeq + ?Sized>(p: &P, s: Vect2) -> usize {
 ///
 /// Certified: `true` only when the exact answer is true (see [`definitely_outside_rel`]).
 #[inline]
+///
+/// ```
+/// use polyguard::{definitely_outside, Vect2};
+/// let square = [Vect2::new(0.0, 0.0), Vect2::new(2.0, 0.0), Vect2::new(2.0, 2.0), Vect2::new(0.0, 2.0)];
+/// assert!(definitely_outside(&square[..], Vect2::new(5.0, 1.0), 0.1));
+/// assert!(!definitely_outside(&square[..], Vect2::new(2.05, 1.0), 0.1)); // within BUFF
+/// assert!(!definitely_outside(&square[..], Vect2::new(1.0, 1.0), 0.1)); // inside
+/// ```
 pub fn definitely_outside<P: VertexSeq + ?Sized>(p: &P, s: Vect2, buff: f64) -> bool {
     let rel = AtTime {
         p,

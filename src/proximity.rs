@@ -9,6 +9,16 @@ use crate::vect2::Vect2;
 ///
 /// Certified: `false` only when the exact answer is false (see [`segments_close_rel`]).
 #[inline]
+///
+/// ```
+/// use polyguard::{segments_close, Vect2};
+/// let v = Vect2::new;
+/// // two crossing segments are at distance 0
+/// assert!(segments_close(v(0.0, 0.0), v(2.0, 2.0), v(0.0, 2.0), v(2.0, 0.0), 0.01));
+/// // parallel segments 1 apart
+/// assert!(segments_close(v(0.0, 0.0), v(2.0, 0.0), v(0.0, 1.0), v(2.0, 1.0), 1.5));
+/// assert!(!segments_close(v(0.0, 0.0), v(2.0, 0.0), v(0.0, 1.0), v(2.0, 1.0), 0.5));
+/// ```
 pub fn segments_close(c: Vect2, d: Vect2, e: Vect2, f: Vect2, buff: f64) -> bool {
     segments_close_tri(c, d, e, f, buff).or_true()
 }

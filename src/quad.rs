@@ -24,6 +24,13 @@ pub fn quad2d(a: f64, b: f64, c: f64, d: f64, e: f64, f: f64, r: f64, t: f64) ->
 /// Decided exactly for the given floats (sums and products as expansions,
 /// [`pr::quad_min_below_exact`]); `true` when an intermediate overflows or underflows.
 #[inline]
+///
+/// ```
+/// use polyguard::quad_min_le_d;
+/// // t² − t + 1 has its least value 3/4 at t = 1/2 (the vertex, step 2)
+/// assert!(quad_min_le_d(1.0, -1.0, 1.0, 0.8));
+/// assert!(!quad_min_le_d(1.0, -1.0, 1.0, 0.75)); // strict: never below 3/4
+/// ```
 pub fn quad_min_le_d(a: f64, b: f64, c: f64, d: f64) -> bool {
     let e = Ball::exact;
     match pr::quad_min_below(e(a), e(b), e(c), e(d)) {
@@ -45,6 +52,13 @@ pub fn quad_min_le_d(a: f64, b: f64, c: f64, d: f64) -> bool {
 /// underflow. (The detectors do not call it: segments_close decides its step 4 in the
 /// geometric form of [`pr::segments_cross`].)
 #[inline]
+///
+/// ```
+/// use polyguard::quad_min_box_le_d;
+/// // (r − t)² + 1 on [0, 1]²: its least value is 1, on the diagonal r = t
+/// assert!(quad_min_box_le_d(1.0, 1.0, -2.0, 0.0, 0.0, 1.0, 1.5));
+/// assert!(!quad_min_box_le_d(1.0, 1.0, -2.0, 0.0, 0.0, 1.0, 0.5));
+/// ```
 pub fn quad_min_box_le_d(a: f64, b: f64, c: f64, d: f64, e: f64, f: f64, dd: f64) -> bool {
     quad_min_box_le_d_tri(a, b, c, d, e, f, dd).or_true()
 }

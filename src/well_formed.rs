@@ -61,6 +61,15 @@ impl core::fmt::Display for Fault {
 /// then least y) is meant: it is a vertex of the convex hull, where a counterclockwise
 /// polygon turns left. Step 4's printed "(p_i − p_(i−1)*)·(p_(i+1)* − p_i)⊥ ≤ 0" uses
 /// the right perpendicular: the cross product of the incoming and outgoing edges.
+///
+/// ```
+/// use polyguard::{well_formed, Vect2};
+/// let cos_kappa = 5f64.to_radians().cos();
+/// let square = [Vect2::new(0.0, 0.0), Vect2::new(2.0, 0.0), Vect2::new(2.0, 2.0), Vect2::new(0.0, 2.0)];
+/// assert!(well_formed(&square[..], 0.01, cos_kappa));
+/// // BUFF so large that the vertices are closer than 2·BUFF (rule 1)
+/// assert!(!well_formed(&square[..], 1.5, cos_kappa));
+/// ```
 pub fn well_formed<P: VertexSeq + ?Sized>(p: &P, buff: f64, cos_kappa: f64) -> bool {
     p.count() >= 3 && well_formed_fault(p, buff, cos_kappa).is_none()
 }

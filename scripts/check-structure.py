@@ -10,9 +10,10 @@
    ("commit 1a2b3c4", or a bare hash of 7 to 40 hex digits holding a letter and a digit)
    in the comments of Rust sources, build files and scripts. History goes in CHANGELOG.md.
 
-Usage: scripts/check-structure.py [ROOT] [--report]
-Exit 0 when every rule holds, 1 otherwise, listing each breach. --report prints the
-longest functions and the module graph's circles even when the rules hold.
+Usage: scripts/check-structure.py [ROOT] [--report] | --canary
+Exit 0 when every rule holds, 1 otherwise, listing each breach. --report also prints the
+25 longest functions. --canary plants one breach of each rule in a temporary tree and
+exits 1 unless each is reported.
 """
 
 import os
@@ -259,10 +260,8 @@ def circles(graph):
     return out
 
 
-def main(argv):
-    args = [a for a in argv if not a.startswith("--")]
-    report = "--report" in argv
-    root = os.path.abspath(args[0] if args else os.path.join(os.path.dirname(__file__), ".."))
+def check(root, report=False):
+    """Every breach of the four rules in the tree at root, as lines to print."""
     breaches = []
 
     engine_src = os.path.join(root, "src")
@@ -294,6 +293,52 @@ def main(argv):
     if report:
         for count, where, exempt in sorted(longest, reverse=True)[:25]:
             print(f"{count:5} {where}{' (exempt)' if exempt else ''}")
+    return breaches
+
+
+def canary():
+    """The checks must see: a tree planted with one breach of each rule (and an exempt long
+    function, which must pass) gets exactly those breaches."""
+    import tempfile
+
+    long_body = "".join(f"    let x{k} = {k};\n" for k in range(101))
+    files = {
+        "Cargo.toml": "[package]\nname = \"canary\"\n",
+        "src/lib.rs": "mod a;\nmod b;\n",
+        "src/a.rs": "use crate::b::g;\n/// A.\npub fn f() {\n" + long_body + "}\n",
+        "src/b.rs": "// fixed in issue 42\npub fn g() -> u8 {\n    crate::a::f();\n    1\n}\n"
+        "/// Long because a table of cases reads best whole.\nfn h() {\n" + long_body + "}\n",
+        "src/big.rs": "// filler\n" * (MAX_ENGINE_FILE_LINES + 1),
+    }
+    with tempfile.TemporaryDirectory() as tmp:
+        for rel, text in files.items():
+            path = os.path.join(tmp, rel)
+            os.makedirs(os.path.dirname(path), exist_ok=True)
+            with open(path, "w", encoding="utf-8") as f:
+                f.write(text)
+        found = check(tmp)
+    want = [
+        ("src/big.rs", "lines (at most"),
+        ("src/a.rs", "fn f has 103 lines"),
+        ("src/b.rs", "history in a comment ('issue 42')"),
+        ("src", "import circle between the modules a, b"),
+    ]
+    missing = [w for w in want if not any(w[0] in b and w[1] in b for b in found)]
+    extra = [b for b in found if not any(w[0] in b and w[1] in b for w in want)]
+    for w in missing:
+        print(f"canary: the planted breach {w} was not reported")
+    for b in extra:
+        print(f"canary: reported more than was planted: {b}")
+    print(f"check-structure canary: {len(want) - len(missing)} of {len(want)} planted breaches reported")
+    return 1 if missing or extra else 0
+
+
+def main(argv):
+    if "--canary" in argv:
+        return canary()
+    args = [a for a in argv if not a.startswith("--")]
+    root = os.path.abspath(args[0] if args else os.path.join(os.path.dirname(__file__), ".."))
+    breaches = check(root, report="--report" in argv)
     for b in breaches:
         print(b)
     print(f"check-structure: {len(breaches)} breaches")

@@ -24,7 +24,8 @@ pub(super) struct Sweep {
 }
 
 impl Sweep {
-    /// The sweep of the point s + t·v over [t0, t1].
+    /// Paper A §II.I (the filter in front of edge_detect): the sweep of the point
+    /// s + t·v over [t0, t1].
     pub(super) fn new(t0: f64, t1: f64, s: Vect2, v: Vect2) -> Sweep {
         let (s0, s1) = (s.at(v, t0), s.at(v, t1));
         let big = |q: Vect2| fmax(q.x.abs(), q.y.abs());

@@ -209,10 +209,11 @@ struct PathSides {
 }
 
 impl PathSides {
-    /// The relative path of the common velocity v_0 over [ta, tb], as its two ends, and
-    /// the side test against its line. From a window starting at 0 the path starts at the
-    /// point exactly (and its direction m is its end): the line passes through the point,
-    /// and the static bound of [`PathLine`] suffices; otherwise the side is taken on balls.
+    /// Paper A §II.H step 3: the relative path of the common velocity v_0 over [ta, tb],
+    /// as its two ends, and the side test against its line. From a window starting at 0
+    /// the path starts at the point exactly (and its direction m is its end): the line
+    /// passes through the point, and the static bound of [`PathLine`] suffices;
+    /// otherwise the side is taken on balls.
     #[inline(always)]
     fn new(ta: Ball, tb: Ball, v: Vect2, v0: Vect2, buff: f64) -> ((BallV, BallV), PathSides) {
         let rel0 = BallV::diff(v, v0);

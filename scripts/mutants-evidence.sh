@@ -20,7 +20,7 @@ cd "$(dirname "$0")/.."
 root=$PWD
 ev=evidence/mutants
 shards=40
-files=(src/quad.rs src/contain.rs src/proximity.rs src/detect.rs src/well_formed.rs src/predicates.rs)
+files=(src/quad.rs src/contain.rs src/proximity.rs src/detect/*.rs src/well_formed.rs src/predicates.rs)
 file_args=()
 for f in "${files[@]}"; do file_args+=(--file "$f"); done
 

@@ -23,7 +23,7 @@ if ! cargo mutants --version >/dev/null 2>&1; then
   cargo install cargo-mutants --locked
 fi
 export POLYGUARD_PROPTEST_CASES="${POLYGUARD_PROPTEST_CASES:-256}"
-files=(src/quad.rs src/contain.rs src/proximity.rs src/detect.rs src/well_formed.rs src/predicates.rs)
+files=(src/quad.rs src/contain.rs src/proximity.rs src/detect/*.rs src/well_formed.rs src/predicates.rs)
 args=()
 for f in "${files[@]}"; do args+=(--file "$f"); done
 exec cargo mutants --package polyguard --test-package polyguard "${args[@]}" \

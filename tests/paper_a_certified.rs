@@ -858,6 +858,7 @@ struct Outside {
     buff: f64,
 }
 
+/// The strategy of [`Outside`] cases.
 fn outside_case() -> impl Strategy<Value = Outside> {
     (
         (shape(), 1.0f64..10.0, offset()),
@@ -884,40 +885,10 @@ fn outside_case() -> impl Strategy<Value = Outside> {
                 let n = poly0.len();
                 let b = (b * PHI).round();
                 let i = idx.index(n);
-                let (p, pn) = (poly0[i], poly0[(i + 1) % n]);
-                let s = match place {
-                    // On the ray below vertex i (h·radius below it, or above it).
-                    0 => v2(p.x, (p.y - h * radius).round()),
-                    // |p_x − s_x| = b.
-                    1 => v2(
-                        p.x + if h < 0.0 { -b } else { b },
-                        (p.y - h * radius).round(),
-                    ),
-                    // p_y = s_y − b.
-                    2 => v2((p.x + h * b).round(), p.y + b),
-                    // Beside edge i, b off either side.
-                    3 => beside(p, pn, r, if h < 0.0 { -b } else { b }),
-                    _ => round_v(p + (pn - p).scale(r) + v2(h, r - 0.5).scale(2.0 * radius)),
-                };
+                let s = outside_place(place, poly0[i], poly0[(i + 1) % n], r, h, b, radius);
                 let poly: Vec<Vect2> = poly0.iter().map(|&p| p + o).collect();
                 let s = s + o;
-                let (vels, v, t) = if moving == 0 {
-                    // Relative displacements over t of up to a few polygon sizes.
-                    let t = pow2(texp);
-                    let disp =
-                        |x: f64, y: f64| round_v(v2(x, y).scale(4.0 * radius)).scale(1.0 / t);
-                    let common = disp(vs.1, vs.0);
-                    let vels: Vec<Vect2> = dv
-                        .iter()
-                        .take(n)
-                        .map(|&(x, y)| common + disp(x, y).scale(0.25))
-                        .collect();
-                    let v = disp(vs.0, vs.1);
-                    // s + t·v lands where s was built: the test is about time t.
-                    (vels, v, t)
-                } else {
-                    (vec![Vect2::ZERO; n], Vect2::ZERO, 0.0)
-                };
+                let (vels, v, t) = outside_motion(moving == 0, &dv, vs, texp, radius, n);
                 let s = s - v.scale(t);
                 let poly: Vec<Vect2> = poly
                     .iter()
@@ -930,28 +901,7 @@ fn outside_case() -> impl Strategy<Value = Outside> {
                 let (poly, vels, s, v) =
                     (scaled(&poly, k), scaled(&vels, k), s.scale(k), v.scale(k));
                 let buff = if finite(&poly) && finite(&vels) && finite(&[s, v]) {
-                    let et = q(t);
-                    let moved: Vec<V2<Q>> = poly
-                        .iter()
-                        .zip(&vels)
-                        .map(|(&p, &w)| qv(p).at(&qv(w), &et))
-                        .collect();
-                    let st = qv(s).at(&qv(v), &et);
-                    // Every threshold: distances to the edges, and both perturbation
-                    // thresholds of every vertex; first the one s was placed at.
-                    let mut d2s = Vec::new();
-                    for a in 0..n {
-                        d2s.push(dist2_point_segment(&st, &moved[a], &moved[(a + 1) % n]));
-                        d2s.push(moved[a].x.minus(&st.x).sq());
-                        d2s.push(st.y.minus(&moved[a].y).sq());
-                    }
-                    let first = match place {
-                        1 => d2s[3 * i + 1].clone(),
-                        2 => d2s[3 * i + 2].clone(),
-                        _ => d2s[3 * i].clone(),
-                    };
-                    d2s.insert(0, first);
-                    thr.buff(&d2s, b * k)
+                    thr.buff(&outside_thresholds(&poly, &vels, s, v, t, place, i), b * k)
                 } else {
                     1.0
                 };
@@ -968,6 +918,83 @@ fn outside_case() -> impl Strategy<Value = Outside> {
         .prop_filter("finite", |c| {
             finite(&c.poly) && finite(&c.vels) && finite(&[c.s, c.v]) && c.buff > 0.0
         })
+}
+
+/// Where [`outside_case`] puts s (`place`), for vertex p and the next one pn: on the
+/// ray below p (h·radius below it, or above it), b to its side (|p_x − s_x| = b), b
+/// below it (p_y = s_y − b), beside the edge p pn (b off either side), or anywhere near.
+fn outside_place(place: u8, p: Vect2, pn: Vect2, r: f64, h: f64, b: f64, radius: f64) -> Vect2 {
+    match place {
+        0 => v2(p.x, (p.y - h * radius).round()),
+        1 => v2(
+            p.x + if h < 0.0 { -b } else { b },
+            (p.y - h * radius).round(),
+        ),
+        2 => v2((p.x + h * b).round(), p.y + b),
+        3 => beside(p, pn, r, if h < 0.0 { -b } else { b }),
+        _ => round_v(p + (pn - p).scale(r) + v2(h, r - 0.5).scale(2.0 * radius)),
+    }
+}
+
+/// The motion of an [`outside_case`]: when `moving`, vertex velocities, the point's
+/// velocity and the time t = 2^texp, with relative displacements over t of up to a few
+/// polygon sizes; else all still at t = 0. The caller moves s and P back by t·v and
+/// t·V, so that at time t they are where they were built: the test is about time t.
+fn outside_motion(
+    moving: bool,
+    dv: &[(f64, f64)],
+    vs: (f64, f64),
+    texp: i32,
+    radius: f64,
+    n: usize,
+) -> (Vec<Vect2>, Vect2, f64) {
+    if !moving {
+        return (vec![Vect2::ZERO; n], Vect2::ZERO, 0.0);
+    }
+    let t = pow2(texp);
+    let disp = |x: f64, y: f64| round_v(v2(x, y).scale(4.0 * radius)).scale(1.0 / t);
+    let common = disp(vs.1, vs.0);
+    let vels: Vec<Vect2> = dv
+        .iter()
+        .take(n)
+        .map(|&(x, y)| common + disp(x, y).scale(0.25))
+        .collect();
+    (vels, disp(vs.0, vs.1), t)
+}
+
+/// The squared thresholds of §II.B–E for an [`outside_case`] at time t, exactly: the
+/// distances from s + t·v to the edges and both perturbation thresholds of every vertex
+/// of P + t·V, first the one s was placed at (`place`, at vertex i).
+fn outside_thresholds(
+    poly: &[Vect2],
+    vels: &[Vect2],
+    s: Vect2,
+    v: Vect2,
+    t: f64,
+    place: u8,
+    i: usize,
+) -> Vec<Q> {
+    let n = poly.len();
+    let et = q(t);
+    let moved: Vec<V2<Q>> = poly
+        .iter()
+        .zip(vels)
+        .map(|(&p, &w)| qv(p).at(&qv(w), &et))
+        .collect();
+    let st = qv(s).at(&qv(v), &et);
+    let mut d2s = Vec::new();
+    for a in 0..n {
+        d2s.push(dist2_point_segment(&st, &moved[a], &moved[(a + 1) % n]));
+        d2s.push(moved[a].x.minus(&st.x).sq());
+        d2s.push(st.y.minus(&moved[a].y).sq());
+    }
+    let first = match place {
+        1 => d2s[3 * i + 1].clone(),
+        2 => d2s[3 * i + 2].clone(),
+        _ => d2s[3 * i].clone(),
+    };
+    d2s.insert(0, first);
+    d2s
 }
 
 // ================================================================== §II.I
@@ -1427,23 +1454,7 @@ impl Scene {
 fn scene(kind: Kind, max_n: usize) -> impl Strategy<Value = Scene> {
     (
         (shape(), 2.0f64..10.0, offset(), 0.5f64..2.0, fac()),
-        (
-            any::<prop::sample::Index>(),
-            param(),
-            prop_oneof![
-                4 => Just(1.0),
-                1 => Just(0.0),
-                1 => Just(-1.0),
-                1 => Just(2.0),
-                1 => Just(3.0),
-                1 => Just(1.0 + 1e-9),
-                1 => Just(1.0 - 1e-9),
-                2 => -1.0f64..3.0
-            ],
-            0u8..4,
-            0.0f64..TAU,
-            3.0f64..7.0,
-        ),
+        aim(),
         (
             prop_oneof![
                 Just(1.0),
@@ -1481,96 +1492,18 @@ fn scene(kind: Kind, max_n: usize) -> impl Strategy<Value = Scene> {
                 poly.truncate(max_n);
                 let n = poly.len();
                 let buff = (b * PHI).round();
-                // The common velocity: none, or up to 10⁶ polygon sizes over T.
-                let common = if vkind == 0 {
-                    Vect2::ZERO
-                } else {
-                    round_v(v2(vang.cos(), vang.sin()).scale(radius * 10f64.powf(vexp)))
-                        .scale(1.0 / t)
-                };
-                let vels: Vec<Vect2> = (0..n)
-                    .map(|i| {
-                        if kind == Kind::Diff || (kind == Kind::ThreeD && vkind == 2) {
-                            let (x, y) = warps[i];
-                            common + round_v(v2(x, y).scale(radius / 4.0)).scale(1.0 / t)
-                        } else {
-                            common
-                        }
-                    })
-                    .collect();
-                // Aim at edge i at time τ: `aim` is where the point must be at τ, minus
-                // τ times the aim point's velocity `va` (its place in the frame of time 0).
+                let warp = kind == Kind::Diff || (kind == Kind::ThreeD && vkind == 2);
+                let vels = scene_vels(n, radius, t, (vkind, vang, vexp), warp.then_some(&warps));
                 let tau = theta * t;
                 let i = edge.index(n);
-                let j = (i + 1) % n;
-                let warping = vels.iter().any(|w| *w != vels[0]);
-                let (aim, e, va) = if warping {
-                    // Beside the warped edge at τ, to within rounding.
-                    let (pi, pj) = (poly[i] + vels[i].scale(tau), poly[j] + vels[j].scale(tau));
-                    let e = pj - pi;
-                    let outward = v2(e.y, -e.x).scale(1.0 / norm(e).max(1.0));
-                    let va = vels[i] + (vels[j] - vels[i]).scale(r);
-                    (
-                        pi + e.scale(r) + outward.scale(k * buff) - va.scale(tau),
-                        e,
-                        va,
-                    )
-                } else {
-                    // On the grid, exactly k·BUFF outside when the edge's direction allows.
-                    let e = poly[j] - poly[i];
-                    (
-                        beside(poly[i], poly[j], r, -k * buff),
-                        primitive(e).0,
-                        vels[0],
-                    )
-                };
-                let speed = radius * 10f64.powf(lexp) / t;
-                let en = norm(e);
-                let vrel = match dkind {
-                    0 => v2(ang.cos(), ang.sin()).scale(speed),
-                    // Grazing: exactly parallel to the edge (a power of two times its
-                    // direction).
-                    1 | 2 if en > 0.0 => {
-                        let sign = if ang < 3.0 { 1.0 } else { -1.0 };
-                        e.scale(sign * pow2((speed / en).log2().round() as i32))
-                    }
-                    // Straight in.
-                    _ => left(e).scale(speed / en.max(1.0)),
-                };
+                let (aim, e, va) = aim_at_edge(&poly, &vels, i, r, k, buff, tau);
+                let vrel = approach(e, dkind, ang, radius * 10f64.powf(lexp) / t);
                 let v = va + vrel;
                 let s = aim - vrel.scale(tau);
                 let poly: Vec<Vect2> = poly.iter().map(|&p| p + o).collect();
                 let s = s + o;
-                // The slab: the window [a, b] with a or b at τ.
-                let slab = (kind == Kind::ThreeD).then(|| {
-                    let h = 1000.0 * 2f64.powf(zh);
-                    let vsp = zoff * h / t;
-                    let at = zfrac * tau;
-                    match zkind {
-                        // Level inside the slab: the whole lookahead.
-                        0 => [zoff * h * 0.1 + h / 2.0, vsp, 0.0, h, vsp],
-                        // Climbing into the slab at time `at`, leaving after (1 + |zw|)·T.
-                        1 | 2 => {
-                            let w = h / (t * (1.0 + zw.abs()));
-                            [-at * w, vsp + w, 0.0, h, vsp]
-                        }
-                        // Descending into it at `at`.
-                        3 => {
-                            let w = h / (t * (1.0 + zw.abs()));
-                            [h + at * w, vsp - w, 0.0, h, vsp]
-                        }
-                        // Leaving it (climbing out through the top) at `at`.
-                        4 => {
-                            let w = h / (t * 0.5 + at);
-                            [h - at * w, vsp + w, 0.0, h, vsp]
-                        }
-                        // A window of one instant at `at` (the slab has no thickness).
-                        _ => {
-                            let w = h / t;
-                            [-at * w, vsp + w, 0.0, 0.0, vsp]
-                        }
-                    }
-                });
+                let slab =
+                    (kind == Kind::ThreeD).then(|| slab_at(zkind, zfrac * tau, t, (zw, zh, zoff)));
                 let mut all = poly.clone();
                 all.push(s);
                 let big = max_abs(&all).max(max_abs(&vels) * t).max(norm(v) * t);
@@ -1592,30 +1525,169 @@ fn scene(kind: Kind, max_n: usize) -> impl Strategy<Value = Scene> {
                     slab,
                 };
                 if tie && scene.is_finite() {
-                    let (et, es, ev, ep, ew) = scene.exact();
-                    let st = es.at(&ev, &et);
-                    let mut d2s = Vec::new();
-                    for a in [i, (i + n - 1) % n, j] {
-                        let b = (a + 1) % n;
-                        let end = es.at(&ev.minus(&ew[a]), &et);
-                        d2s.push(dist2_segments(&es, &end, &ep[a], &ep[b]));
-                    }
-                    d2s.push(dist2_point_segment(&es, &ep[i], &ep[j]));
-                    d2s.push(dist2_point_segment(
-                        &st,
-                        &ep[i].at(&ew[i], &et),
-                        &ep[j].at(&ew[j], &et),
-                    ));
                     let thr = Thr {
                         mode: thr.mode % 7,
                         ..thr
                     };
-                    scene.buff = thr.buff(&d2s, scene.buff);
+                    scene.buff = thr.buff(&scene_thresholds(&scene, i), scene.buff);
                 }
                 scene
             },
         )
         .prop_filter("finite", Scene::is_finite)
+}
+
+/// How a [`scene`]'s point comes at its edge: the edge (an index), the fraction r along
+/// it, k (the point passes k·BUFF outside it: mostly 1, or −1 … 3, or just at 1), the
+/// kind of direction (see [`approach`]) with its angle, and the path's length exponent.
+fn aim() -> impl Strategy<Value = (prop::sample::Index, f64, f64, u8, f64, f64)> {
+    (
+        any::<prop::sample::Index>(),
+        param(),
+        prop_oneof![
+            4 => Just(1.0),
+            1 => Just(0.0),
+            1 => Just(-1.0),
+            1 => Just(2.0),
+            1 => Just(3.0),
+            1 => Just(1.0 + 1e-9),
+            1 => Just(1.0 - 1e-9),
+            2 => -1.0f64..3.0
+        ],
+        0u8..4,
+        0.0f64..TAU,
+        3.0f64..7.0,
+    )
+}
+
+/// The vertex velocities of a [`scene`] of n vertices: a common velocity (none when
+/// `vkind` is 0, else up to 10^vexp polygon sizes over T along `vang`), plus, for a
+/// warping polygon (`warps`), each vertex's own drift of up to a quarter of the polygon
+/// over T.
+fn scene_vels(
+    n: usize,
+    radius: f64,
+    t: f64,
+    (vkind, vang, vexp): (u8, f64, f64),
+    warps: Option<&Vec<(f64, f64)>>,
+) -> Vec<Vect2> {
+    let common = if vkind == 0 {
+        Vect2::ZERO
+    } else {
+        round_v(v2(vang.cos(), vang.sin()).scale(radius * 10f64.powf(vexp))).scale(1.0 / t)
+    };
+    (0..n)
+        .map(|i| match warps {
+            Some(warps) => {
+                let (x, y) = warps[i];
+                common + round_v(v2(x, y).scale(radius / 4.0)).scale(1.0 / t)
+            }
+            None => common,
+        })
+        .collect()
+}
+
+/// Where a [`scene`]'s point aims: k·BUFF outside edge i at the fraction r along it, at
+/// time τ. Returns `aim`, where the point must be at τ minus τ times the aim point's
+/// velocity (its place in the frame of time 0), the edge's direction e, and that
+/// velocity `va`. Beside the warped edge at τ, to within rounding, for a warping
+/// polygon; else on the grid, exactly k·BUFF outside when the edge's direction allows.
+fn aim_at_edge(
+    poly: &[Vect2],
+    vels: &[Vect2],
+    i: usize,
+    r: f64,
+    k: f64,
+    buff: f64,
+    tau: f64,
+) -> (Vect2, Vect2, Vect2) {
+    let j = (i + 1) % poly.len();
+    let warping = vels.iter().any(|w| *w != vels[0]);
+    if warping {
+        let (pi, pj) = (poly[i] + vels[i].scale(tau), poly[j] + vels[j].scale(tau));
+        let e = pj - pi;
+        let outward = v2(e.y, -e.x).scale(1.0 / norm(e).max(1.0));
+        let va = vels[i] + (vels[j] - vels[i]).scale(r);
+        (
+            pi + e.scale(r) + outward.scale(k * buff) - va.scale(tau),
+            e,
+            va,
+        )
+    } else {
+        let e = poly[j] - poly[i];
+        (
+            beside(poly[i], poly[j], r, -k * buff),
+            primitive(e).0,
+            vels[0],
+        )
+    }
+}
+
+/// A [`scene`]'s velocity relative to the aim point, of the given speed against the
+/// edge direction e: along `ang` (`dkind` 0), grazing (exactly parallel to the edge, a
+/// power of two times its direction), or straight in.
+fn approach(e: Vect2, dkind: u8, ang: f64, speed: f64) -> Vect2 {
+    let en = norm(e);
+    match dkind {
+        0 => v2(ang.cos(), ang.sin()).scale(speed),
+        1 | 2 if en > 0.0 => {
+            let sign = if ang < 3.0 { 1.0 } else { -1.0 };
+            e.scale(sign * pow2((speed / en).log2().round() as i32))
+        }
+        _ => left(e).scale(speed / en.max(1.0)),
+    }
+}
+
+/// A [`scene`]'s slab [s_z, v_z, pmin, pmax, vsp] (§III), of height 1000·2^zh moving at
+/// zoff·h/T, whose window opens or closes at time `at`: level inside it (the whole
+/// lookahead, `zkind` 0), climbing into it at `at` and leaving after (1 + |zw|)·T (1, 2),
+/// descending into it at `at` (3), climbing out through the top at `at` (4), or a window
+/// of one instant at `at` (the slab has no thickness).
+fn slab_at(zkind: u8, at: f64, t: f64, (zw, zh, zoff): (f64, f64, f64)) -> [f64; 5] {
+    let h = 1000.0 * 2f64.powf(zh);
+    let vsp = zoff * h / t;
+    match zkind {
+        0 => [zoff * h * 0.1 + h / 2.0, vsp, 0.0, h, vsp],
+        1 | 2 => {
+            let w = h / (t * (1.0 + zw.abs()));
+            [-at * w, vsp + w, 0.0, h, vsp]
+        }
+        3 => {
+            let w = h / (t * (1.0 + zw.abs()));
+            [h + at * w, vsp - w, 0.0, h, vsp]
+        }
+        4 => {
+            let w = h / (t * 0.5 + at);
+            [h - at * w, vsp + w, 0.0, h, vsp]
+        }
+        _ => {
+            let w = h / t;
+            [-at * w, vsp + w, 0.0, 0.0, vsp]
+        }
+    }
+}
+
+/// The squared distances a [`scene`] aimed at edge i is tuned against, exactly: the
+/// relative paths to edge i and its two neighbours, and the point at 0 and at T to
+/// edge i.
+fn scene_thresholds(scene: &Scene, i: usize) -> Vec<Q> {
+    let n = scene.poly.len();
+    let j = (i + 1) % n;
+    let (et, es, ev, ep, ew) = scene.exact();
+    let st = es.at(&ev, &et);
+    let mut d2s = Vec::new();
+    for a in [i, (i + n - 1) % n, j] {
+        let b = (a + 1) % n;
+        let end = es.at(&ev.minus(&ew[a]), &et);
+        d2s.push(dist2_segments(&es, &end, &ep[a], &ep[b]));
+    }
+    d2s.push(dist2_point_segment(&es, &ep[i], &ep[j]));
+    d2s.push(dist2_point_segment(
+        &st,
+        &ep[i].at(&ew[i], &et),
+        &ep[j].at(&ew[j], &et),
+    ));
+    d2s
 }
 
 // ================================================================== properties: §I

@@ -1,39 +1,12 @@
 //! A detection case in exact numbers (docs/cases.md), its validation, and the
 //! paper's choice of detection function (paper A §II.F and §III).
 
-use core::fmt;
-
-use crate::convert::parse_rational;
+pub use crate::convert::Input;
 use crate::detect::{detect_2d, dispatch, slab_scene, Method};
+pub use crate::error::OracleError;
 use crate::field::{ExactField, V2};
 use crate::kernel::run::{Filtered, Scene, Single};
 use crate::kernel::{Decided, Exact, Intervals, Iv, Kernel};
-
-/// A case that breaks a rule of docs/cases.md; `field` is the spec's field name.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct OracleError {
-    /// The offending field, as the spec names it (e.g. "polygon.vertices").
-    pub field: &'static str,
-    /// What is wrong with it.
-    pub message: String,
-}
-
-impl OracleError {
-    pub(crate) fn new(field: &'static str, message: impl Into<String>) -> Self {
-        OracleError {
-            field,
-            message: message.into(),
-        }
-    }
-}
-
-impl fmt::Display for OracleError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}: {}", self.field, self.message)
-    }
-}
-
-impl std::error::Error for OracleError {}
 
 /// The vertical part of a 3D case (paper A §III).
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -92,25 +65,6 @@ pub struct CaseInput<'a, N> {
     pub velocities: &'a [[N; 2]],
     /// bottom, top, vz when 3D.
     pub slab: Option<[N; 3]>,
-}
-
-/// A number the oracle reads exactly: a finite binary float is the dyadic rational it denotes
-/// (in convert.rs, the one module that names floats), text is "p/q", an integer or a
-/// decimal.
-pub trait Input: Copy {
-    /// The exact value, or what is wrong with `field`.
-    fn exact<F: ExactField>(self, field: &'static str) -> Result<F, OracleError>;
-}
-
-impl Input for &str {
-    fn exact<F: ExactField>(self, field: &'static str) -> Result<F, OracleError> {
-        parse_rational(self).ok_or_else(|| {
-            OracleError::new(
-                field,
-                format!("{self:?} is not an exact rational (p/q, integer or decimal)"),
-            )
-        })
-    }
 }
 
 /// Raw exact components before the rules are checked.

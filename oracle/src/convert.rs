@@ -1,12 +1,14 @@
-//! The only module of the oracle that touches binary floating point: exact
-//! conversion of finite f64 values to rationals (the f64 [`Input`] of a case), and the
-//! parsing of exact rationals written as strings ("p/q", "p", "-1.25").
+//! How the oracle reads numbers: exact conversion of finite f64 values to rationals, the
+//! parsing of exact rationals written as strings ("p/q", "p", "-1.25"), the [`Input`]
+//! of a case (either kind, made exact), and the f64 nearest to an exact time for
+//! printing. Besides the interval kernel, the one module of the oracle that names binary
+//! floating point.
 //!
 //! Every finite f64 is a dyadic rational m·2^e, so the conversion loses nothing.
 
-use crate::case::{Input, OracleError};
+use crate::error::OracleError;
 use crate::field::ExactField;
-use crate::truth::ExactTime;
+use crate::time::ExactTime;
 use core::cmp::Ordering;
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -26,6 +28,24 @@ pub fn f64_to_exact<F: ExactField>(x: f64) -> Option<F> {
         (frac | (1u64 << 52), biased - 1075)
     };
     Some(F::from_dyadic(neg, mant, exp))
+}
+
+/// A number the oracle reads exactly: a finite binary float is the dyadic rational it
+/// denotes, text is "p/q", an integer or a decimal.
+pub trait Input: Copy {
+    /// The exact value, or what is wrong with `field`.
+    fn exact<F: ExactField>(self, field: &'static str) -> Result<F, OracleError>;
+}
+
+impl Input for &str {
+    fn exact<F: ExactField>(self, field: &'static str) -> Result<F, OracleError> {
+        parse_rational(self).ok_or_else(|| {
+            OracleError::new(
+                field,
+                format!("{self:?} is not an exact rational (p/q, integer or decimal)"),
+            )
+        })
+    }
 }
 
 impl Input for f64 {

@@ -28,6 +28,21 @@
 //!     other => panic!("{other:?}"),
 //! }
 //! ```
+//!
+//! # Layers
+//! Each module uses only the modules before it in this order, so that there is no
+//! import circle (scripts/check-structure.py checks it):
+//! 1. numbers: [`field`] (the exact field, [`V2`]), then [`qfield`] (quadratic
+//!    irrationals) and [`time`] (an answer's exact time);
+//! 2. input: [`error`] (what the oracle refuses), then [`convert`] (floats and text
+//!    made exact);
+//! 3. [`kernel`]: the exact and the interval kernel, and how a paper function's calls
+//!    run in them;
+//! 4. paper A, in the paper's order: [`quad`] (§I) → [`contain`] (§II.B–E) →
+//!    [`proximity`] (§II.G) → [`detect`] (§II.F, §II.H, §II.I, §III) →
+//!    [`well_formed`](mod@well_formed) (§II.J) → [`ring`] (§II's simple polygon);
+//! 5. [`case`]: a validated case and paper A's answer for it;
+//! 6. [`truth`](mod@truth): the exact ground truth of a case.
 
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
@@ -36,22 +51,27 @@ pub mod case;
 pub mod contain;
 pub mod convert;
 pub mod detect;
+pub mod error;
 pub mod field;
 pub mod kernel;
 pub mod proximity;
 pub mod qfield;
 pub mod quad;
 pub mod ring;
+pub mod time;
 pub mod truth;
 pub mod well_formed;
 
 pub use case::{
-    paper_detect, paper_detect_unfiltered, paper_detect_with, CaseInput, ExactCase, Input,
-    OracleError, PaperAnswer, Vertical,
+    paper_detect, paper_detect_unfiltered, paper_detect_with, CaseInput, ExactCase, PaperAnswer,
+    Vertical,
 };
+pub use convert::Input;
 pub use detect::{Method, Sign};
+pub use error::OracleError;
 #[cfg(feature = "rug")]
 pub use field::R;
 pub use field::{Arith, ExactField, Q, V2};
 pub use kernel::{Decided, Exact, Kernel};
-pub use truth::{truth, truth_unfiltered, truth_with, ExactTime, Truth};
+pub use time::ExactTime;
+pub use truth::{truth, truth_unfiltered, truth_with, Truth};

@@ -53,7 +53,7 @@ fn on_segment<F: ExactField>(p: &V2<F>, q: &V2<F>, r: &V2<F>) -> bool {
 /// Paper A §II (P simple): do the closed segments pq and rs share a point? Written
 /// without the engine's bounding-box pruning: a proper crossing, or an end of one
 /// segment on the other.
-fn segments_meet<F: ExactField>(p: &V2<F>, q: &V2<F>, r: &V2<F>, s: &V2<F>) -> bool {
+pub fn segments_meet<F: ExactField>(p: &V2<F>, q: &V2<F>, r: &V2<F>, s: &V2<F>) -> bool {
     let (o1, o2) = (orient(p, q, r), orient(p, q, s));
     let (o3, o4) = (orient(r, s, p), orient(r, s, q));
     if o1 * o2 < 0 && o3 * o4 < 0 {

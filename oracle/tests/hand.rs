@@ -206,6 +206,8 @@ fn segments_close_cases() {
     .decided());
 }
 
+/// dot_nn_lin's case analysis, one hand case for each shape of the quadratic: the sign
+/// of A, the sign of the discriminant, and a linear or constant one.
 #[test]
 fn dot_nn_lin_every_shape_of_quadratic() {
     let t = q("3");
@@ -270,6 +272,14 @@ fn dot_nn_lin_every_shape_of_quadratic() {
         "0",
         "3"
     ));
+}
+
+/// dot_nn_lin beyond the case analysis: an irrational root, a leading coefficient far
+/// below any epsilon, and a lookahead of 0.
+#[test]
+fn dot_nn_lin_irrational_root_tiny_coefficient_and_one_instant() {
+    let t = q("3");
+    let x = |a: &str| p(a, "0");
     // Irrational roots: (1, t)·(−2, t) = t² − 2 ≥ 0 on [√2, 3]; 141/100 < √2 < 142/100.
     let iv = dot_nn_lin(
         &Exact,

@@ -104,12 +104,56 @@ impl F64Case {
 /// A boundary-biased f64 case (see the module doc).
 fn gen_f64(seed: u64) -> F64Case {
     let mut g = Rng(seed | 1);
+    let (verts, (cx, cy)) = gen_polygon(&mut g);
+    let n = verts.len();
+    let vels = gen_vertex_vels(&mut g, n);
+    let buff = g.pick(&[1.0 / 64.0, 0.01, 2f64.powi(-20), 1e-9]);
+    let fac = g.pick(&[1e-4, 1.0 / 64.0]);
+    let lookahead = g.pick(&[0.5, 1.0, 4.0, 10.0]);
+    let eps = g.pick(&[0i64, 0, 1, -1, 3, -3]);
+    let k = (g.next() % n as u64) as usize;
+    let mut vel = [g.uni(-3.0, 3.0), g.uni(-3.0, 3.0)];
+    let near = Near {
+        centre: [cx, cy],
+        buff,
+        lookahead,
+        eps,
+    };
+    let pos = gen_pos(&mut g, &verts, &vels, k, &near, &mut vel);
+    let slab = if g.next() % 5 == 0 {
+        let bottom = g.uni(-5.0, 0.0);
+        Some([bottom, bottom + g.uni(0.0, 5.0), g.uni(-1.0, 1.0)])
+    } else {
+        None
+    };
+    let (pos, vel) = match slab {
+        Some(_) => (
+            vec![pos[0], pos[1], g.uni(-6.0, 6.0)],
+            vec![vel[0], vel[1], g.pick(&[0.0, 1.0, -0.5])],
+        ),
+        None => (pos.to_vec(), vel.to_vec()),
+    };
+    F64Case {
+        lookahead,
+        buff,
+        fac,
+        pos,
+        vel,
+        verts,
+        vels,
+        slab,
+    }
+}
+
+/// [`gen_f64`]'s polygon and its centre: 3 to 8 vertices around a centre near the
+/// origin or far off (up to 10⁷), or one time in four an axis-aligned rectangle with
+/// dyadic corners, whose distances are exact.
+fn gen_polygon(g: &mut Rng) -> (Vec<[f64; 2]>, (f64, f64)) {
     let n = 3 + (g.next() % 6) as usize;
     let off = g.pick(&[0.0, 1e3, 1e5, 1e7]) * g.pick(&[1.0, -1.0]);
     let (cx, cy) = (off + g.uni(-1.0, 1.0), -off + g.uni(-1.0, 1.0));
     let dyadic_rect = g.next() % 4 == 0;
     let verts: Vec<[f64; 2]> = if dyadic_rect {
-        // An axis-aligned rectangle with dyadic corners: distances are exact.
         let (w, h) = (g.pick(&[1.0, 2.5, 8.0]), g.pick(&[0.75, 3.0]));
         let (x0, y0) = (cx.round(), cy.round());
         vec![[x0, y0], [x0 + w, y0], [x0 + w, y0 + h], [x0, y0 + h]]
@@ -122,9 +166,15 @@ fn gen_f64(seed: u64) -> F64Case {
             })
             .collect()
     };
-    let n = verts.len();
+    (verts, (cx, cy))
+}
+
+/// [`gen_f64`]'s vertex velocities: still, one common velocity (a statically shaped
+/// polygon), a common one with small differences, or each vertex its own from a few
+/// exact values (warping).
+fn gen_vertex_vels(g: &mut Rng, n: usize) -> Vec<[f64; 2]> {
     let base = [g.uni(-1.0, 1.0), g.uni(-1.0, 1.0)];
-    let vels: Vec<[f64; 2]> = match g.next() % 4 {
+    match g.next() % 4 {
         0 => vec![[0.0, 0.0]; n],
         1 => vec![base; n],
         2 => (0..n)
@@ -133,16 +183,40 @@ fn gen_f64(seed: u64) -> F64Case {
         _ => (0..n)
             .map(|_| [g.pick(&[-1.0, 0.0, 0.5, 1.0]), g.pick(&[-0.5, 0.0, 1.0])])
             .collect(),
-    };
-    let buff = g.pick(&[1.0 / 64.0, 0.01, 2f64.powi(-20), 1e-9]);
-    let fac = g.pick(&[1e-4, 1.0 / 64.0]);
-    let lookahead = g.pick(&[0.5, 1.0, 4.0, 10.0]);
-    let eps = g.pick(&[0i64, 0, 1, -1, 3, -3]);
-    let k = (g.next() % n as u64) as usize;
-    let l = (k + 1) % n;
+    }
+}
+
+/// What [`gen_pos`] places the point against: the polygon's centre, BUFF, the
+/// lookahead, and the ulps `eps` by which a boundary position is moved.
+struct Near {
+    centre: [f64; 2],
+    buff: f64,
+    lookahead: f64,
+    eps: i64,
+}
+
+/// [`gen_f64`]'s point, at or near a boundary of paper A's decisions about edge k of
+/// `verts` (from vertex k to the next): far and random, at a vertex, at BUFF from the
+/// edge's middle, through a vertex inside the window, at the perturbation's thresholds,
+/// tangent to the edge (which also sets its velocity `vel`), or at BUFF from an edge of
+/// the dyadic rectangle, each a few ulps off.
+fn gen_pos(
+    g: &mut Rng,
+    verts: &[[f64; 2]],
+    vels: &[[f64; 2]],
+    k: usize,
+    near: &Near,
+    vel: &mut [f64; 2],
+) -> [f64; 2] {
+    let Near {
+        centre: [cx, cy],
+        buff,
+        lookahead,
+        eps,
+    } = *near;
+    let l = (k + 1) % verts.len();
     let (p, q) = (verts[k], verts[l]);
-    let mut vel = [g.uni(-3.0, 3.0), g.uni(-3.0, 3.0)];
-    let pos: [f64; 2] = match g.next() % 7 {
+    match g.next() % 7 {
         // Far, random.
         0 => [cx + g.uni(-30.0, 30.0), cy + g.uni(-30.0, 30.0)],
         // At a vertex, a few ulps off.
@@ -171,7 +245,7 @@ fn gen_f64(seed: u64) -> F64Case {
             let len = (dx * dx + dy * dy).sqrt().max(1e-300);
             let d = g.pick(&[0.0, buff]);
             let start = g.uni(-2.0, -0.5);
-            vel = [dx / len + vels[k][0], dy / len + vels[k][1]];
+            *vel = [dx / len + vels[k][0], dy / len + vels[k][1]];
             [
                 p[0] + start * dx + d * dy / len,
                 p[1] + start * dy - d * dx / len,
@@ -179,29 +253,6 @@ fn gen_f64(seed: u64) -> F64Case {
         }
         // At exactly BUFF from an edge of the dyadic rectangle (or a vertex).
         _ => [ulps(p[0], eps), p[1] - ulps(buff, eps)],
-    };
-    let slab = if g.next() % 5 == 0 {
-        let bottom = g.uni(-5.0, 0.0);
-        Some([bottom, bottom + g.uni(0.0, 5.0), g.uni(-1.0, 1.0)])
-    } else {
-        None
-    };
-    let (pos, vel) = match slab {
-        Some(_) => (
-            vec![pos[0], pos[1], g.uni(-6.0, 6.0)],
-            vec![vel[0], vel[1], g.pick(&[0.0, 1.0, -0.5])],
-        ),
-        None => (pos.to_vec(), vel.to_vec()),
-    };
-    F64Case {
-        lookahead,
-        buff,
-        fac,
-        pos,
-        vel,
-        verts,
-        vels,
-        slab,
     }
 }
 

@@ -1,35 +1,76 @@
-//! The oracle mirrors the engine's names: for each of paper A's modules (quad,
-//! contain, proximity, detect, well_formed), every `pub fn` of the engine's module
-//! (../src/<module>.rs) has a `pub fn` of the same name in the oracle's module of
-//! the same name, with the same parameter names in the same order. The oracle's
-//! paper functions are generic over a kernel and take it first, as `k`: that one
-//! leading parameter is skipped.
+//! The oracle mirrors the engine's names, module by module. For each of paper A's
+//! modules (quad, contain, proximity, detect with every file of its folder, well_formed,
+//! ring), walked as files in both crates and paired by module path (`detect::same` is
+//! src/detect/same.rs), every `pub fn` of the engine's module has a `pub fn` of the same
+//! name in the oracle's module of the same path, with the same parameter names in the
+//! same order. The oracle's paper functions are generic over a kernel and take it first,
+//! as `k`: that one leading parameter is skipped. A module of one crate without its
+//! counterpart in the other is a fault unless listed below with its reason. And every
+//! one of these files, in both crates, cites its paper section in its module doc (a `§`
+//! reference: ring cites §II, whose polygon is simple and counterclockwise).
 //!
 //! A simple text parse: top-level `pub fn` items (column 0), the generic parameter
 //! list skipped, the parameters split at top-level commas, the name of each taken
-//! before its `:`.
+//! before its `:`. Test modules (files named `tests.rs`) are not paper modules.
 
+use std::collections::BTreeMap;
 use std::path::Path;
 
-/// Paper A's modules, by their file names in both crates.
-const MODULES: [&str; 5] = ["quad", "contain", "proximity", "detect", "well_formed"];
+/// Paper A's modules, by their names in both crates: a file `<name>.rs`, or a folder
+/// `<name>/` whose files are its submodules.
+const MODULES: [&str; 6] = [
+    "quad",
+    "contain",
+    "proximity",
+    "detect",
+    "well_formed",
+    "ring",
+];
+
+/// The name of a test module, skipped by the walk.
+const TEST_MODULE: &str = "tests";
 
 /// The oracle's kernel parameter, first of every kernel-generic paper function.
 const KERNEL_PARAM: &str = "k";
 
+/// Engine modules with no oracle counterpart, each for its reason. Each must exist in
+/// the engine and not in the oracle (a stale entry fails the test).
+const ENGINE_ONLY_MODULES: [(&str, &str); 1] = [(
+    "detect::roots",
+    "float enclosures of the roots of dot_nn_lin's quadratics; the oracle's roots are \
+     exact algebraic numbers (qfield, Kernel::two_roots), with no rounding to bound",
+)];
+
+/// Oracle modules with no engine counterpart, each for its reason (none: every module
+/// of the oracle's paper A has the engine's name).
+const ORACLE_ONLY_MODULES: [(&str, &str); 0] = [];
+
 /// Engine functions with no oracle counterpart, each for its reason. Every name
-/// must exist in the engine (a stale entry fails the test).
-const ENGINE_ONLY: [(&str, &str, &str); 11] = [
+/// must exist in the engine's module and not in the oracle's (a stale entry fails
+/// the test).
+const ENGINE_ONLY: [(&str, &str, &str); 13] = [
     // Three-valued (Tri: Yes, No, Unsure) forms of the float engine's functions:
     // in the oracle every paper function already is kernel-generic and returns
     // Result<_, Abstain>, and the exact kernel never abstains.
     ("quad", "quad_min_box_le_d_tri", "three-valued float form"),
     ("contain", "near_edge_tri", "three-valued float form"),
     ("proximity", "segments_close_tri", "three-valued float form"),
-    ("detect", "detect_same_2d_tri", "three-valued float form"),
-    ("detect", "edge_detect_simp_tri", "three-valued float form"),
-    ("detect", "detect_diff_2d_tri", "three-valued float form"),
-    ("detect", "detect_3d_tri", "three-valued float form"),
+    (
+        "detect::same",
+        "detect_same_2d_tri",
+        "three-valued float form",
+    ),
+    (
+        "detect::warping",
+        "edge_detect_simp_tri",
+        "three-valued float form",
+    ),
+    (
+        "detect::warping",
+        "detect_diff_2d_tri",
+        "three-valued float form",
+    ),
+    ("detect::slab", "detect_3d_tri", "three-valued float form"),
     // Float certification: the same decisions on balls around point-relative
     // coordinates, with error terms; the oracle has no rounding to bound.
     (
@@ -48,11 +89,42 @@ const ENGINE_ONLY: [(&str, &str, &str); 11] = [
         "float certification on relative balls",
     ),
     (
-        "detect",
+        "detect::slab",
         "slab_window_balls",
         "float certification: the window as balls",
     ),
+    // The ring checks: the engine's check_simple sweeps large rings, and keeps the
+    // pairwise form as the sweep's reference; the oracle's check_simple is pairwise.
+    // The engine's check rescales a ring whose exact products over- or underflow;
+    // rationals never do, so the oracle's check_simple and winding are the whole check.
+    (
+        "ring",
+        "check_simple_pairwise",
+        "the sweep's pairwise reference; the oracle's check_simple is pairwise",
+    ),
+    (
+        "ring",
+        "check",
+        "rescues rings whose exact float products over- or underflow",
+    ),
 ];
+
+/// The exemptions a comparison honours (the lists above, or a canary's own).
+struct Exemptions<'a> {
+    engine_only_modules: &'a [(&'a str, &'a str)],
+    oracle_only_modules: &'a [(&'a str, &'a str)],
+    engine_only_fns: &'a [(&'a str, &'a str, &'a str)],
+}
+
+/// The exemptions of the real comparison.
+const EXEMPTIONS: Exemptions<'static> = Exemptions {
+    engine_only_modules: &ENGINE_ONLY_MODULES,
+    oracle_only_modules: &ORACLE_ONLY_MODULES,
+    engine_only_fns: &ENGINE_ONLY,
+};
+
+/// Paper modules by module path ("detect::same"), each with its source text.
+type Tree = BTreeMap<String, String>;
 
 /// A top-level `pub fn`: its name and parameter names.
 #[derive(Debug, PartialEq)]
@@ -140,11 +212,12 @@ fn pub_fns(src: &str) -> Vec<Sig> {
 }
 
 /// The mismatches of the oracle's module against the engine's (empty: mirrored).
-fn mirror_faults(module: &str, engine: &str, oracle: &str) -> Vec<String> {
+fn mirror_faults(module: &str, engine: &str, oracle: &str, ex: &Exemptions) -> Vec<String> {
     let oracle = pub_fns(oracle);
     let mut faults = Vec::new();
     for e in pub_fns(engine) {
-        if ENGINE_ONLY
+        if ex
+            .engine_only_fns
             .iter()
             .any(|&(m, name, _)| m == module && name == e.name)
         {
@@ -170,29 +243,144 @@ fn mirror_faults(module: &str, engine: &str, oracle: &str) -> Vec<String> {
     faults
 }
 
+/// The module doc of a source file: its leading `//!` lines.
+fn module_doc(src: &str) -> String {
+    src.lines()
+        .take_while(|l| l.starts_with("//!"))
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+/// Does the module doc cite a section of the paper?
+fn cites_section(src: &str) -> bool {
+    module_doc(src).contains('§')
+}
+
+/// Every mismatch between the two trees of paper modules: a module without its
+/// counterpart, a function the oracle lacks or names differently, a module doc without
+/// a section, and an exemption that no longer applies.
+fn mirror_tree(engine: &Tree, oracle: &Tree, ex: &Exemptions) -> Vec<String> {
+    let mut faults = Vec::new();
+    for (crate_name, tree) in [("engine", engine), ("oracle", oracle)] {
+        for (module, src) in tree {
+            if !cites_section(src) {
+                faults.push(format!(
+                    "{crate_name} {module}: its module doc cites no paper section (§)"
+                ));
+            }
+        }
+    }
+    for (module, src) in engine {
+        match oracle.get(module) {
+            Some(o) => faults.extend(mirror_faults(module, src, o, ex)),
+            None if ex.engine_only_modules.iter().any(|(m, _)| m == module) => {}
+            None => faults.push(format!("{module} has no oracle module")),
+        }
+    }
+    for module in oracle.keys() {
+        if !engine.contains_key(module) && !ex.oracle_only_modules.iter().any(|(m, _)| m == module)
+        {
+            faults.push(format!("{module} has no engine module"));
+        }
+    }
+    for &(m, _) in ex.engine_only_modules {
+        if !engine.contains_key(m) || oracle.contains_key(m) {
+            faults.push(format!("exemption {m}: not an engine-only module"));
+        }
+    }
+    for &(m, _) in ex.oracle_only_modules {
+        if !oracle.contains_key(m) || engine.contains_key(m) {
+            faults.push(format!("exemption {m}: not an oracle-only module"));
+        }
+    }
+    let has = |tree: &Tree, m: &str, name: &str| {
+        tree.get(m)
+            .is_some_and(|src| pub_fns(src).iter().any(|f| f.name == name))
+    };
+    for &(m, name, _) in ex.engine_only_fns {
+        if !has(engine, m, name) {
+            faults.push(format!("exemption {m}::{name} names no engine function"));
+        } else if has(oracle, m, name) {
+            faults.push(format!(
+                "exemption {m}::{name}: the oracle has it, so compare it"
+            ));
+        }
+    }
+    faults
+}
+
 fn read(path: &Path) -> String {
     std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
 }
 
-#[test]
-fn oracle_mirrors_the_engines_paper_a_functions() {
+/// The `.rs` files below `dir` as module paths under `prefix` (`mod.rs` is the folder's
+/// own module), test modules left out.
+fn walk(dir: &Path, prefix: &str, tree: &mut Tree) {
+    let entries = std::fs::read_dir(dir).unwrap_or_else(|e| panic!("{}: {e}", dir.display()));
+    for entry in entries {
+        let path = entry
+            .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+            .path();
+        let Some(stem) = path.file_stem().and_then(|s| s.to_str()) else {
+            continue;
+        };
+        if stem == TEST_MODULE {
+            continue;
+        }
+        let module = format!("{prefix}::{stem}");
+        if path.is_dir() {
+            walk(&path, &module, tree);
+        } else if path.extension().is_some_and(|x| x == "rs") {
+            let module = if stem == "mod" { prefix } else { &module };
+            tree.insert(module.to_string(), read(&path));
+        }
+    }
+}
+
+/// Paper A's modules of one crate's src/, as files.
+fn paper_tree(src: &Path) -> Tree {
+    let mut tree = Tree::new();
+    for module in MODULES {
+        let file = src.join(format!("{module}.rs"));
+        if file.is_file() {
+            tree.insert(module.to_string(), read(&file));
+        }
+        let folder = src.join(module);
+        if folder.is_dir() {
+            walk(&folder, module, &mut tree);
+        }
+    }
+    tree
+}
+
+/// Both crates' trees: the engine's (../src) and the oracle's (src).
+fn trees() -> (Tree, Tree) {
     let oracle_src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
     let engine_src = Path::new(env!("CARGO_MANIFEST_DIR")).join("../src");
+    (paper_tree(&engine_src), paper_tree(&oracle_src))
+}
+
+#[test]
+fn oracle_mirrors_the_engines_paper_a_modules() {
+    let (engine, oracle) = trees();
     let mut faults = Vec::new();
-    let mut mirrored = 0;
     for module in MODULES {
-        let engine = read(&engine_src.join(format!("{module}.rs")));
-        let oracle = read(&oracle_src.join(format!("{module}.rs")));
-        let engine_fns = pub_fns(&engine);
-        for &(m, name, _) in ENGINE_ONLY.iter().filter(|(m, ..)| *m == module) {
-            if !engine_fns.iter().any(|f| f.name == name) {
-                faults.push(format!("exemption {m}::{name} names no engine function"));
+        for (crate_name, tree) in [("engine", &engine), ("oracle", &oracle)] {
+            if !tree.contains_key(module) {
+                faults.push(format!("{crate_name} has no module {module}"));
             }
         }
-        mirrored += engine_fns.len();
-        faults.extend(mirror_faults(module, &engine, &oracle));
     }
-    assert!(mirrored >= 25, "only {mirrored} engine functions read");
+    faults.extend(mirror_tree(&engine, &oracle, &EXEMPTIONS));
+    // The walk went into the folders, and read the functions.
+    for sub in ["detect::same", "detect::warping", "detect::slab"] {
+        assert!(
+            engine.contains_key(sub) && oracle.contains_key(sub),
+            "{sub} not read"
+        );
+    }
+    let mirrored: usize = engine.values().map(|src| pub_fns(src).len()).sum();
+    assert!(mirrored >= 30, "only {mirrored} engine functions read");
     assert!(faults.is_empty(), "{faults:#?}");
 }
 
@@ -232,8 +420,94 @@ pub fn near_edge<N: Arith, K: Kernel<N>>(
             params: vec!["pi".into(), "pj".into(), "terms".into(), "buff".into()],
         }
     );
-    let faults = mirror_faults("contain", engine, oracle);
+    let faults = mirror_faults("contain", engine, oracle, &EXEMPTIONS);
     assert_eq!(faults.len(), 2, "{faults:#?}");
     assert!(faults[0].contains("no_such_paper_function is missing"));
     assert!(faults[1].contains("\"buf\""));
+}
+
+/// Canaries on the real trees: an extra `pub fn` planted in one engine file, a renamed
+/// parameter in another, and an oracle file whose module doc lost its section are each
+/// reported, and nothing else.
+#[test]
+fn the_check_catches_faults_planted_in_the_real_modules() {
+    let (mut engine, mut oracle) = trees();
+    let before = mirror_tree(&engine, &oracle, &EXEMPTIONS);
+    assert!(before.is_empty(), "{before:#?}");
+    let slab = engine.get_mut("detect::slab").expect("detect::slab");
+    slab.push_str("\npub fn planted_canary(t: f64) -> bool {\n    true\n}\n");
+    let same = oracle.get_mut("detect::same").expect("detect::same");
+    *same = same.replacen('§', "section ", 1);
+    let warping = engine.get_mut("detect::warping").expect("detect::warping");
+    *warping = warping.replacen(
+        "pub fn edge_detect(\n    t: f64,",
+        "pub fn edge_detect(\n    tt: f64,",
+        1,
+    );
+    let faults = mirror_tree(&engine, &oracle, &EXEMPTIONS);
+    assert_eq!(faults.len(), 3, "{faults:#?}");
+    for want in [
+        "oracle detect::same: its module doc cites no paper section",
+        "detect::slab::planted_canary is missing from the oracle",
+        "detect::warping::edge_detect: the engine's parameters are [\"tt\"",
+    ] {
+        assert!(
+            faults.iter().any(|f| f.contains(want)),
+            "{want}: {faults:#?}"
+        );
+    }
+}
+
+/// Canaries on in-memory trees: modules without a counterpart either way, a module doc
+/// without a section, and stale exemptions (a function or module that is not there, a
+/// function the oracle has after all) are each reported.
+#[test]
+fn the_check_catches_missing_modules_citations_and_stale_exemptions() {
+    let tree = |files: &[(&str, &str)]| -> Tree {
+        files
+            .iter()
+            .map(|&(m, src)| (m.to_string(), src.to_string()))
+            .collect()
+    };
+    let engine = tree(&[
+        (
+            "detect",
+            "//! Paper A §II.F.\npub fn dispatch(vertical: bool) {}\n",
+        ),
+        ("detect::only_here", "//! Paper A §II.I.\n"),
+        ("detect::uncited", "//! No section.\npub fn f(t: f64) {}\n"),
+    ]);
+    let oracle = tree(&[
+        (
+            "detect",
+            "//! Paper A §II.F.\npub fn dispatch(k: &K, vertical: bool) {}\n",
+        ),
+        (
+            "detect::uncited",
+            "//! Paper A §III.\npub fn f(k: &K, t: &N) {}\n",
+        ),
+        ("detect::orphan", "//! Paper A §III.\n"),
+    ]);
+    let ex = Exemptions {
+        engine_only_modules: &[("detect::gone", "stale")],
+        oracle_only_modules: &[("detect::uncited", "in both")],
+        engine_only_fns: &[
+            ("detect", "dispatch", "the oracle has it"),
+            ("detect", "gone", "stale"),
+        ],
+    };
+    let faults = mirror_tree(&engine, &oracle, &ex);
+    let want = [
+        "engine detect::uncited: its module doc cites no paper section",
+        "detect::only_here has no oracle module",
+        "detect::orphan has no engine module",
+        "exemption detect::gone: not an engine-only module",
+        "exemption detect::uncited: not an oracle-only module",
+        "exemption detect::dispatch: the oracle has it",
+        "exemption detect::gone names no engine function",
+    ];
+    for w in want {
+        assert!(faults.iter().any(|f| f.contains(w)), "{w}: {faults:#?}");
+    }
+    assert_eq!(faults.len(), want.len(), "{faults:#?}");
 }

@@ -1,0 +1,282 @@
+//! Paper A §II.H: detection for statically shaped polygons, detect_same_2D (and its
+//! run over a slab window's part of the motion, which §III asks for).
+
+use super::statically_shaped;
+use crate::ball::{Ball, BallV, Tri};
+use crate::contain::{definitely_outside_rel, AtTime, Shifted};
+use crate::polygon::VertexSeq;
+use crate::predicates::{self as pr, PathLine, Terms};
+use crate::proximity::segments_close_rel;
+use crate::vect2::Vect2;
+
+/// Paper A §II.H detect_same_2D: does s + t·v come within BUFF of the statically shaped
+/// polygon P + t·V (all v_i equal) for some t ∈ [0, T]?
+///
+/// Step 1: s not definitely outside P → true. Step 2: s + T·v not definitely outside
+/// P + T·V → true. Step 3: some edge with segments_close(s, s + T·(v − v_i), p_i, p_j,
+/// BUFF) → true. Certified: `false` only when the exact answer is false.
+#[inline]
+pub fn detect_same_2d<P, V>(t: f64, s: Vect2, v: Vect2, p: &P, vels: &V, buff: f64) -> bool
+where
+    P: VertexSeq + ?Sized,
+    V: VertexSeq + ?Sized,
+{
+    detect_same_2d_tri(t, s, v, p, vels, buff).or_true()
+}
+
+/// Paper A §II.H detect_same_2D, three-valued (see [`detect_same_2d`]).
+#[inline]
+pub fn detect_same_2d_tri<P, V>(t: f64, s: Vect2, v: Vect2, p: &P, vels: &V, buff: f64) -> Tri
+where
+    P: VertexSeq + ?Sized,
+    V: VertexSeq + ?Sized,
+{
+    if pr::buff_outside_domain(buff) {
+        return Tri::Unsure;
+    }
+    same_window(
+        Ball::exact(0.0),
+        Ball::exact(t),
+        s,
+        v,
+        p,
+        vels,
+        buff,
+        statically_shaped(vels),
+    )
+}
+
+/// detect_same_2D over the time window [ta, tb] of the original motion, which is what
+/// paper A §III runs: detect_same_2D(tb − ta, s + ta·v, v, P + ta·V, V, BUFF). The
+/// window's ends are balls (a slab window's ends are quotients).
+///
+/// In the point's frame (origin s, each velocity relative to v): step 1 is
+/// definitely_outside of (p_i − s) + ta·(v_i − v), step 2 the same at tb, and step 3
+/// translates segments_close by s + ta·v_i: the relative path runs from ta·(v − v_i) to
+/// tb·(v − v_i), the edge from p_i − s to p_j − s + ta·(v_j − v_i). `stat` is
+/// [`statically_shaped`]`(vels)`, which the caller has at hand.
+pub(super) fn same_window<P, V>(
+    ta: Ball,
+    tb: Ball,
+    s: Vect2,
+    v: Vect2,
+    p: &P,
+    vels: &V,
+    buff: f64,
+    stat: bool,
+) -> Tri
+where
+    P: VertexSeq + ?Sized,
+    V: VertexSeq + ?Sized,
+{
+    let n = p.count();
+    if n == 0 {
+        return Tri::No;
+    }
+    let mut acc = match ends_inside(ta, tb, s, v, p, vels, buff, stat) {
+        Tri::Yes => return Tri::Yes,
+        other => other,
+    };
+    let v0 = vels.vertex(0);
+    // Each vertex's side of the relative path's line of the common velocity v_0, computed
+    // once and carried to the next edge: an edge with both ends certainly beyond BUFF on
+    // one side is not close, the same certain test segments_close starts with.
+    let (path0, sides) = PathSides::new(ta, tb, v, v0, buff);
+    let side = |k: usize| sides.of(p.vertex(k), s);
+    let mut side_i = side(0);
+    for i in 0..n {
+        let j = p.next(i);
+        let (vi, vj) = (vels.vertex(i), vels.vertex(j));
+        let side_j = side(j);
+        let same_i = stat || pr::same_velocity(vi, v0);
+        let skip = side_i != 0 && side_i == side_j && same_i && (stat || pr::same_velocity(vj, vi));
+        side_i = side_j;
+        if skip {
+            continue;
+        }
+        let path = if same_i { Some(path0) } else { None };
+        let (pi, pj) = (p.vertex(i), p.vertex(j));
+        match edge_close(ta, tb, s, v, pi, pj, vi, vj, buff, stat, path) {
+            Tri::Yes => return Tri::Yes,
+            Tri::Unsure => acc = Tri::Unsure,
+            Tri::No => {}
+        }
+    }
+    acc
+}
+
+/// Paper A §II.H steps 1 and 2 over the window [ta, tb]: is the point not definitely
+/// outside the polygon at ta, or at tb? `Yes` as soon as one end certainly is not
+/// (definitely_outside says `No`), `No` when both certainly are, `Unsure` otherwise.
+/// From ta = 0 the polygon is P itself; for a statically shaped polygon (`stat`) the
+/// vertices at t are P shifted by t·(v_0 − v) ([`Shifted`]), else each moves by its own
+/// velocity ([`AtTime`]).
+#[inline(always)]
+fn ends_inside<P, V>(
+    ta: Ball,
+    tb: Ball,
+    s: Vect2,
+    v: Vect2,
+    p: &P,
+    vels: &V,
+    buff: f64,
+    stat: bool,
+) -> Tri
+where
+    P: VertexSeq + ?Sized,
+    V: VertexSeq + ?Sized,
+{
+    let mut acc = Tri::No;
+    let v0 = vels.vertex(0);
+    for t in [ta, tb] {
+        let outside = if t.is_exact_zero() {
+            definitely_outside_rel(&AtTime { p, vels, s, v, t }, buff)
+        } else if stat {
+            definitely_outside_rel(&Shifted::new(p, s, v, v0, t), buff)
+        } else {
+            definitely_outside_rel(&AtTime { p, vels, s, v, t }, buff)
+        };
+        match outside {
+            Tri::No => return Tri::Yes,
+            Tri::Unsure => acc = Tri::Unsure,
+            Tri::Yes => {}
+        }
+    }
+    acc
+}
+
+/// Paper A §II.H step 3 for the edge p_i p_j over the window [ta, tb], in the point's
+/// frame: segments_close of the relative path, from ta·(v − v_i) to tb·(v − v_i), and
+/// the edge, from p_i − s to p_j − s + ta·(v_j − v_i). `path` is the relative path of the
+/// common velocity v_0 when v_i = v_0 (computed once for the polygon), `None` otherwise.
+#[inline(always)]
+fn edge_close(
+    ta: Ball,
+    tb: Ball,
+    s: Vect2,
+    v: Vect2,
+    pi: Vect2,
+    pj: Vect2,
+    vi: Vect2,
+    vj: Vect2,
+    buff: f64,
+    stat: bool,
+    path: Option<(BallV, BallV)>,
+) -> Tri {
+    let (pa, pb) = match path {
+        Some(ends) => ends,
+        None => {
+            let rel = BallV::diff(v, vi);
+            (rel.scale(ta), rel.scale(tb))
+        }
+    };
+    let qj = BallV::diff(pj, s);
+    let edge_j = if ta.is_exact_zero() || stat || pr::same_velocity(vj, vi) {
+        qj
+    } else {
+        qj.add(BallV::diff(vj, vi).scale(ta))
+    };
+    let qi = BallV::diff(pi, s);
+    // Exact terms when both window ends are exact floats (always, but for a slab
+    // window's quotients): the path from ta·(v − v_i) to tb·(v − v_i).
+    let terms = || {
+        if ta.r != 0.0 || tb.r != 0.0 {
+            return None;
+        }
+        let path = |k: f64| Terms::ZERO.plus_scaled(k, v)?.plus_scaled(-k, vi);
+        let ej = Terms::diff(pj, s);
+        let ej = if ta.is_exact_zero() || stat || pr::same_velocity(vj, vi) {
+            ej
+        } else {
+            ej.plus_scaled(ta.z, vj)?.plus_scaled(-ta.z, vi)?
+        };
+        Some([path(ta.z)?, path(tb.z)?, Terms::diff(pi, s), ej])
+    };
+    segments_close_rel(pa, pb, qi, edge_j, buff, terms)
+}
+
+/// Paper A §II.H step 3 (segments_close's filter): same_window's side test of a vertex
+/// against the relative path's line: from the rounded difference alone when the window
+/// starts at 0 (the line passes through the point: the static bound of [`PathLine`]),
+/// else on balls ([`pr::side_beyond`], out of line so that the common test stays inlined
+/// in the loop).
+struct PathSides {
+    from_zero: bool,
+    line: PathLine,
+    pa: BallV,
+    m: BallV,
+    buff: f64,
+}
+
+impl PathSides {
+    /// Paper A §II.H step 3: the relative path of the common velocity v_0 over [ta, tb],
+    /// as its two ends, and the side test against its line. From a window starting at 0
+    /// the path starts at the point exactly (and its direction m is its end): the line
+    /// passes through the point, and the static bound of [`PathLine`] suffices;
+    /// otherwise the side is taken on balls.
+    #[inline(always)]
+    fn new(ta: Ball, tb: Ball, v: Vect2, v0: Vect2, buff: f64) -> ((BallV, BallV), PathSides) {
+        let rel0 = BallV::diff(v, v0);
+        let from_zero = ta.is_exact_zero();
+        let (pa0, pb0, m0) = if from_zero {
+            let pb0 = rel0.scale(tb);
+            (BallV::exact(Vect2::ZERO), pb0, pb0)
+        } else {
+            let (pa0, pb0) = (rel0.scale(ta), rel0.scale(tb));
+            (pa0, pb0, pb0.sub(pa0))
+        };
+        let sides = PathSides {
+            from_zero,
+            line: PathLine::new(m0, buff),
+            pa: pa0,
+            m: m0,
+            buff,
+        };
+        ((pa0, pb0), sides)
+    }
+
+    /// The side of vertex p (−1, 0 or +1; 0 when not certainly beyond BUFF).
+    #[inline(always)]
+    fn of(&self, p: Vect2, s: Vect2) -> i8 {
+        if self.from_zero {
+            self.line.side(p - s)
+        } else {
+            side_on_balls(self.pa, self.m, BallV::diff(p, s), self.buff)
+        }
+    }
+}
+
+/// See [`PathSides`].
+#[inline(never)]
+fn side_on_balls(pa: BallV, m: BallV, q: BallV, buff: f64) -> i8 {
+    pr::side_beyond(pa, m, q, buff)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::detect::detect_diff_2d;
+    use crate::detect::tests::v;
+
+    #[test]
+    fn detect_diff_and_same_agree_on_a_translating_square() {
+        // A unit-speed square moving right; a point moving up through its path.
+        let sq = [v(0.0, 0.0), v(2.0, 0.0), v(2.0, 2.0), v(0.0, 2.0)];
+        let vel_same = [v(1.0, 0.0); 4];
+        let s = v(5.0, -3.0);
+        let vs = v(0.0, 1.0);
+        // At t = 4 the square spans x ∈ [4, 6], y ∈ [0, 2] and s = (5, 1): inside.
+        for (t, expect) in [(10.0, true), (2.5, false)] {
+            assert_eq!(
+                detect_same_2d(t, s, vs, &sq[..], &vel_same[..], 0.01),
+                expect,
+                "T={t}"
+            );
+            assert_eq!(
+                detect_diff_2d(t, s, vs, &sq[..], &vel_same[..], 1e-4, 0.01),
+                expect,
+                "T={t}"
+            );
+        }
+    }
+}

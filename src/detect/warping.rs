@@ -1,0 +1,488 @@
+//! Paper A §II.I: detection for warping polygons, from dot_nn_lin and dot_nn through
+//! edge_detect_simp and edge_detect to detect_diff_2D (and its run over a slab window's
+//! part of the motion, which §III asks for).
+
+use super::filter::{never_collapses, swept_boxes_apart, Sweep};
+use super::roots::{ball_set, below_zero_on};
+use super::{Interval, Sign};
+use crate::ball::{self, exact, nonnegative, Ball, BallV, Tri};
+use crate::contain::{definitely_outside_rel, AtTime};
+use crate::polygon::VertexSeq;
+use crate::predicates as pr;
+use crate::vect2::Vect2;
+
+/// Coefficients (t², t, 1) of (ww + t·vv)·(aa + t·bb) as balls. `zero` says which of
+/// ww, vv, aa, bb are known to be exactly 0 (from the inputs): the products they enter
+/// are then exact 0s, not balls of radius ETA (which would blur a line into a parabola).
+#[inline(always)]
+fn dot_coeffs(ww: BallV, vv: BallV, aa: BallV, bb: BallV, zero: [bool; 4]) -> [Ball; 3] {
+    let [w0, v0, a0, b0] = zero;
+    let z = Ball::exact(0.0);
+    let dot = |x: BallV, y: BallV, x0: bool, y0: bool| if x0 || y0 { None } else { Some(x.dot(y)) };
+    let a = dot(vv, bb, v0, b0).unwrap_or(z);
+    let b = match (dot(ww, bb, w0, b0), dot(vv, aa, v0, a0)) {
+        (Some(p), Some(q)) => p.add(q),
+        (Some(p), None) | (None, Some(p)) => p,
+        (None, None) => z,
+    };
+    let c = dot(ww, aa, w0, a0).unwrap_or(z);
+    [a, b, c]
+}
+
+/// Paper A §II.I dot_nn_lin (omitted in the paper; derived in docs/derivations.md): one of the
+/// two intervals whose union is {t ∈ [0, T] : (ww + t·vv)·(aa + t·bb) ≥ 0}.
+///
+/// Certified as an outer enclosure: the returned interval contains the exact one.
+#[inline]
+pub fn dot_nn_lin(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2, sigma: Sign) -> Interval {
+    let e = BallV::exact;
+    let zero = [ww, vv, aa, bb].map(|x| x == Vect2::ZERO);
+    let [a, b, c] = dot_coeffs(e(ww), e(vv), e(aa), e(bb), zero);
+    let set = ball_set(a, b, c, 0.0, t, true);
+    match sigma {
+        Sign::Neg => set[0],
+        Sign::Pos => set[1],
+    }
+}
+
+/// Paper A §II.I dot_nn: dot_nn_lin(T, F·aa + σ2·ww, F·bb + σ2·vv, aa, bb, σ1).
+///
+/// (F·aa + σ2·ww + t(F·bb + σ2·vv))·(aa + t·bb) = F·‖aa + t·bb‖² + σ2·(ww + t·vv)·(aa + t·bb),
+/// so σ2 = +1 selects X ≥ −F·g² and σ2 = −1 selects X ≤ F·g²: together |X| ≤ F·g².
+/// Certified as an outer enclosure, with F·aa + σ2·ww formed on balls.
+#[inline]
+pub fn dot_nn(
+    t: f64,
+    ww: Vect2,
+    vv: Vect2,
+    aa: Vect2,
+    bb: Vect2,
+    sigma1: Sign,
+    sigma2: Sign,
+    f: f64,
+) -> Interval {
+    let e = BallV::exact;
+    let k = Ball::exact(f);
+    let s2 = Ball::exact(sigma2.value());
+    let w2 = e(aa).scale(k).add(e(ww).scale(s2));
+    let v2 = e(bb).scale(k).add(e(vv).scale(s2));
+    let z = |x: Vect2| x == Vect2::ZERO;
+    let zero = [z(aa) && z(ww), z(bb) && z(vv), z(aa), z(bb)];
+    let [a, b, c] = dot_coeffs(w2, v2, e(aa), e(bb), zero);
+    let set = ball_set(a, b, c, 0.0, t, true);
+    match sigma1 {
+        Sign::Neg => set[0],
+        Sign::Pos => set[1],
+    }
+}
+
+/// Does some choice of one interval from each of the four pairs have a common point?
+/// (edge_detect_simp step 2: max of the lower ends ≤ min of the upper ends.)
+#[inline]
+fn some_choice_meets(sets: &[[Interval; 2]; 4]) -> bool {
+    first_meeting(sets).is_some()
+}
+
+/// Paper A §II.I edge_detect_simp step 2: the common part [lb, ub] of the first choice (one interval from each of the four
+/// pairs) that has one, as in [`some_choice_meets`].
+#[inline]
+fn first_meeting(sets: &[[Interval; 2]; 4]) -> Option<(f64, f64)> {
+    for i1 in &sets[0] {
+        for i2 in &sets[1] {
+            let (lb12, ub12) = (i1.lb.max(i2.lb), i1.ub.min(i2.ub));
+            if lb12 > ub12 {
+                continue;
+            }
+            for i3 in &sets[2] {
+                for i4 in &sets[3] {
+                    let (lb, ub) = (lb12.max(i3.lb).max(i4.lb), ub12.min(i3.ub).min(i4.ub));
+                    if lb <= ub {
+                        return Some((lb, ub));
+                    }
+                }
+            }
+        }
+    }
+    None
+}
+
+/// Paper A §II.I (edge_detect_simp): a quadratic with ball coefficients (t², t, 1) at an exact time t ≥ 0, by Horner's
+/// rule on balls: the exact quadratic's value at t lies in the result.
+#[inline(always)]
+fn quad_at(c: &[Ball; 3], t: f64) -> Ball {
+    c[0].scale(t).add(c[1]).scale(t).add(c[2])
+}
+
+/// Paper A §II.I edge_detect_simp: is there a t ∈ [0, T] with
+/// |(ww + t·vv)·(aa + t·bb)| ≤ (1 + F)·‖aa + t·bb‖² and
+/// |(ww + t·vv)·(aa⊥ + t·bb⊥)| ≤ F·‖aa⊥ + t·bb⊥‖²? Certified (see
+/// [`edge_detect_simp_tri`]).
+#[inline]
+pub fn edge_detect_simp(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2, f: f64) -> bool {
+    let e = BallV::exact;
+    let bb0 = bb == Vect2::ZERO;
+    edge_detect_simp_tri(
+        Ball::exact(0.0),
+        Ball::exact(t),
+        e(ww),
+        e(vv),
+        e(aa),
+        e(bb),
+        bb0,
+        f,
+    )
+    .or_true()
+}
+
+/// The four quadratics of edge_detect_simp (§II.I), F·‖a‖² + w×a, F·‖a‖² − w×a,
+/// K·‖a‖² + w·a and K·‖a‖² − w·a (K = 1 + F, a = aa + t·bb, w = ww + t·vv), as balls of
+/// coefficients (t², t, 1): each coefficient is computed in floats, and its radius is a
+/// static bound on the distance to the exact coefficient, for every exact input within
+/// the balls ww, vv, aa, bb and k1 ∋ 1 + F.
+///
+/// Derivation. For vectors x, y known within r_x, r_y per coordinate, with
+/// n_x = |x̃₁| + |x̃₂|, the exact x·y (or x × y) lies within
+/// n_x·r_y + n_y·r_x + 2·r_x·r_y of x̃·ỹ (each of the two products moves by at most
+/// |x̃ᵢ|·r_y + |ỹᵢ|·r_x + r_x·r_y), and fl(fl(x̃₁ỹ₁) ± fl(x̃₂ỹ₂)) within
+/// u·(|x̃₁ỹ₁| + |x̃₂ỹ₂|)·(2 + u) ≤ 3u·n_x·n_y of x̃·ỹ: that is [`pair_err`]. A sum of two
+/// such products adds u·|sum|. A coefficient c = K·g ± h (g of ‖a‖², h of w·a or w × a)
+/// with K within r_K of k̃ is within |k̃|·E_g + r_K·(|g̃| + E_g) + E_h of k̃·g̃ ± h̃, and its
+/// two roundings add u·|fl(k̃g̃)| + u·|c̃| ≤ 2u·|fl(k̃g̃)| + u·(1 + u)·|h̃|, so one bound
+/// serves both signs. Every bound is a sum of products of non-negative floats at most
+/// [`ball::UP_OPS`] roundings deep, raised by [`ball::up`] (which also covers underflow).
+/// When bb is exactly 0 (`bb0`) the t² coefficients are exact zeros.
+#[inline(always)]
+fn simp_quadratics(
+    ww: BallV,
+    vv: BallV,
+    aa: BallV,
+    bb: BallV,
+    bb0: bool,
+    k1: Ball,
+    f: f64,
+) -> [[Ball; 3]; 4] {
+    let n = |x: BallV| x.v.x.abs() + x.v.y.abs();
+    let (nw, nv, na, nb) = (n(ww), n(vv), n(aa), n(bb));
+    let (rw, rv, ra, rb) = (ww.r, vv.r, aa.r, bb.r);
+    let (w, v, a, b) = (ww.v, vv.v, aa.v, bb.v);
+    // Values: ‖a‖² = g2·t² + g1·t + g0, w·a = x2·t² + x1·t + x0, w × a likewise (y).
+    let cross = |x: Vect2, y: Vect2| x.dot(y.perp());
+    let (ab, wb, va) = (a.dot(b), w.dot(b), v.dot(a));
+    let (wbx, vax) = (cross(w, b), cross(v, a));
+    let g = [b.dot(b), 2.0 * ab, a.dot(a)];
+    let x = [v.dot(b), wb + va, w.dot(a)];
+    let y = [cross(v, b), wbx + vax, cross(w, a)];
+    let eg = [
+        pair_err(nb, rb, nb, rb),
+        2.0 * pair_err(na, ra, nb, rb),
+        pair_err(na, ra, na, ra),
+    ];
+    let (e_vb, e_wb, e_va, e_wa) = (
+        pair_err(nv, rv, nb, rb),
+        pair_err(nw, rw, nb, rb),
+        pair_err(nv, rv, na, ra),
+        pair_err(nw, rw, na, ra),
+    );
+    let eh = |h: &[f64; 3]| [e_vb, e_wb + e_va + ball::U * h[1].abs(), e_wa];
+    let (ex, ey) = (eh(&x), eh(&y));
+    // One K·‖a‖² ± h pair: values of both signs and their shared radii.
+    let pair = |k: Ball, h: &[f64; 3], e: &[f64; 3]| {
+        let kg = [k.z * g[0], k.z * g[1], k.z * g[2]];
+        let r = |i: usize| {
+            ball::up(
+                k.z.abs() * eg[i]
+                    + k.r * (g[i].abs() + eg[i])
+                    + e[i]
+                    + 2.0 * ball::U * kg[i].abs()
+                    + 2.0 * ball::U * h[i].abs(),
+            )
+        };
+        let rs = [r(0), r(1), r(2)];
+        let c = |i: usize, sigma: f64| {
+            if bb0 && i == 0 {
+                Ball::exact(0.0)
+            } else {
+                Ball {
+                    z: if sigma > 0.0 {
+                        kg[i] + h[i]
+                    } else {
+                        kg[i] - h[i]
+                    },
+                    r: rs[i],
+                }
+            }
+        };
+        (
+            [c(0, 1.0), c(1, 1.0), c(2, 1.0)],
+            [c(0, -1.0), c(1, -1.0), c(2, -1.0)],
+        )
+    };
+    let (p_pos, p_neg) = pair(Ball::exact(f), &y, &ey);
+    let (a_pos, a_neg) = pair(k1, &x, &ex);
+    [p_pos, p_neg, a_pos, a_neg]
+}
+
+/// Paper A §II.I (edge_detect_simp): the bound of [`simp_quadratics`] on |x·y − fl(x̃·ỹ)| (or the cross product) for
+/// vectors known within r_x and r_y per coordinate, n_x = ‖x̃‖₁, n_y = ‖ỹ‖₁:
+/// n_x·r_y + n_y·r_x + 2·r_x·r_y + 3u·n_x·n_y, raised by [`ball::up`].
+#[inline(always)]
+fn pair_err(nx: f64, rx: f64, ny: f64, ry: f64) -> f64 {
+    ball::up(nx * ry + ny * rx + 2.0 * rx * ry + 3.0 * ball::U * (nx * ny))
+}
+
+/// Paper A §II.I edge_detect_simp over the time window [ta, tb], three-valued, on balls.
+///
+/// The paper loops over six signs and intersects four dot_nn intervals per choice. A
+/// choice meets exactly when some t lies in all four unions, i.e. when the four
+/// quadratics (1 + F)‖a‖² ∓ w·a and F‖a‖² ∓ w×a (a = aa + t·bb, w = ww + t·vv; w·a⊥ =
+/// w × a) are all ≥ 0 at one t. Their coefficients share nine dot and cross products,
+/// formed once, with static error bounds (`simp_quadratics`). Each quadratic's set is
+/// enclosed from outside and from inside (`ball_set`): no meeting of the outer sets is
+/// a certain `No`; a time at which all four are certainly ≥ 0 (`quad_at`), or a
+/// meeting of the inner sets, a certain `Yes`; anything between is `Unsure`. The
+/// perpendicular conditions go first: they fail for most edges, and where they hold
+/// (short intervals) the along conditions are usually settled by one evaluation, without
+/// their roots. `bb0` says that bb is exactly 0 (a translating edge, v_i = v_j): the t²
+/// coefficients are then exact zeros, and the quadratics lines.
+pub fn edge_detect_simp_tri(
+    ta: Ball,
+    tb: Ball,
+    ww: BallV,
+    vv: BallV,
+    aa: BallV,
+    bb: BallV,
+    bb0: bool,
+    f: f64,
+) -> Tri {
+    let (one_f, err) = exact::two_sum(1.0, f);
+    let q = simp_quadratics(
+        ww,
+        vv,
+        aa,
+        bb,
+        bb0,
+        Ball {
+            z: one_f,
+            r: err.abs(),
+        },
+        f,
+    );
+    let (lo, hi) = (ta.lo().max(0.0), tb.hi());
+    if !(lo.is_finite() && hi.is_finite()) {
+        return Tri::Unsure;
+    }
+    let empty = |s: &[Interval; 2]| s[0].is_empty() && s[1].is_empty();
+    let outer = |c: &[Ball; 3]| ball_set(c[0], c[1], c[2], lo, hi, true);
+    let p_pos = outer(&q[0]);
+    if empty(&p_pos) {
+        return Tri::No;
+    }
+    let p_neg = outer(&q[1]);
+    if empty(&p_neg) {
+        return Tri::No;
+    }
+    // The inner window: times that lie in [ta, tb] for every exact ta and tb.
+    let (ilo, ihi) = (ta.hi().max(0.0), tb.lo());
+    let yes_at = |t: f64| {
+        let t = t.max(ilo).min(ihi);
+        // The along conditions first: where the perpendicular ones meet, they are the
+        // ones that fail when the edge is missed.
+        ilo <= ihi
+            && [2, 3, 0, 1]
+                .iter()
+                .all(|&k| nonnegative(quad_at(&q[k], t)) == Tri::Yes)
+    };
+    // The perpendicular conditions hold only on the meetings J of their two outer sets,
+    // short intervals around the times the point crosses the edge's line. On each J,
+    // either one time (its middle) certainly satisfies all four quadratics — a certain
+    // yes — or an along quadratic is certainly negative all over J ([`below_zero_on`],
+    // on the coefficients' upper ends, which bound the exact quadratic for t ≥ 0): J
+    // holds no solution. Only when some J is settled neither way are the along
+    // quadratics' sets formed (below).
+    let mut settled = true;
+    let below =
+        |c: &[Ball; 3], l: f64, h: f64| below_zero_on(c[0].hi(), c[1].hi(), c[2].hi(), l, h);
+    for i1 in &p_pos {
+        for i2 in &p_neg {
+            let (jl, ju) = (i1.lb.max(i2.lb), i1.ub.min(i2.ub));
+            if jl > ju {
+                continue;
+            }
+            if yes_at(0.5 * jl + 0.5 * ju) {
+                return Tri::Yes;
+            }
+            if !(below(&q[2], jl, ju) || below(&q[3], jl, ju)) {
+                settled = false;
+            }
+        }
+    }
+    if settled {
+        return Tri::No;
+    }
+    let a_pos = outer(&q[2]);
+    if empty(&a_pos) {
+        return Tri::No;
+    }
+    let a_neg = outer(&q[3]);
+    let Some((lb, ub)) = first_meeting(&[p_pos, p_neg, a_pos, a_neg]) else {
+        return Tri::No;
+    };
+    // A certain yes from the middle of the outer sets' meeting, as above.
+    if yes_at(0.5 * lb + 0.5 * ub) {
+        return Tri::Yes;
+    }
+    let inner = q.map(|c| ball_set(c[0], c[1], c[2], ilo, ihi, false));
+    if some_choice_meets(&inner) {
+        Tri::Yes
+    } else {
+        Tri::Unsure
+    }
+}
+
+/// Paper A §II.I eq (2) edge_detect: does s + t·v meet the moving segment
+/// (p_i + t·v_i, p_j + t·v_j) for some t ∈ [0, T] (within the F slack)?
+///
+/// edge_detect_simp(T, s − (½p_j + ½p_i), v − (½v_j + ½v_i), ½p_j − ½p_i, ½v_j − ½v_i, F):
+/// positions relative to the edge's midpoint, against the half-edge vector. Certified.
+#[inline]
+pub fn edge_detect(
+    t: f64,
+    s: Vect2,
+    v: Vect2,
+    pi: Vect2,
+    pj: Vect2,
+    vi: Vect2,
+    vj: Vect2,
+    f: f64,
+) -> bool {
+    let sweep = Sweep::new(0.0, t, s, v);
+    edge_detect_window(
+        &sweep,
+        Ball::exact(0.0),
+        Ball::exact(t),
+        s,
+        v,
+        pi,
+        pj,
+        vi,
+        vj,
+        f,
+    )
+    .or_true()
+}
+
+/// edge_detect over the window [ta, tb] of the original motion, three-valued: the
+/// paper's edge_detect(tb − ta, s + ta·v, v, p_i + ta·v_i, …) asks for a time of
+/// [ta, tb] at which the same four quadratics of t hold.
+///
+/// ww = −((p_i − s) + (p_j − s))/2, vv = −((v_i − v) + (v_j − v))/2, aa = (p_j − p_i)/2,
+/// bb = (v_j − v_i)/2, each on balls.
+#[inline(always)]
+fn edge_detect_window(
+    sweep: &Sweep,
+    ta: Ball,
+    tb: Ball,
+    s: Vect2,
+    v: Vect2,
+    pi: Vect2,
+    pj: Vect2,
+    vi: Vect2,
+    vj: Vect2,
+    f: f64,
+) -> Tri {
+    if swept_boxes_apart(sweep, pi, pj, vi, vj, f)
+        && never_collapses(sweep.t0, sweep.t1, pi, pj, vi, vj)
+    {
+        return Tri::No;
+    }
+    let (qi, qj) = (BallV::diff(pi, s), BallV::diff(pj, s));
+    let (ui, uj) = (BallV::diff(vi, v), BallV::diff(vj, v));
+    let ww = qi.add(qj).half().neg();
+    let vv = ui.add(uj).half().neg();
+    let aa = BallV::diff(pj, pi).half();
+    let bb = BallV::diff(vj, vi).half();
+    edge_detect_simp_tri(ta, tb, ww, vv, aa, bb, vi == vj, f)
+}
+
+/// Paper A §II.I detect_diff_2D: s not definitely outside P, or some moving edge met by
+/// s + t·v within [0, T] (edge_detect). Certified: `false` only when the exact answer is.
+#[inline]
+pub fn detect_diff_2d<P, V>(t: f64, s: Vect2, v: Vect2, p: &P, vels: &V, f: f64, buff: f64) -> bool
+where
+    P: VertexSeq + ?Sized,
+    V: VertexSeq + ?Sized,
+{
+    detect_diff_2d_tri(t, s, v, p, vels, f, buff).or_true()
+}
+
+/// Paper A §II.I detect_diff_2D, three-valued (see [`detect_diff_2d`]).
+#[inline]
+pub fn detect_diff_2d_tri<P, V>(
+    t: f64,
+    s: Vect2,
+    v: Vect2,
+    p: &P,
+    vels: &V,
+    f: f64,
+    buff: f64,
+) -> Tri
+where
+    P: VertexSeq + ?Sized,
+    V: VertexSeq + ?Sized,
+{
+    if pr::buff_outside_domain(buff) {
+        return Tri::Unsure;
+    }
+    diff_window(Ball::exact(0.0), Ball::exact(t), s, v, p, vels, f, buff)
+}
+
+/// detect_diff_2D over the window [ta, tb] of the original motion (see
+/// [`same_window`](super::same::same_window)).
+pub(super) fn diff_window<P, V>(
+    ta: Ball,
+    tb: Ball,
+    s: Vect2,
+    v: Vect2,
+    p: &P,
+    vels: &V,
+    f: f64,
+    buff: f64,
+) -> Tri
+where
+    P: VertexSeq + ?Sized,
+    V: VertexSeq + ?Sized,
+{
+    let n = p.count();
+    if n == 0 {
+        return Tri::No;
+    }
+    let mut acc = match definitely_outside_rel(
+        &AtTime {
+            p,
+            vels,
+            s,
+            v,
+            t: ta,
+        },
+        buff,
+    ) {
+        Tri::No => return Tri::Yes,
+        Tri::Unsure => Tri::Unsure,
+        Tri::Yes => Tri::No,
+    };
+    let sweep = Sweep::new(ta.lo().max(0.0), tb.hi(), s, v);
+    for i in 0..n {
+        let j = p.next(i);
+        let (pi, pj) = (p.vertex(i), p.vertex(j));
+        let (vi, vj) = (vels.vertex(i), vels.vertex(j));
+        match edge_detect_window(&sweep, ta, tb, s, v, pi, pj, vi, vj, f) {
+            Tri::Yes => return Tri::Yes,
+            Tri::Unsure => acc = Tri::Unsure,
+            Tri::No => {}
+        }
+    }
+    acc
+}
+
+#[cfg(test)]
+mod tests;

@@ -30,7 +30,8 @@ pub const ETA: f64 = f64::MIN_POSITIVE / 8_796_093_022_208.0; // 2⁻¹⁰²² /
 
 /// How many roundings of non-negative numbers [`up`] absorbs: their computed value is at
 /// least the exact one times (1 − u)^UP_OPS ≥ 1 − 14u; ×(1 + 16u) (itself rounded, −u)
-/// brings it back above 1 + u − O(u²) > 1.
+/// brings it back above 1 + u − O(u²) > 1. (The error analysis names it; no code reads it.)
+#[allow(dead_code)]
 pub const UP_OPS: u32 = 14;
 
 /// max of two non-negative magnitudes by one comparison. A NaN argument may be dropped:
@@ -158,23 +159,6 @@ impl Tri {
 #[inline(always)]
 fn bounded(b: Ball) -> bool {
     b.r < f64::INFINITY
-}
-
-/// The sign of a ball: `Some(±1)` when |z| > r, `Some(0)` when the ball is exactly 0
-/// (z = r = 0), `None` when undecided or not finite.
-#[inline(always)]
-pub fn sign_of(b: Ball) -> Option<i8> {
-    if !bounded(b) {
-        None
-    } else if b.z > b.r {
-        Some(1)
-    } else if -b.z > b.r {
-        Some(-1)
-    } else if b.z == 0.0 && b.r == 0.0 {
-        Some(0)
-    } else {
-        None
-    }
 }
 
 /// exact > 0, certified.
@@ -674,6 +658,7 @@ pub mod exact {
     }
 
     /// The exact sign of Σ xs.
+    #[cfg(test)]
     pub fn sign_sum(xs: &[f64]) -> Option<i8> {
         let mut s = Sum::default();
         for &x in xs {

@@ -59,6 +59,7 @@ impl<P: VertexSeq> VertexSeq for Perturbed<P> {
 
 /// A polygon seen from the moving point: vertex i minus the point, as a ball, and as
 /// exact terms when the vertex is a simple enough expression of the inputs.
+#[doc(hidden)]
 pub trait RelPoly {
     /// Number of vertices.
     fn count(&self) -> usize;
@@ -86,6 +87,7 @@ pub trait RelPoly {
 
 /// P + t·V seen from s + t·v, for an exact float time t (t = 0: P seen from s).
 #[derive(Clone, Copy, Debug)]
+#[doc(hidden)]
 pub struct AtTime<'a, P: ?Sized, V: ?Sized> {
     /// The vertices P at t = 0.
     pub p: &'a P,
@@ -153,6 +155,7 @@ impl<P: VertexSeq + ?Sized, V: VertexSeq + ?Sized> RelPoly for AtTime<'_, P, V> 
 /// A statically shaped P + t·V (all v_i = v_0) seen from s + t·v: P seen from s,
 /// shifted by one vector t·(v_0 − v), formed once (its exact terms only on demand).
 #[derive(Clone, Copy, Debug)]
+#[doc(hidden)]
 pub struct Shifted<'a, P: ?Sized> {
     /// The vertices P at t = 0.
     pub p: &'a P,
@@ -230,6 +233,7 @@ impl<P: VertexSeq + ?Sized> RelPoly for Shifted<'_, P> {
 /// `terms` gives the ends' exact terms (relative to the point) for the comparisons the
 /// balls cannot settle; it is called only then.
 #[inline]
+#[doc(hidden)]
 pub fn near_edge_rel(
     a: BallV,
     b: BallV,
@@ -353,6 +357,7 @@ pub fn definitely_outside<P: VertexSeq + ?Sized>(p: &P, s: Vect2, buff: f64) -> 
 /// One pass does steps 2–4: an edge of P*_BUFF whose two ends were not perturbed is the
 /// same edge of P, so its near_edge test is not repeated. An undecided perturbation
 /// leaves P*_BUFF unknown, and the answer can then only be `No` or `Unsure`.
+#[doc(hidden)]
 pub fn definitely_outside_rel<R: RelPoly + ?Sized>(p: &R, buff: f64) -> Tri {
     if pr::buff_outside_domain(buff) {
         return Tri::Unsure;

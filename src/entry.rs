@@ -12,8 +12,8 @@
 //! g(t) = (x − a) × (b − a) = 0, h₁(t) = (x − a)·(b − a) ≥ 0 and
 //! h₂(t) = (b − x)·(b − a) ≥ 0 (paper A §II.C's quadratics without the BUFF band). The
 //! three are quadratics in t; on a time interval [m − h, m + h] each lies within
-//! f(m) ± (|f′(m)|·h + |f″/2|·h²), evaluated at the float m on [`Ball`]s, so the range
-//! is rigorous (the module doc of [`crate::ball`] gives the rounding model). An edge
+//! f(m) ± (|f′(m)|·h + |f″/2|·h²), evaluated at the float m on `Ball`s, so the range
+//! is rigorous (the module doc of `crate::ball` gives the rounding model). An edge
 //! whose g range excludes 0, or whose h₁ or h₂ range is negative, certainly has no
 //! contact on the interval.
 //!

@@ -1,9 +1,9 @@
 //! polyguard: does a moving point enter a moving (possibly warping) polygon?
 //!
 //! The f64 engine of paper A (Narkawicz & Hagen): [`quad`] (§I), [`contain`] (§II.B–E),
-//! [`proximity`] (§II.G), [`detect`] (§II.H, §II.I, §III), [`well_formed`](mod@well_formed) (§II.J), every
-//! sign decision in [`predicates`], certified by the arithmetic of [`ball`]. The
-//! high-level entry point is `api::detect`.
+//! [`proximity`] (§II.G), [`detect`] (§II.H, §II.I, §III), [`well_formed`](mod@well_formed)
+//! (§II.J), every sign decision certified (a three-valued [`Tri`]). The high-level entry
+//! points are `api::detect`, `api::detect_time` and `batch::detect_batch`.
 //!
 //! ```
 //! # #[cfg(feature = "std")] {
@@ -31,6 +31,11 @@
 //! - `plain`: the uncertified f64 transcription of the paper (module `plain`), for
 //!   comparison.
 //! - `nalgebra`: conversions between [`Vect2`] and nalgebra's `Point2`/`Vector2`.
+//! - `internals`: not part of the API. It makes the certification arithmetic (module
+//!   `ball`: balls, error bounds) reachable for the crate's own tests, which check it
+//!   against the exact oracle. The items hidden from this documentation (`ball`, the
+//!   `*_rel` forms, `AtTime`, `Shifted`, `RelPoly`, `edge_detect_simp_tri`,
+//!   `slab_window_balls`) carry no semver promise and may change in any release.
 //! - `parallel`: `batch::detect_batch` (N points against M polygons) across cores with
 //!   rayon; without it the same API runs on the calling thread.
 //!
@@ -43,10 +48,12 @@
 //!   refuses clockwise, self-intersecting and collinear rings with a `CaseError`.
 //! - **Units.** Any consistent units: positions in one length unit, velocities in that
 //!   unit per time unit, the lookahead T in time units, BUFF in the length unit. F is a
-//!   fraction of BUFF (0 < F < 1), κ an angle in radians (the case format takes degrees).
-//! - **BUFF and F.** The paper detects entry into the polygon grown by BUFF (plus F·BUFF
-//!   for a warping one): a "yes" for a point that passes within that band without
-//!   entering is by design, not a false alarm.
+//!   fraction of an edge's length (0 < F < 1: §II.I grows each edge of a warping polygon
+//!   by F times its length), κ an angle in radians (the case format takes degrees).
+//! - **BUFF and F.** The paper detects entry into the polygon grown by BUFF; for a
+//!   warping polygon, §II.I's edge test also reaches F times each edge's length beyond
+//!   it (along and across the edge). A "yes" for a point that passes within that band
+//!   without entering is by design, not a false alarm.
 //! - **Names.** Functions and parameters carry the paper's names (`t`, `s`, `v`, `p`,
 //!   `vels`, `buff`, `f`), and the oracle uses the same ones.
 //!
@@ -57,7 +64,7 @@
 //! The exact oracle (`polyguard-oracle`) executes the PVS theorem that a point which
 //! really enters is detected by paper A, so the engine never misses a true entry.
 //!
-//! Every comparison is certified ([`ball::Tri`]): `No` and `Yes` hold for the exact
+//! Every comparison is certified ([`Tri`]): `No` and `Yes` hold for the exact
 //! inputs. A comparison that f64 cannot decide is resolved towards detection, so an
 //! engine "yes" where paper A says no happens only on an undecided comparison, within
 //! rounding of one of paper A's thresholds; `api::Detection::kind` says when that was
@@ -82,7 +89,11 @@ pub struct BatchDocDoctests;
 
 #[cfg(feature = "std")]
 pub mod api;
+#[cfg(feature = "internals")]
+#[doc(hidden)]
 pub mod ball;
+#[cfg(not(feature = "internals"))]
+mod ball;
 #[cfg(feature = "std")]
 pub mod batch;
 pub mod contain;
@@ -93,7 +104,7 @@ pub mod error;
 #[cfg(feature = "plain")]
 pub mod plain;
 pub mod polygon;
-pub mod predicates;
+mod predicates;
 pub mod proximity;
 pub mod quad;
 #[cfg(feature = "std")]

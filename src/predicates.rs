@@ -582,13 +582,6 @@ pub fn ranges_apart(a_lo: f64, a_hi: f64, b_lo: f64, b_hi: f64, twice_margin: f6
     b_lo - a_hi > twice_margin || a_lo - b_hi > twice_margin
 }
 
-/// §II.E filter, one vertex: hi − lo > 2·m (the margin of [`ranges_apart`] with
-/// one-point ranges). NaN → false (no filtering).
-#[inline(always)]
-pub fn gap_exceeds(lo: f64, hi: f64, twice_margin: f64) -> bool {
-    hi - lo > twice_margin
-}
-
 /// Relative size of the rounding allowance in the swept-box filter of edge_detect:
 /// forming p + t·v and a box gap takes ≤ 4 roundings of ≤ 2⁻⁵³ of the largest magnitude
 /// M involved; 2⁻⁴⁰·M covers them with a factor 2¹¹ to spare.

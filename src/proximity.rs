@@ -52,6 +52,7 @@ pub fn segments_close_tri(c: Vect2, d: Vect2, e: Vect2, f: Vect2, buff: f64) -> 
 /// the radii), and both ends of one segment beyond BUFF on one side of the other's line.
 /// `terms` gives the four points' exact terms, for the comparisons balls cannot settle.
 #[inline]
+#[doc(hidden)]
 pub fn segments_close_rel(
     c: BallV,
     d: BallV,

@@ -22,7 +22,7 @@ pub fn quad2d(a: f64, b: f64, c: f64, d: f64, e: f64, f: f64, r: f64, t: f64) ->
 /// when b² − 4a(c − D) > 0 (the printed "b² 4a(c D) > 0" lost its minus signs).
 ///
 /// Decided exactly for the given floats (sums and products as expansions,
-/// [`pr::quad_min_below_exact`]); `true` when an intermediate overflows or underflows.
+/// `pr::quad_min_below_exact`); `true` when an intermediate overflows or underflows.
 #[inline]
 ///
 /// ```
@@ -50,7 +50,7 @@ pub fn quad_min_le_d(a: f64, b: f64, c: f64, d: f64) -> bool {
 /// Decided on balls, and exactly (expansions) where they cannot tell: `false` only when
 /// the exact answer for these floats is false, `true` beyond it only on overflow or
 /// underflow. (The detectors do not call it: segments_close decides its step 4 in the
-/// geometric form of [`pr::segments_cross`].)
+/// geometric form of `pr::segments_cross`.)
 #[inline]
 ///
 /// ```

@@ -6,7 +6,7 @@
 //! Rounding: each orientation is first taken in floats with Shewchuk's static bound for
 //! orient2d, |det − fl(det)| ≤ (3 + 16u)·u·(|l| + |r|) where l and r are the two rounded
 //! products (u = 2⁻⁵³), used only where no product underflows; when the float value is
-//! within that bound of zero (or tiny) the sign comes from an exact expansion ([`crate::ball::exact`]). The exact step declines (`None`)
+//! within that bound of zero (or tiny) the sign comes from an exact expansion (`crate::ball::exact`). The exact step declines (`None`)
 //! only when a product over- or underflows; such a ring is then reported as not
 //! checkable rather than guessed.
 

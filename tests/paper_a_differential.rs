@@ -11,7 +11,7 @@
 //! offsets to 10⁹, lookaheads of 10⁻⁶ … 10⁹, needles, short edges, up to 256 vertices).
 
 use polyguard::api::{decide, detected};
-use polyguard::ball::Tri;
+use polyguard::Tri;
 use polyguard_harness::classify::Exact;
 use polyguard_harness::gen::{any_case, SplitMix};
 use polyguard_oracle::{paper_detect, truth, Truth};

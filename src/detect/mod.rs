@@ -23,7 +23,9 @@ mod warping;
 #[cfg(feature = "std")]
 pub(crate) use filter::never_collapses;
 pub use same::{detect_same_2d, detect_same_2d_tri};
-pub use slab::{detect_3d, detect_3d_tri, slab_window, slab_window_balls};
+#[doc(hidden)]
+pub use slab::slab_window_balls;
+pub use slab::{detect_3d, detect_3d_tri, slab_window};
 pub use warping::{
     detect_diff_2d, detect_diff_2d_tri, dot_nn, dot_nn_lin, edge_detect, edge_detect_simp,
     edge_detect_simp_tri,

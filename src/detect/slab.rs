@@ -46,6 +46,7 @@ fn slab_sign_exact(z: [f64; 2], k: f64, vz: f64, vsp: f64) -> Option<i8> {
 /// float differences, and the comparisons of the crossing times with T are signs of
 /// sums of a few floats and products (z0 + T·w and z1 − T·w, by expansion). Only the
 /// crossing times themselves, quotients, are enclosed in balls.
+#[doc(hidden)]
 pub fn slab_window_balls(
     t: f64,
     sz: f64,

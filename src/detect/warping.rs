@@ -244,6 +244,7 @@ fn pair_err(nx: f64, rx: f64, ny: f64, ry: f64) -> f64 {
 /// (short intervals) the along conditions are usually settled by one evaluation, without
 /// their roots. `bb0` says that bb is exactly 0 (a translating edge, v_i = v_j): the t²
 /// coefficients are then exact zeros, and the quadratics lines.
+#[doc(hidden)]
 pub fn edge_detect_simp_tri(
     ta: Ball,
     tb: Ball,

@@ -10,7 +10,7 @@
 use std::hash::{DefaultHasher, Hash, Hasher};
 
 use polyguard::api::decide;
-use polyguard::ball::Tri;
+use polyguard::Tri;
 use polyguard_harness::gen::{any_case, SplitMix};
 
 fn main() {

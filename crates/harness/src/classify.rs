@@ -351,7 +351,7 @@ pub fn compare_as(raw: &RawCase, hunted: Hunted) -> Result<Verdict, CompareError
     let tri = api::decide(&case);
     let t_engine = clock.elapsed();
     let engine = tri.or_true();
-    let conservative = tri == polyguard::ball::Tri::Unsure;
+    let conservative = tri == polyguard::Tri::Unsure;
     let plain = api::detected_plain(&case);
     let clock = Instant::now();
     let exact = raw
@@ -406,9 +406,9 @@ pub fn compare_as(raw: &RawCase, hunted: Hunted) -> Result<Verdict, CompareError
         engine,
         conservative,
         certificate_breach: match tri {
-            polyguard::ball::Tri::Yes => !paper,
-            polyguard::ball::Tri::No => paper,
-            polyguard::ball::Tri::Unsure => false,
+            polyguard::Tri::Yes => !paper,
+            polyguard::Tri::No => paper,
+            polyguard::Tri::Unsure => false,
         },
         plain,
         paper,
@@ -427,7 +427,7 @@ pub struct ContractVerdict {
     /// The paper-A function that decided.
     pub method: Method,
     /// The engine's three-valued answer.
-    pub engine: polyguard::ball::Tri,
+    pub engine: polyguard::Tri,
     /// The plain f64 transcription's answer (the canary).
     pub plain: bool,
     /// Paper A in exact arithmetic, asked only when the engine does not certify a yes
@@ -443,7 +443,7 @@ pub fn check_contract(raw: &RawCase) -> Result<ContractVerdict, CompareError> {
         .map_err(|e| CompareError::Engine(e.to_string()))?;
     let engine = api::decide(&case);
     let plain = api::detected_plain(&case);
-    let paper = if engine == polyguard::ball::Tri::Yes {
+    let paper = if engine == polyguard::Tri::Yes {
         None
     } else {
         let exact = raw

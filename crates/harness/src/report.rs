@@ -78,7 +78,7 @@ impl Contract {
     }
 
     fn add_check(&mut self, v: &ContractVerdict) {
-        use polyguard::ball::Tri;
+        use polyguard::Tri;
         let paper_yes = v.engine == Tri::Yes || v.paper == Some(true);
         self.paper_yes += u64::from(paper_yes);
         self.certified_yes += u64::from(v.engine == Tri::Yes);

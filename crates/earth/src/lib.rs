@@ -1,7 +1,11 @@
 //! polyguard-earth: paper B (A. Bienkowski, D. Sidoti and K. R. Pattipati, *Interference
 //! Identification for Time-Varying Polyhedra*, IEEE Access 9, 2021) on the Earth.
 //!
-//! - [`sphere`]: Section V, the Mercator projection and rhumb-line motion on the sphere.
+//! - [`rhumb`]: Section V on the sphere: points, the Mercator plane and rhumb lines.
+//! - [`geodesy`]: Section V on the model of the Earth chosen, the sphere or the WGS84
+//!   ellipsoid.
+//! - [`sphere`]: Section V, Table 2's rectangles moving along rhumb lines (and
+//!   [`rhumb`]'s functions, re-exported).
 //! - [`conflict`]: Section IV, the four stages of interference identification
 //!   ([`conflict::pipeline`] runs them, Algorithm 1).
 //! - [`scenario`]: the scenario GeoJSON (`docs/scenario.md`), read strictly with
@@ -25,5 +29,6 @@ pub mod json;
 pub mod paper_a;
 pub mod picture;
 pub mod reference;
+pub mod rhumb;
 pub mod scenario;
 pub mod sphere;

@@ -579,7 +579,7 @@ const SCENARIO: &str = r#"{"type": "FeatureCollection", "features": [
   "geometry": {"type": "LineString", "coordinates": [[-1, 0.5], [2, 0.5]]}}
 ]}"#;
 
-/// The strict reader's verdict (crates/earth/src/scenario.rs's general path, which names every error):
+/// The strict reader's verdict (crates/earth/src/scenario/read/general.rs, which names every error):
 /// `Err` when the file or any feature is rejected.
 fn scenario_reader_accepts(text: &str) -> Result<(), String> {
     match polyguard_earth::scenario::parse_general(text) {

@@ -38,10 +38,13 @@ pub enum Problem {
     /// The rectangle's steps would carry a vertex past ±89° of latitude (the Mercator
     /// plane ends at the poles).
     RectangleTooLarge(f64),
-    /// A member the format does not define where GeoJSON allows none, or a `properties`
-    /// member one or two letters from a defined one (a misspelling must not change the
-    /// meaning silently), with that name.
+    /// A member one or two letters from a defined one (a misspelling must not change the
+    /// meaning silently), with that name: a `properties` member, or a member of the
+    /// collection, a feature or a geometry that lacks the defined one.
     UnknownMember(Option<&'static str>),
+    /// A member not allowed on this object (RFC 7946 §7.1, or a name the format defines
+    /// on another object, where it would be ignored): where it belongs.
+    Misplaced(&'static str),
     /// A defined property on the other kind of feature (`tf` on a track, `speed_kn` on an
     /// area): it would be ignored. Names the kind ("an area", "a track").
     NotForKind(&'static str),
@@ -107,14 +110,15 @@ pub struct ScenarioError {
 }
 
 /// Something read that the reader wants the user to know: a member kept but not read (a
-/// `properties` member the format does not define), or a longitude beyond ±180° read
+/// `properties` member the format does not define), a foreign member (RFC 7946 §6.1) of
+/// the collection, a feature or a geometry, not read, or a longitude beyond ±180° read
 /// modulo 360°.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ScenarioWarning {
     /// The 1-based line of the member or position.
     pub line: usize,
-    /// Index of the feature in the file.
-    pub index: usize,
+    /// Index of the feature in the file (`None` for a member of the FeatureCollection).
+    pub index: Option<usize>,
     /// `properties.id` when known.
     pub id: Option<String>,
     /// JSON path of the member or position, e.g. `properties.colour`.
@@ -126,8 +130,12 @@ pub struct ScenarioWarning {
 /// The kinds of [`ScenarioWarning`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Warning {
-    /// A member the format does not define, kept and written back, not read.
+    /// A member of `properties` the format does not define, kept and written back, not
+    /// read.
     Kept,
+    /// A foreign member (RFC 7946 §6.1): a member of the collection, a feature or a
+    /// geometry that neither RFC 7946 nor the format defines; not read, not kept.
+    Foreign,
     /// A longitude beyond ±180° (as written) read on the real Earth as the place it
     /// names (the value in (−180, 180]); the first such position of the feature.
     Wrapped(f64, f64),
@@ -135,7 +143,10 @@ pub enum Warning {
 
 impl fmt::Display for ScenarioWarning {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "line {}: feature {}", self.line, self.index)?;
+        match self.index {
+            Some(i) => write!(f, "line {}: feature {i}", self.line)?,
+            None => write!(f, "line {}: the FeatureCollection", self.line)?,
+        }
         if let Some(id) = &self.id {
             write!(f, " (id {id:?})")?;
         }
@@ -143,6 +154,12 @@ impl fmt::Display for ScenarioWarning {
             Warning::Kept => write!(
                 f,
                 ", {}: not defined by the scenario format; kept, not read",
+                self.field
+            ),
+            Warning::Foreign => write!(
+                f,
+                ", {}: a foreign member (defined by neither RFC 7946 nor the scenario \
+                 format); not read",
                 self.field
             ),
             Warning::Wrapped(lon, read) => write!(
@@ -195,6 +212,9 @@ impl fmt::Display for ScenarioError {
                     Some(s) => write!(f, "; did you mean {s}?"),
                     None => Ok(()),
                 }
+            }
+            Problem::Misplaced(place) => {
+                write!(f, "not a member of this object; it belongs in {place}")
             }
             Problem::NotForKind(k) => write!(f, "not a property of {k}"),
             Problem::DuplicateKey => write!(f, "given twice"),
@@ -367,10 +387,10 @@ mod tests {
                 "unknown member; did you mean geometry?",
             ),
             (
-                AREA.replace(r#""type":"Polygon","#, r#""type":"Polygon","coords":1,"#)
+                AREA.replace(r#""geometry":{"#, r#""t0":1,"geometry":{"#)
                     .replace(r#""id":"a""#, r#""id":"x""#),
-                "geometry.coords",
-                "unknown member",
+                "t0",
+                "not a member of this object; it belongs in a Feature's properties (docs/scenario.md)",
             ),
             (
                 TRACK.replace(r#""speed_kn":10"#, r#""speed_kn":-1"#).replace(r#""id":"t""#, r#""id":"x""#),

@@ -2,6 +2,7 @@
 //! member checked by name, every error with its line.
 
 use super::errors::{file_err, Ctx, Problem, ScenarioError, ScenarioWarning, Warning};
+use super::members::{judge, Level, Verdict};
 use super::rules::{check_rings, checked, lay_out, ring_indexed, times_ok, track_from};
 use super::Read;
 use crate::json::{self, Json, Member, Node};
@@ -9,11 +10,6 @@ use crate::scenario::model::{normal_lon, Area, Feature, Kind, Longitudes, Shape}
 use crate::sphere::LonLat;
 use serde_json::{Map, Value};
 
-/// The members each level may have. GeoJSON (RFC 7946) defines `type`, `bbox` and a
-/// Feature's `id`; `name` and `crs` are what GDAL/QGIS write on a collection.
-const COLLECTION_KEYS: [&str; 6] = ["type", "features", "bbox", "name", "crs", "longitudes"];
-const FEATURE_KEYS: [&str; 5] = ["type", "properties", "geometry", "id", "bbox"];
-const GEOMETRY_KEYS: [&str; 3] = ["type", "coordinates", "bbox"];
 /// The properties this format defines, and which kind each belongs to.
 const AREA_PROPS: [&str; 4] = ["id", "kind", "t0", "tf"];
 const TRACK_PROPS: [&str; 7] = [
@@ -60,24 +56,43 @@ impl Reader<'_> {
         }
     }
 
-    /// Members outside `known` are errors (GeoJSON's own levels).
-    fn only_known(
+    /// The members of a GeoJSON object at `level` (`prefix` names it in fields): none
+    /// given twice, none misplaced or misspelt ([`judge`]), and a warning for each foreign
+    /// member (RFC 7946 §6.1), of the feature `index` (`None` for the collection).
+    fn members(
         &self,
         ctx: &Ctx,
+        index: Option<usize>,
         members: &[Member],
-        known: &[&'static str],
-        prefix: &str,
+        (level, prefix): (Level, &str),
+        warnings: &mut Vec<ScenarioWarning>,
     ) -> Result<(), ScenarioError> {
         self.no_repeats(ctx, members, prefix)?;
-        match members.iter().find(|m| !known.contains(&m.key.as_str())) {
-            Some(m) => Err(self.at(
-                ctx,
-                m.at,
-                join(prefix, &m.key),
-                Problem::UnknownMember(json::suggest(&m.key, known)),
-            )),
-            None => Ok(()),
+        for m in members {
+            let field = join(prefix, &m.key);
+            match judge(level, &m.key, members) {
+                Verdict::Defined => {}
+                Verdict::Misplaced(place) => {
+                    return Err(self.at(ctx, m.at, field, Problem::Misplaced(place)))
+                }
+                Verdict::Misspelt(name) => {
+                    return Err(self.at(ctx, m.at, field, Problem::UnknownMember(Some(name))))
+                }
+                Verdict::Foreign => {
+                    if let Json::NotJson(l) = m.value.value {
+                        return Err(self.at(ctx, m.value.at, field, Problem::NotJsonNumber(l)));
+                    }
+                    warnings.push(ScenarioWarning {
+                        line: self.lines.line(m.at),
+                        index,
+                        id: ctx.id.map(str::to_owned),
+                        field,
+                        what: Warning::Foreign,
+                    });
+                }
+            }
         }
+        Ok(())
     }
 
     fn number(
@@ -153,7 +168,7 @@ impl Reader<'_> {
                 if let Some(k) = wrapped {
                     warnings.push(ScenarioWarning {
                         line: self.lines.line(arr[k].at),
-                        index: ctx.index,
+                        index: Some(ctx.index),
                         id: ctx.id.map(str::to_owned),
                         field: format!("{field}[{k}]"),
                         what: Warning::Wrapped(raw[k][0], normal_lon(raw[k][0])),
@@ -223,14 +238,19 @@ impl Reader<'_> {
     }
 
     /// An area's geometry: a Polygon or a MultiPolygon (`true`), its coordinates.
-    fn area_geometry<'n>(&self, ctx: &Ctx, f: &'n Node) -> Result<(&'n Node, bool), ScenarioError> {
+    fn area_geometry<'n>(
+        &self,
+        ctx: &Ctx,
+        f: &'n Node,
+        warnings: &mut Vec<ScenarioWarning>,
+    ) -> Result<(&'n Node, bool), ScenarioError> {
         let multi = f
             .get("geometry")
             .and_then(|g| g.get("type"))
             .and_then(|t| t.as_str())
             == Some("MultiPolygon");
         let ty = if multi { "MultiPolygon" } else { "Polygon" };
-        match self.geometry(ctx, f, ty) {
+        match self.geometry(ctx, f, ty, warnings) {
             Ok(c) => Ok((c, multi)),
             Err(mut e) => {
                 if e.problem == Problem::WrongType("Polygon") {
@@ -241,12 +261,14 @@ impl Reader<'_> {
         }
     }
 
-    /// The geometry's coordinates, its type checked.
+    /// The geometry's coordinates, its members and type checked (a warning for each
+    /// foreign member).
     fn geometry<'n>(
         &self,
         ctx: &Ctx,
         f: &'n Node,
         ty: &'static str,
+        warnings: &mut Vec<ScenarioWarning>,
     ) -> Result<&'n Node, ScenarioError> {
         let g = f
             .get("geometry")
@@ -255,7 +277,11 @@ impl Reader<'_> {
         let members = g
             .members()
             .ok_or_else(|| self.at(ctx, g.at, "geometry", Problem::WrongType("an object")))?;
-        self.only_known(ctx, members, &GEOMETRY_KEYS, "geometry")?;
+        let level = (Level::Geometry, "geometry");
+        self.members(ctx, Some(ctx.index), members, level, warnings)?;
+        if let Some(crs) = g.get("crs") {
+            self.crs(ctx, crs, "geometry")?;
+        }
         match g.get("type") {
             Some(t) if t.as_str() == Some(ty) => {}
             Some(t) => return Err(self.at(ctx, t.at, "geometry.type", Problem::WrongType(ty))),
@@ -334,7 +360,7 @@ impl Reader<'_> {
             extra.insert(m.key.clone(), json::to_value(&m.value));
             kept.push(ScenarioWarning {
                 line: self.lines.line(m.at),
-                index: ctx.index,
+                index: Some(ctx.index),
                 id: ctx.id.map(str::to_owned),
                 field,
                 what: Warning::Kept,
@@ -354,7 +380,7 @@ impl Reader<'_> {
     ) -> Result<Kind, ScenarioError> {
         let p = |k: &str| props.iter().find(|m| m.key == k).map(|m| &m.value);
         let t0 = self.number(ctx, p("t0"), "properties.t0")?;
-        let (coords, multi) = self.area_geometry(ctx, f)?;
+        let (coords, multi) = self.area_geometry(ctx, f, warnings)?;
         let tf = self.number(ctx, p("tf"), "properties.tf")?;
         let polygons: Vec<(&Node, String)> = if multi {
             let parts = coords.elements().ok_or_else(|| {
@@ -403,7 +429,7 @@ impl Reader<'_> {
     ) -> Result<Kind, ScenarioError> {
         let p = |k: &str| props.iter().find(|m| m.key == k).map(|m| &m.value);
         let t0 = self.number(ctx, p("t0"), "properties.t0")?;
-        let coords = self.geometry(ctx, f, "LineString")?;
+        let coords = self.geometry(ctx, f, "LineString", warnings)?;
         let waypoints =
             self.positions(ctx, coords, "geometry.coordinates", false, 0.0, warnings)?;
         let speed = self.number(ctx, p("speed_kn"), "properties.speed_kn")?;
@@ -451,8 +477,8 @@ pub fn parse_general(text: &str) -> Result<Read, ScenarioError> {
             Problem::Json(format!("{} at column {col}", e.message)),
         )
     })?;
-    let feats = r.collection(&root)?;
     let mut out = Read::default();
+    let feats = r.collection(&root, &mut out.warnings)?;
     out.scenario.longitudes = r.longitudes;
     let mut seen = std::collections::HashSet::new();
     for (index, f) in feats.iter().enumerate() {
@@ -468,10 +494,14 @@ pub fn parse_general(text: &str) -> Result<Read, ScenarioError> {
 }
 
 impl Reader<'_> {
-    /// The FeatureCollection around the features (docs/scenario.md): its members, its
-    /// `type`, a `crs` that names WGS 84, its `longitudes` (kept in `self`); its features.
-    /// Every error here is fatal.
-    fn collection<'n>(&mut self, root: &'n Node) -> Result<&'n [Node], ScenarioError> {
+    /// The FeatureCollection around the features (docs/scenario.md): its members (a
+    /// warning for each foreign one), its `type`, a `crs` that names WGS 84, its
+    /// `longitudes` (kept in `self`); its features. Every error here is fatal.
+    fn collection<'n>(
+        &mut self,
+        root: &'n Node,
+        warnings: &mut Vec<ScenarioWarning>,
+    ) -> Result<&'n [Node], ScenarioError> {
         let top = Ctx {
             index: 0,
             id: None,
@@ -489,7 +519,7 @@ impl Reader<'_> {
                 Problem::WrongType("a GeoJSON object"),
             )
         })?;
-        self.only_known(&top, members, &COLLECTION_KEYS, "")
+        self.members(&top, None, members, (Level::Collection, ""), warnings)
             .map_err(fatal)?;
         match root.get("type") {
             Some(t) if t.as_str() == Some("FeatureCollection") => {}
@@ -503,7 +533,7 @@ impl Reader<'_> {
             None => return Err(file_err(self.line(root.at), "type", Problem::Missing)),
         }
         if let Some(crs) = root.get("crs") {
-            self.crs(crs)?;
+            self.crs(&top, crs, "").map_err(fatal)?;
         }
         if let Some(l) = root.get("longitudes") {
             self.longitudes = self.longitudes_member(l)?;
@@ -520,22 +550,25 @@ impl Reader<'_> {
         })
     }
 
-    /// A `crs` member: it must name WGS 84 longitude/latitude ([`WGS84_NAMES`]).
-    fn crs(&self, crs: &Node) -> Result<(), ScenarioError> {
+    /// A `crs` member of the object `prefix` names: it must name WGS 84
+    /// longitude/latitude ([`WGS84_NAMES`]), or the positions would be misread.
+    fn crs(&self, ctx: &Ctx, crs: &Node, prefix: &str) -> Result<(), ScenarioError> {
         let name = crs
             .get("properties")
             .and_then(|p| p.get("name"))
             .and_then(Node::as_str);
         match name {
             Some(n) if WGS84_NAMES.contains(&n) => Ok(()),
-            Some(n) => Err(file_err(
-                self.line(crs.at),
-                "crs",
+            Some(n) => Err(self.at(
+                ctx,
+                crs.at,
+                join(prefix, "crs"),
                 Problem::UnsupportedCrs(n.to_owned()),
             )),
-            None => Err(file_err(
-                self.line(crs.at),
-                "crs.properties.name",
+            None => Err(self.at(
+                ctx,
+                crs.at,
+                join(prefix, "crs.properties.name"),
                 Problem::Missing,
             )),
         }
@@ -585,7 +618,17 @@ impl Reader<'_> {
                 Problem::WrongType("a GeoJSON Feature object"),
             )
         })?;
-        self.only_known(&ctx, members, &FEATURE_KEYS, "")?;
+        let mut warnings = Vec::new();
+        self.members(
+            &ctx,
+            Some(index),
+            members,
+            (Level::Feature, ""),
+            &mut warnings,
+        )?;
+        if let Some(crs) = f.get("crs") {
+            self.crs(&ctx, crs, "")?;
+        }
         match f.get("type") {
             Some(t) if t.as_str() == Some("Feature") => {}
             Some(t) => return Err(self.at(&ctx, t.at, "type", Problem::WrongType("Feature"))),
@@ -629,7 +672,6 @@ impl Reader<'_> {
             })?,
             None => return Err(self.at(&ctx, props_node.at, "properties.kind", Problem::Missing)),
         };
-        let mut warnings = Vec::new();
         let (kind, extra) = self.feature(&ctx, f, props, kind, &mut warnings)?;
         let feature = Feature {
             id: id.to_owned(),
@@ -707,5 +749,102 @@ mod tests {
         let bad_bom = format!("\u{feff}{}", file(&[AREA, "{\"type\":\"Feature\"}"]));
         let r = parse(&bad_bom).expect("collection");
         assert_eq!(r.errors[0].line, Some(3));
+    }
+
+    /// RFC 7946 §6.1: members another tool writes (`generator`, `title`, `style`…) on the
+    /// collection, a feature or a geometry are read past: the scenario is the one without
+    /// them, and each has a warning naming it and where it is (line, feature index and id,
+    /// or the collection).
+    #[test]
+    fn foreign_members_are_read_past_with_a_warning_each() {
+        let plain = file(&[AREA, TRACK]);
+        let foreign = plain
+            .replacen(
+                "\"type\":\"FeatureCollection\",",
+                "\"type\":\"FeatureCollection\",\"generator\":\"qgis\",\"metadata\":{\"v\":[1,2]},",
+                1,
+            )
+            .replace(
+                r#""type":"Feature","properties":{"id":"a""#,
+                r#""type":"Feature","title":"storm","properties":{"id":"a""#,
+            )
+            .replace(
+                r#""type":"LineString","#,
+                r#""type":"LineString","style":{"stroke":"red"},"#,
+            );
+        let (a, b) = (parse(&plain), parse(&foreign));
+        let (a, b) = (a.expect("a collection"), b.expect("a collection"));
+        assert!(a.errors.is_empty() && b.errors.is_empty(), "{:?}", b.errors);
+        assert_eq!(a.scenario, b.scenario);
+        assert!(a.warnings.is_empty());
+        let said: Vec<String> = b.warnings.iter().map(|w| w.to_string()).collect();
+        let tail = ": a foreign member (defined by neither RFC 7946 nor the scenario format); \
+                    not read";
+        assert_eq!(
+            said,
+            [
+                format!("line 1: the FeatureCollection, generator{tail}"),
+                format!("line 1: the FeatureCollection, metadata{tail}"),
+                format!("line 2: feature 0 (id \"a\"), title{tail}"),
+                format!("line 3: feature 1 (id \"t\"), geometry.style{tail}"),
+            ]
+        );
+        assert_eq!(b.warnings[0].index, None);
+        assert_eq!(b.warnings[3].index, Some(1));
+        assert!(b.warnings.iter().all(|w| w.what == Warning::Foreign));
+    }
+
+    /// What a foreign member may not be: a misspelling of a member the format reads that
+    /// the object lacks, a member RFC 7946 §7.1 forbids there, a name the format defines
+    /// on another object, a `crs` other than WGS 84 on a feature or a geometry. Each is an
+    /// error naming the field; inside `properties`, a misspelling is one too.
+    #[test]
+    fn what_may_not_be_foreign_is_an_error() {
+        let e = parse(&file(&[AREA]).replacen(
+            "\"type\":\"FeatureCollection\",",
+            "\"type\":\"FeatureCollection\",\"longitude\":\"unrolled\",",
+            1,
+        ))
+        .expect_err("a file error");
+        assert_eq!(
+            e.to_string(),
+            "line 1: longitude: unknown member; did you mean longitudes?"
+        );
+        for (bad, field, message) in [
+            (
+                AREA.replace(r#""geometry":{"#, r#""coordinates":[],"geometry":{"#),
+                "coordinates",
+                "it belongs in a geometry object (RFC 7946 §7.1)",
+            ),
+            (
+                TRACK.replace(r#""geometry":{"#, r#""longitudes":"unrolled","geometry":{"#),
+                "longitudes",
+                "it belongs in the FeatureCollection (docs/scenario.md)",
+            ),
+            (
+                TRACK.replace(r#""type":"LineString","#, r#""type":"LineString","kind":"track","#),
+                "geometry.kind",
+                "it belongs in a Feature's properties (docs/scenario.md)",
+            ),
+            (
+                TRACK.replace(
+                    r#""type":"LineString","#,
+                    r#""type":"LineString","crs":{"type":"name","properties":{"name":"EPSG:3857"}},"#,
+                ),
+                "geometry.crs",
+                "\"EPSG:3857\" is not WGS 84 longitude/latitude",
+            ),
+            (
+                AREA.replace(r#""tf":2"#, r#""t_f":2"#),
+                "properties.t_f",
+                "unknown member; did you mean tf?",
+            ),
+        ] {
+            let r = parse(&file(&[&bad])).expect("a collection");
+            assert!(r.scenario.features.is_empty(), "{bad}");
+            let e = &r.errors[0];
+            assert_eq!(e.field, field, "{bad}");
+            assert!(e.to_string().contains(message), "{e}");
+        }
     }
 }

@@ -5,6 +5,7 @@
 mod errors;
 mod fast;
 mod general;
+mod members;
 mod rules;
 #[cfg(test)]
 pub(super) mod testkit;
@@ -15,15 +16,18 @@ pub use general::parse_general;
 
 use super::model::Scenario;
 
-/// What [`parse`] read: the valid features, an error per rejected feature, and a
-/// warning per member kept without being read.
+/// What [`parse`] read: the valid features, an error per rejected feature, and the
+/// warnings (nothing here prints: the caller shows them).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Read {
     /// The valid features.
     pub scenario: Scenario,
     /// One per rejected feature (the first thing wrong with it).
     pub errors: Vec<ScenarioError>,
-    /// Members of `properties` that the format does not define (kept, not read).
+    /// One per member not read (a foreign member of the collection, a feature or a
+    /// geometry, or a `properties` member the format does not define, kept) and per
+    /// feature with a longitude beyond ±180° read modulo 360°; of the valid features and
+    /// the collection only.
     pub warnings: Vec<ScenarioWarning>,
 }
 

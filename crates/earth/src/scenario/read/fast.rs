@@ -11,7 +11,7 @@ use serde_json::Map;
 /// The fast path's view of a scenario: clean files deserialize straight into these (no
 /// tree); anything else (an unknown or repeated member, a wrong type, a rule broken)
 /// goes to the general path, which names fields and lines.
-mod fast {
+mod typed {
     use serde::de::IgnoredAny;
     #[derive(serde::Deserialize)]
     #[serde(deny_unknown_fields)]
@@ -61,7 +61,7 @@ mod fast {
 /// which then reads exactly as the general path reads it (public for the differential
 /// fuzz target; [`parse`](crate::scenario::parse) is the reader to use).
 pub fn fast_parse(text: &str) -> Option<Read> {
-    let fc: fast::Collection = serde_json::from_str(text).ok()?;
+    let fc: typed::Collection = serde_json::from_str(text).ok()?;
     if fc.ty != "FeatureCollection" {
         return None;
     }
@@ -106,7 +106,7 @@ pub fn fast_parse(text: &str) -> Option<Read> {
             }
         };
         let kind = match (p.kind.as_str(), &f.geometry) {
-            ("area", fast::Geometry::Polygon(rings))
+            ("area", typed::Geometry::Polygon(rings))
                 if rings.len() == 1
                     && p.speed_kn.is_none()
                     && p.front_nm.is_none()
@@ -118,7 +118,7 @@ pub fn fast_parse(text: &str) -> Option<Read> {
                     .and_then(|ring| area_from(&ctx, ring, p.t0, p.tf))
                     .map(Kind::Area)
             }
-            ("track", fast::Geometry::LineString(line)) if p.tf.is_none() => {
+            ("track", typed::Geometry::LineString(line)) if p.tf.is_none() => {
                 pts("geometry.coordinates", line, false)?
                     .and_then(|w| {
                         track_from(

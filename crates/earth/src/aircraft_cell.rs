@@ -268,6 +268,7 @@ pub struct EarthError {
 }
 
 impl EarthError {
+    /// An error of `kind` about `field`.
     fn new(field: impl Into<String>, kind: EarthErrorKind) -> Self {
         EarthError {
             field: field.into(),
@@ -343,6 +344,7 @@ struct Radii {
     lat: f64,
 }
 
+/// The radii of the model `geo` ([`Radii`]).
 fn radii(geo: Geodesy) -> Radii {
     match geo {
         Geodesy::Sphere => Radii {
@@ -393,6 +395,7 @@ pub fn rhumb_deviation(geo: Geodesy, speed_kn: f64, course: f64, u_abs_max: f64,
     h * h / 8.0 * w * w * course.cos().abs() * sec * tan.abs() * BOUND_SAFETY
 }
 
+/// `x`, when finite (docs/earth-cases.md).
 fn finite(field: &str, x: f64) -> Result<f64, EarthError> {
     if x.is_finite() {
         Ok(x)
@@ -401,6 +404,7 @@ fn finite(field: &str, x: f64) -> Result<f64, EarthError> {
     }
 }
 
+/// A position `[lon, lat]` within the format's ranges (docs/earth-cases.md).
 fn position(field: &str, p: [f64; 2]) -> Result<(), EarthError> {
     let lon = finite(&format!("{field}[0]"), p[0])?;
     let lat = finite(&format!("{field}[1]"), p[1])?;
@@ -425,6 +429,7 @@ fn position(field: &str, p: [f64; 2]) -> Result<(), EarthError> {
     Ok(())
 }
 
+/// A course and a ground speed: finite, the speed not negative (docs/earth-cases.md).
 fn motion(field: &str, m: Motion) -> Result<(), EarthError> {
     finite(&format!("{field}.course_deg"), m.course_deg)?;
     let s = finite(&format!("{field}.speed_kn"), m.speed_kn)?;
@@ -518,6 +523,7 @@ fn unwrap_ring(vertices: &[[f64; 2]], reference: f64) -> Result<Vec<f64>, EarthE
     Ok(out)
 }
 
+/// The cell's error for the exact ring check's fault.
 fn ring_error(fault: RingFault) -> EarthError {
     let kind = match fault {
         RingFault::Crossing { a, b } => EarthErrorKind::Crossing { a, b },
@@ -527,10 +533,12 @@ fn ring_error(fault: RingFault) -> EarthError {
     EarthError::new("cell.vertices", kind)
 }
 
+/// `a − b` on the Mercator plane.
 fn sub(a: Merc, b: Merc) -> Merc {
     [a[0] - b[0], a[1] - b[1]]
 }
 
+/// The length of `a` on the Mercator plane.
 fn norm(a: Merc) -> f64 {
     a[0].hypot(a[1])
 }
@@ -902,6 +910,7 @@ fn auto_pieces(layout: &Layout, air_end: LonLat, t_end: f64) -> usize {
 mod tests {
     use super::*;
 
+    /// An aircraft flying east at `lat` towards a square cell 1° ahead, drifting north-east.
     fn square_case(lat: f64) -> EarthCase {
         EarthCase {
             lookahead_h: 1.0,

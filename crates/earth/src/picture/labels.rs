@@ -232,6 +232,7 @@ mod tests {
         }
     }
 
+    /// A 12-pixel feature label of `text` at `anchor` in `frame`.
     fn request(text: String, anchor: (f64, f64), frame: [f64; 4], prefer: Prefer) -> Request {
         Request {
             text,

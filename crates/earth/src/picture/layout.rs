@@ -344,6 +344,7 @@ mod tests {
         [x - 0.5 * w, y - 0.5 * h, x + 0.5 * w, y + 0.5 * h]
     }
 
+    /// Do two pixel boxes overlap (more than touch)?
     fn overlap(a: [f64; 4], b: [f64; 4]) -> bool {
         a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3]
     }

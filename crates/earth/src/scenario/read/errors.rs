@@ -284,6 +284,7 @@ pub(super) struct Ctx<'a> {
 }
 
 impl Ctx<'_> {
+    /// An error of this feature about `field`, on the feature's line.
     pub(super) fn err(&self, field: impl Into<String>, problem: Problem) -> ScenarioError {
         ScenarioError {
             line: self.line,
@@ -295,6 +296,7 @@ impl Ctx<'_> {
     }
 }
 
+/// An error of the file (no feature) about `field`.
 pub(super) fn file_err(line: Option<usize>, field: &str, problem: Problem) -> ScenarioError {
     ScenarioError {
         line,

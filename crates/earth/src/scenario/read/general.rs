@@ -37,10 +37,12 @@ struct Reader<'t> {
 }
 
 impl Reader<'_> {
+    /// The 1-based line of the byte offset `at`.
     fn line(&self, at: usize) -> Option<usize> {
         Some(self.lines.line(at))
     }
 
+    /// An error of the feature `ctx` about `field`, on the line of the value at `node_at`.
     fn at(&self, ctx: &Ctx, node_at: usize, field: impl Into<String>, p: Problem) -> ScenarioError {
         let mut e = ctx.err(field, p);
         e.line = self.line(node_at);
@@ -95,6 +97,7 @@ impl Reader<'_> {
         Ok(())
     }
 
+    /// A number property: finite, or absent (`null` too).
     fn number(
         &self,
         ctx: &Ctx,
@@ -110,6 +113,9 @@ impl Reader<'_> {
         }
     }
 
+    /// An array of positions `[lon, lat]` (`field` names it): each in range, laid out on
+    /// the plane of the file's `longitudes` from `start` whole turns ([`lay_out`]; a
+    /// `ring` must close without circling a pole); a warning for a longitude wrapped.
     fn positions(
         &self,
         ctx: &Ctx,
@@ -452,6 +458,7 @@ impl Reader<'_> {
     }
 }
 
+/// The JSON path of `key` in the object `prefix` names.
 fn join(prefix: &str, key: &str) -> String {
     if prefix.is_empty() {
         key.to_owned()

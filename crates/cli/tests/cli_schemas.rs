@@ -473,7 +473,8 @@ fn the_detect_answer_schema_rejects_the_canaries() {
 
 /// The scenarios checked: the example, generated ones (both kinds, and static areas whose
 /// overlaps include a MultiPolygon region), and a hand-written one with a properties
-/// member the format does not define (a warning in the answer).
+/// member the format does not define and foreign members on the collection and a feature
+/// (warnings in the answer, one with a null index).
 fn scenarios() -> Vec<(String, String)> {
     let mut out = vec![(
         "examples/example3.geojson".to_owned(),
@@ -495,11 +496,11 @@ fn scenarios() -> Vec<(String, String)> {
         ));
     }
     out.push((
-        "a scenario with an extra property".to_owned(),
-        r#"{"type": "FeatureCollection", "name": "extra", "bbox": [0, 0, 2, 2],
+        "a scenario with an extra property and foreign members".to_owned(),
+        r#"{"type": "FeatureCollection", "name": "extra", "bbox": [0, 0, 2, 2], "generator": "qgis",
             "crs": {"type": "name", "properties": {"name": "urn:ogc:def:crs:OGC:1.3:CRS84"}},
             "features": [
-             {"type": "Feature", "id": 7,
+             {"type": "Feature", "id": 7, "title": "a storm",
               "properties": {"id": "storm", "kind": "area", "t0": 1.5, "tf": null, "colour": "red"},
               "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1], [0, 0]]]}},
              {"type": "Feature",
@@ -579,7 +580,7 @@ const SCENARIO: &str = r#"{"type": "FeatureCollection", "features": [
   "geometry": {"type": "LineString", "coordinates": [[-1, 0.5], [2, 0.5]]}}
 ]}"#;
 
-/// The strict reader's verdict (crates/earth/src/scenario.rs's general path, which names every error):
+/// The strict reader's verdict (crates/earth/src/scenario/read/general.rs, which names every error):
 /// `Err` when the file or any feature is rejected.
 fn scenario_reader_accepts(text: &str) -> Result<(), String> {
     match polyguard_earth::scenario::parse_general(text) {
@@ -619,10 +620,49 @@ fn the_scenario_schema_rejects_the_canaries() {
         scenario_reader_accepts(&good).expect("a hole or a MultiPolygon reads");
         assert_valid(&v, "a hole or a MultiPolygon", &parse("scenario", &good));
     }
-    let canaries = [
-        // an unknown member at the Feature level (GeoJSON allows none there)
+    // foreign members (RFC 7946 §6.1) at each level: both read them past
+    for good in [
         edit(SCENARIO, r#""geometry""#, r#""style": {}, "geometry""#),
+        edit(
+            SCENARIO,
+            r#""features""#,
+            r#""title": "x", "generator": "qgis", "features""#,
+        ),
+        edit(
+            SCENARIO,
+            r#""type": "LineString", "#,
+            r#""type": "LineString", "style": {"stroke": "red"}, "#,
+        ),
+    ] {
+        scenario_reader_accepts(&good).expect("a foreign member reads");
+        assert_valid(&v, "a foreign member", &parse("scenario", &good));
+    }
+    let canaries = [
+        // a misspelt member, or a member not allowed where it is: RFC 7946 §7.1's, or the
+        // format's names on another object
         edit(SCENARIO, r#""geometry""#, r#""geometyr""#),
+        edit(
+            SCENARIO,
+            r#""geometry""#,
+            r#""coordinates": [], "geometry""#,
+        ),
+        edit(SCENARIO, r#""geometry""#, r#""t0": 1, "geometry""#),
+        edit(
+            SCENARIO,
+            r#""geometry""#,
+            r#""longitudes": "unrolled", "geometry""#,
+        ),
+        edit(SCENARIO, r#""features""#, r#""properties": {}, "features""#),
+        edit(
+            SCENARIO,
+            r#""type": "LineString", "#,
+            r#""type": "LineString", "speed_kn": 3, "#,
+        ),
+        edit(
+            SCENARIO,
+            r#""type": "LineString", "#,
+            r#""type": "LineString", "crs": {"type": "name", "properties": {"name": "EPSG:3857"}}, "#,
+        ),
         // a track without its speed, or with a null one
         edit(SCENARIO, r#""speed_kn": 15, "#, ""),
         edit(SCENARIO, r#""speed_kn": 15"#, r#""speed_kn": null"#),
@@ -665,7 +705,6 @@ fn the_scenario_schema_rejects_the_canaries() {
             r#""geometry": {"type": "Polygon""#,
             r#""geometry": null, "g": {"type": "Polygon""#,
         ),
-        edit(SCENARIO, r#""features""#, r#""title": "x", "features""#),
         edit(
             SCENARIO,
             r#""features""#,
@@ -686,6 +725,12 @@ fn the_scenario_schema_rejects_the_canaries() {
         edit(SCENARIO, r#""id": "ship""#, r#""id": "storm""#),
         edit(SCENARIO, r#""tf": 4"#, r#""tf": 0.5"#),
         edit(SCENARIO, r#""tf": 4"#, r#""t_f": 4"#),
+        // a misspelling of a member the object lacks: of the collection's longitudes
+        edit(
+            SCENARIO,
+            r#""features""#,
+            r#""longitude": "unrolled", "features""#,
+        ),
         // exactly 180° of longitude apart: east or west? (200° apart reads as 160° across
         // the antimeridian, which the reader accepts)
         edit(

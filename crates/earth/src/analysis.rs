@@ -333,7 +333,8 @@ fn answer_tail(
 pub struct Summary {
     /// Rejected features.
     pub errors: Vec<ScenarioError>,
-    /// Members kept but not read.
+    /// What the reader warns of: members not read (foreign, or kept in `properties`),
+    /// longitudes read modulo 360°.
     pub warnings: Vec<ScenarioWarning>,
     /// How many conflicts were written.
     pub conflicts: usize,
@@ -435,7 +436,8 @@ pub struct Analysis {
     pub answer: String,
     /// Rejected features.
     pub errors: Vec<ScenarioError>,
-    /// Members kept but not read.
+    /// What the reader warns of: members not read (foreign, or kept in `properties`),
+    /// longitudes read modulo 360°.
     pub warnings: Vec<ScenarioWarning>,
     /// The valid features.
     pub scenario: Scenario,

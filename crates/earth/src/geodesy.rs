@@ -24,7 +24,7 @@
 //! (`d/dφ [sin φ (1 − e² sin² φ)/cos² φ] = (1 + (1 − 3e²) sin² φ + e² sin⁴ φ)/cos³ φ > 0`:
 //! `g'` grows with `|φ|`, and `φ` with `μ`, so `g` is convex.)
 
-use crate::sphere::{LonLat, Merc, EARTH_RADIUS_NM};
+use crate::rhumb::{self, LonLat, Merc, EARTH_RADIUS_NM};
 
 /// The model of the Earth.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -140,7 +140,7 @@ pub fn geodetic_of_isometric(y: f64) -> f64 {
 /// `ψ(φ2) − ψ(φ1)` on the ellipsoid without cancellation for close latitudes.
 fn delta_isometric(phi1: f64, phi2: f64) -> f64 {
     let e = ecc();
-    let sphere = crate::sphere::delta_psi(phi1, phi2);
+    let sphere = rhumb::delta_psi(phi1, phi2);
     // atanh(x2) − atanh(x1) = atanh((x2 − x1)/(1 − x1 x2)), x = e sin φ
     let half = 0.5 * (phi2 - phi1);
     let dsin = 2.0 * (phi1 + half).cos() * half.sin();
@@ -188,7 +188,7 @@ impl Geodesy {
     /// Mercator ordinate `y` of the geodetic latitude `lat` (paper B eq 26 on this model).
     pub fn mercator_y(self, lat: f64) -> f64 {
         match self {
-            Geodesy::Sphere => crate::sphere::mercator_y(lat),
+            Geodesy::Sphere => rhumb::mercator_y(lat),
             Geodesy::Wgs84 => isometric_lat(lat),
         }
     }
@@ -203,7 +203,7 @@ impl Geodesy {
         LonLat {
             lon: m[0],
             lat: match self {
-                Geodesy::Sphere => crate::sphere::mercator_lat(m[1]),
+                Geodesy::Sphere => rhumb::mercator_lat(m[1]),
                 Geodesy::Wgs84 => geodetic_of_isometric(m[1]),
             },
         }
@@ -228,10 +228,10 @@ impl Geodesy {
 
     /// `M(u, h)`: the mean of `g` over `[u, u + h]` (over the step actually taken between
     /// the two f64 model latitudes; `g(u)` when it is 0), without cancellation for short
-    /// steps. On the sphere, [`crate::sphere::mean_sec`].
+    /// steps. On the sphere, [`rhumb::mean_sec`].
     pub fn mean_g(self, u: f64, h: f64) -> f64 {
         match self {
-            Geodesy::Sphere => crate::sphere::mean_sec(u, h),
+            Geodesy::Sphere => rhumb::mean_sec(u, h),
             Geodesy::Wgs84 => {
                 let u2 = u + h;
                 let du = u2 - u;
@@ -270,7 +270,7 @@ impl Geodesy {
     /// `Ψ(φ2) − Ψ(φ1)` of geodetic latitudes, without cancellation for close ones.
     pub fn delta_psi(self, lat1: f64, lat2: f64) -> f64 {
         match self {
-            Geodesy::Sphere => crate::sphere::delta_psi(lat1, lat2),
+            Geodesy::Sphere => rhumb::delta_psi(lat1, lat2),
             Geodesy::Wgs84 => delta_isometric(lat1, lat2),
         }
     }
@@ -279,7 +279,7 @@ impl Geodesy {
     /// bearing `bearing` (radians from north, clockwise) and length `dist_nm`.
     pub fn rhumb_destination(self, p: LonLat, bearing: f64, dist_nm: f64) -> LonLat {
         match self {
-            Geodesy::Sphere => crate::sphere::rhumb_destination(p, bearing, dist_nm),
+            Geodesy::Sphere => rhumb::rhumb_destination(p, bearing, dist_nm),
             Geodesy::Wgs84 => {
                 let r = self.radius_nm();
                 let u1 = rectifying_lat(p.lat);
@@ -303,7 +303,7 @@ impl Geodesy {
     /// east–west lines).
     pub fn rhumb_inverse(self, a: LonLat, b: LonLat) -> (f64, f64) {
         match self {
-            Geodesy::Sphere => crate::sphere::rhumb_inverse(a, b),
+            Geodesy::Sphere => rhumb::rhumb_inverse(a, b),
             Geodesy::Wgs84 => {
                 let dlon = b.lon - a.lon;
                 let dpsi = delta_isometric(a.lat, b.lat);
@@ -437,7 +437,7 @@ mod tests {
             let db = (b2 - b).rem_euclid(std::f64::consts::TAU);
             assert!(db.min(std::f64::consts::TAU - db) < 1e-12, "{b} vs {b2}");
             // the same line on the sphere is within 0.7 % of it (the models' radii)
-            let (ds, _) = crate::sphere::rhumb_inverse(p, q);
+            let (ds, _) = rhumb::rhumb_inverse(p, q);
             assert!((ds / d - 1.0).abs() < 7e-3, "{ds} vs {d}");
         }
         // a meridian: the length is the meridian distance

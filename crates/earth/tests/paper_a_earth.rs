@@ -1,13 +1,13 @@
-//! Paper A on the Earth (`polyguard_earth::paper_a`) against the ground truth of
+//! Paper A on the Earth (`polyguard_earth::aircraft_cell`) against the ground truth of
 //! `reference::approach`: whenever the aircraft really comes within BUFF nautical miles
 //! of the cell during [0, T], the answer is yes. Random encounters at every latitude up to
 //! the format's limit and across the antimeridian; the canary (the unscaled buffer) must
 //! be caught missing at high latitude.
 
-use polyguard_earth::geodesy::Geodesy;
-use polyguard_earth::paper_a::{
+use polyguard_earth::aircraft_cell::{
     detect_earth, detect_earth_with, Buffer, EarthCase, Options, Pieces,
 };
+use polyguard_earth::geodesy::Geodesy;
 use polyguard_earth::reference::approach::{closest_approach, encounter};
 use proptest::prelude::*;
 

@@ -43,7 +43,8 @@ pub struct ConflictsArgs {
     #[arg(long, short)]
     pub output: Option<PathBuf>,
     /// Draw areas, tracks, swept hulls and conflict regions with their windows, on a
-    /// longitude–latitude graticule with a legend (like the paper's Figs 2–5).
+    /// longitude–latitude graticule with a legend (like the paper's Figs 2–5); groups far
+    /// apart are drawn in panels of their own, at one scale.
     #[arg(long)]
     pub svg: Option<PathBuf>,
     /// In the --svg picture, also stage 1's bounding boxes and stage 3's projections of

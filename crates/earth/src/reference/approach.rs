@@ -1,4 +1,4 @@
-//! The ground truth of [`crate::paper_a`]: how close does the aircraft really come to the
+//! The ground truth of [`crate::aircraft_cell`]: how close does the aircraft really come to the
 //! cell during `[0, T]`, in nautical miles on the Earth? Written without the module's
 //! shortcut (no linear stand-in, no grown buffer, no piece): positions from the rhumb
 //! motion itself, distances on the Earth itself.
@@ -19,8 +19,8 @@
 //! point of the cell), so it is never below the true least distance: an engine "no" with
 //! BUFF above it is a missed detection.
 
+use crate::aircraft_cell::{EarthCase, Motion};
 use crate::geodesy::Geodesy;
-use crate::paper_a::{EarthCase, Motion};
 use crate::sphere::{rhumb_destination, LonLat, EARTH_RADIUS_NM};
 use geo::{Distance, Geodesic, Point};
 

@@ -7,7 +7,7 @@
 //!   MPFR, to measure the f64 code in ulps.
 //! - [`truth`]: whether and when two features really meet (`assure --paper b`).
 //! - [`approach`]: how close an aircraft really comes to a drifting cell (the ground truth
-//!   of [`crate::paper_a`]).
+//!   of [`crate::aircraft_cell`]).
 
 pub mod approach;
 #[cfg(feature = "rug")]

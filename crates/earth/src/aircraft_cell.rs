@@ -1,5 +1,5 @@
 //! Paper A (Narkawicz & Hagen) on the Earth: does an aircraft come within BUFF nautical
-//! miles of a drifting weather cell during `[0, T]`? (issue 13, item 6)
+//! miles of a drifting weather cell during `[0, T]`?
 //!
 //! Paper A's `detect_same_2D` (§II.H) works on a plane, with linear motion `s + t·v` and
 //! vertices `p_i + t·V`. This module takes the Earth's own quantities (positions in
@@ -268,6 +268,7 @@ pub struct EarthError {
 }
 
 impl EarthError {
+    /// An error of `kind` about `field`.
     fn new(field: impl Into<String>, kind: EarthErrorKind) -> Self {
         EarthError {
             field: field.into(),
@@ -343,6 +344,7 @@ struct Radii {
     lat: f64,
 }
 
+/// The radii of the model `geo` ([`Radii`]).
 fn radii(geo: Geodesy) -> Radii {
     match geo {
         Geodesy::Sphere => Radii {
@@ -393,6 +395,7 @@ pub fn rhumb_deviation(geo: Geodesy, speed_kn: f64, course: f64, u_abs_max: f64,
     h * h / 8.0 * w * w * course.cos().abs() * sec * tan.abs() * BOUND_SAFETY
 }
 
+/// `x`, when finite (docs/earth-cases.md).
 fn finite(field: &str, x: f64) -> Result<f64, EarthError> {
     if x.is_finite() {
         Ok(x)
@@ -401,6 +404,7 @@ fn finite(field: &str, x: f64) -> Result<f64, EarthError> {
     }
 }
 
+/// A position `[lon, lat]` within the format's ranges (docs/earth-cases.md).
 fn position(field: &str, p: [f64; 2]) -> Result<(), EarthError> {
     let lon = finite(&format!("{field}[0]"), p[0])?;
     let lat = finite(&format!("{field}[1]"), p[1])?;
@@ -425,6 +429,7 @@ fn position(field: &str, p: [f64; 2]) -> Result<(), EarthError> {
     Ok(())
 }
 
+/// A course and a ground speed: finite, the speed not negative (docs/earth-cases.md).
 fn motion(field: &str, m: Motion) -> Result<(), EarthError> {
     finite(&format!("{field}.course_deg"), m.course_deg)?;
     let s = finite(&format!("{field}.speed_kn"), m.speed_kn)?;
@@ -518,6 +523,7 @@ fn unwrap_ring(vertices: &[[f64; 2]], reference: f64) -> Result<Vec<f64>, EarthE
     Ok(out)
 }
 
+/// The cell's error for the exact ring check's fault.
 fn ring_error(fault: RingFault) -> EarthError {
     let kind = match fault {
         RingFault::Crossing { a, b } => EarthErrorKind::Crossing { a, b },
@@ -527,10 +533,12 @@ fn ring_error(fault: RingFault) -> EarthError {
     EarthError::new("cell.vertices", kind)
 }
 
+/// `a − b` on the Mercator plane.
 fn sub(a: Merc, b: Merc) -> Merc {
     [a[0] - b[0], a[1] - b[1]]
 }
 
+/// The length of `a` on the Mercator plane.
 fn norm(a: Merc) -> f64 {
     a[0].hypot(a[1])
 }
@@ -674,9 +682,30 @@ pub fn detect_earth(case: &EarthCase, geo: Geodesy) -> Result<EarthAnswer, Earth
 pub fn detect_earth_with(case: &EarthCase, opts: Options) -> Result<EarthAnswer, EarthError> {
     validate(case)?;
     let geo = opts.geodesy;
-    let radii = radii(geo);
-    let t_end = case.lookahead_h;
-    // Lay the movers out on one branch of longitude around the aircraft's start.
+    let (layout, order, reversed) = lay_out(case, geo)?;
+    let air_end = within_reach(case, &layout, &order)?;
+    let n = match opts.pieces {
+        Pieces::Fixed(n) => n.max(1),
+        Pieces::Auto => auto_pieces(&layout, air_end, case.lookahead_h),
+    };
+    let mut answer = EarthAnswer {
+        detected: false,
+        kind: Kind::Exact,
+        alarm_window_h: None,
+        pieces: n,
+        buff_merc_max: 0.0,
+        effective_buff_nm: 0.0,
+        reversed,
+    };
+    decide_pieces(&layout, case.lookahead_h, opts.buffer, &mut answer)?;
+    Ok(answer)
+}
+
+/// The module doc's layout: the movers on one branch of longitude around the aircraft's
+/// start, and the ring at t = 0 checked exactly on the Mercator plane (simple) and made
+/// counterclockwise. Also each mover's vertex index as given, and whether the ring was
+/// reversed.
+fn lay_out(case: &EarthCase, geo: Geodesy) -> Result<(Layout, Vec<usize>, bool), EarthError> {
     let ref_lon = case.aircraft_pos[0];
     let lons = unwrap_ring(&case.cell_vertices, ref_lon)?;
     let mut order: Vec<usize> = (0..lons.len()).collect();
@@ -695,7 +724,6 @@ pub fn detect_earth_with(case: &EarthCase, opts: Options) -> Result<EarthAnswer,
             speed_kn: case.cell.speed_kn,
         })
         .collect();
-    // The ring at t = 0, exact on the Mercator plane: simple, and counterclockwise.
     let ring0: Vec<Vect2> = vertices
         .iter()
         .map(|v| {
@@ -711,7 +739,22 @@ pub fn detect_earth_with(case: &EarthCase, opts: Options) -> Result<EarthAnswer,
             true
         }
     };
-    // Latitude limits at T, and the span of longitude.
+    let layout = Layout {
+        geo,
+        radii: radii(geo),
+        buff_nm: case.buff_nm,
+        aircraft,
+        vertices,
+    };
+    Ok((layout, order, reversed))
+}
+
+/// The module doc's limits on the whole encounter ("The antimeridian and the poles"):
+/// every mover within [`MAX_LAT_DEG`] at T, `Φ_b` within [`MAX_BUFF_LAT_DEG`], and the
+/// span of longitude with the reach of BUFF short of half a turn. `order` names each
+/// vertex as given. The aircraft's position at T.
+fn within_reach(case: &EarthCase, layout: &Layout, order: &[usize]) -> Result<LonLat, EarthError> {
+    let (geo, t_end) = (layout.geo, case.lookahead_h);
     let check_end = |field: String, m: &Mover| -> Result<LonLat, EarthError> {
         let e = m.at(geo, t_end);
         let lat_deg = e.lat.to_degrees();
@@ -723,9 +766,10 @@ pub fn detect_earth_with(case: &EarthCase, opts: Options) -> Result<EarthAnswer,
         }
         Ok(e)
     };
+    let aircraft = layout.aircraft;
     let air_end = check_end("aircraft".into(), &aircraft)?;
     let mut xs = vec![aircraft.start.lon, air_end.lon];
-    for (k, v) in vertices.iter().enumerate() {
+    for (k, v) in layout.vertices.iter().enumerate() {
         let e = check_end(format!("cell.vertices[{}]", order[k]), v)?;
         xs.push(v.start.lon);
         xs.push(e.lon);
@@ -740,13 +784,6 @@ pub fn detect_earth_with(case: &EarthCase, opts: Options) -> Result<EarthAnswer,
             },
         ));
     }
-    let layout = Layout {
-        geo,
-        radii,
-        buff_nm: case.buff_nm,
-        aircraft,
-        vertices,
-    };
     let phi_b = layout.buffer_lat(aircraft.start, air_end);
     if phi_b.to_degrees() > MAX_BUFF_LAT_DEG {
         return Err(EarthError::new(
@@ -758,7 +795,7 @@ pub fn detect_earth_with(case: &EarthCase, opts: Options) -> Result<EarthAnswer,
     }
     // A path shorter than BUFF moves at most BUFF sec Φ_b / R_s in x: with the span, it
     // must stay short of a whole turn's copy of the cell (module doc).
-    let reach = case.buff_nm / (phi_b.cos() * radii.scale);
+    let reach = case.buff_nm / (phi_b.cos() * layout.radii.scale);
     if span + reach >= core::f64::consts::PI {
         let field = if reach >= core::f64::consts::FRAC_PI_2 {
             "buff_nm"
@@ -772,19 +809,18 @@ pub fn detect_earth_with(case: &EarthCase, opts: Options) -> Result<EarthAnswer,
             },
         ));
     }
-    let n = match opts.pieces {
-        Pieces::Fixed(n) => n.max(1),
-        Pieces::Auto => auto_pieces(&layout, air_end, t_end),
-    };
-    let mut answer = EarthAnswer {
-        detected: false,
-        kind: Kind::Exact,
-        alarm_window_h: None,
-        pieces: n,
-        buff_merc_max: 0.0,
-        effective_buff_nm: 0.0,
-        reversed,
-    };
+    Ok(air_end)
+}
+
+/// Paper A §II.H on each of the `answer.pieces` pieces of `[0, t_end]` (module doc): the
+/// first yes sets the alarm; every piece's buffer is measured (the answer's largest).
+fn decide_pieces(
+    layout: &Layout,
+    t_end: f64,
+    buffer: Buffer,
+    answer: &mut EarthAnswer,
+) -> Result<(), EarthError> {
+    let n = answer.pieces;
     for j in 0..n {
         let ta = t_end * j as f64 / n as f64;
         let tb = if j + 1 == n {
@@ -792,9 +828,9 @@ pub fn detect_earth_with(case: &EarthCase, opts: Options) -> Result<EarthAnswer,
         } else {
             t_end * (j + 1) as f64 / n as f64
         };
-        let mut piece = layout.piece(ta, tb, opts.buffer, true);
+        let mut piece = layout.piece(ta, tb, buffer, true);
         if piece.case.is_none() {
-            piece = layout.piece(ta, tb, opts.buffer, false);
+            piece = layout.piece(ta, tb, buffer, false);
         }
         let Some(pcase) = piece.case else {
             return Err(EarthError::new(
@@ -818,7 +854,7 @@ pub fn detect_earth_with(case: &EarthCase, opts: Options) -> Result<EarthAnswer,
             answer.alarm_window_h = Some([ta, tb]);
         }
     }
-    Ok(answer)
+    Ok(())
 }
 
 /// [`Pieces::Auto`]: from the whole lookahead's deviation terms (quadratic in the piece's
@@ -874,6 +910,7 @@ fn auto_pieces(layout: &Layout, air_end: LonLat, t_end: f64) -> usize {
 mod tests {
     use super::*;
 
+    /// An aircraft flying east at `lat` towards a square cell 1° ahead, drifting north-east.
     fn square_case(lat: f64) -> EarthCase {
         EarthCase {
             lookahead_h: 1.0,

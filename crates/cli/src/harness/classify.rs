@@ -204,6 +204,15 @@ pub struct Verdict {
     pub nanos: [u64; 4],
 }
 
+impl Verdict {
+    /// A failure of the campaign on this case (what makes `polyguard assure` exit 1): a
+    /// failing class ([`Class::is_failure`]), a breach of the contract (paper A without
+    /// rounding says yes, the engine no) or of the certificate.
+    pub fn is_failure(&self) -> bool {
+        self.class.is_failure() || (self.paper && !self.engine) || self.certificate_breach
+    }
+}
+
 /// Why a case could not be compared.
 #[derive(Clone, Debug, PartialEq)]
 pub enum CompareError {
@@ -433,6 +442,18 @@ pub struct ContractVerdict {
     /// Paper A in exact arithmetic, asked only when the engine does not certify a yes
     /// (a certified yes is paper A's yes by the engine's certificate).
     pub paper: Option<bool>,
+}
+
+impl ContractVerdict {
+    /// Paper A without rounding says yes (known from the engine's certified yes, or asked).
+    pub fn paper_yes(&self) -> bool {
+        self.engine == polyguard::ball::Tri::Yes || self.paper == Some(true)
+    }
+
+    /// A breach of the contract: paper A without rounding says yes, the engine no.
+    pub fn is_breach(&self) -> bool {
+        self.paper_yes() && self.engine == polyguard::ball::Tri::No
+    }
 }
 
 /// The engine's contract on one case: the engine, the plain transcription, and paper A

@@ -273,22 +273,25 @@ pub enum Ends {
     Tiny,
     /// Every case that can be moved, the largest length near 2⁹⁰⁰ … 2¹⁰⁰⁰.
     Huge,
+    /// No case: every case stays at the scale it is drawn at (the normal range).
+    None,
 }
 
 impl Ends {
-    /// The name `--aim ends=…` takes (`eighth`, `all`, `tiny`, `huge`).
+    /// The name `--aim ends=…` takes (`eighth`, `all`, `tiny`, `huge`, `none`).
     pub fn name(self) -> &'static str {
         match self {
             Ends::Eighth => "eighth",
             Ends::All => "all",
             Ends::Tiny => "tiny",
             Ends::Huge => "huge",
+            Ends::None => "none",
         }
     }
 
     /// The one of that name.
     pub fn from_name(name: &str) -> Option<Ends> {
-        [Ends::Eighth, Ends::All, Ends::Tiny, Ends::Huge]
+        [Ends::Eighth, Ends::All, Ends::Tiny, Ends::Huge, Ends::None]
             .into_iter()
             .find(|e| e.name() == name)
     }
@@ -643,14 +646,15 @@ pub fn absolute_scale<S: Source>(
     ends: Ends,
 ) -> (RawCase, i32) {
     // The default draws exactly as before `ends` existed, so seeded campaigns keep
-    // their cases.
-    if ends == Ends::Eighth && src.below(8) != 0 {
+    // their cases. With none moved nothing is drawn: this is the case's last draw, so
+    // case k is then the default campaign's case k wherever that one was not moved.
+    if ends == Ends::None || (ends == Ends::Eighth && src.below(8) != 0) {
         return (raw, 0);
     }
     let tiny = match ends {
         Ends::Tiny => true,
         Ends::Huge => false,
-        Ends::Eighth | Ends::All => src.coin(),
+        Ends::Eighth | Ends::All | Ends::None => src.coin(),
     };
     let u = if tiny {
         src.range(-1072.0, -1040.0)

@@ -79,10 +79,10 @@ impl Contract {
 
     fn add_check(&mut self, v: &ContractVerdict) {
         use polyguard::ball::Tri;
-        let paper_yes = v.engine == Tri::Yes || v.paper == Some(true);
+        let paper_yes = v.paper_yes();
         self.paper_yes += u64::from(paper_yes);
         self.certified_yes += u64::from(v.engine == Tri::Yes);
-        self.violations += u64::from(paper_yes && v.engine == Tri::No);
+        self.violations += u64::from(v.is_breach());
         self.conservative += u64::from(v.engine == Tri::Unsure);
         self.conservative_paper_no += u64::from(v.engine == Tri::Unsure && v.paper == Some(false));
         self.plain_violations += u64::from(paper_yes && !v.plain);
@@ -699,13 +699,6 @@ impl Report {
     fn contract_lines(&self) -> String {
         let mut out = String::new();
         let c = &self.contract;
-        let pct = |n: u64| {
-            if self.cases == 0 {
-                0.0
-            } else {
-                100.0 * n as f64 / self.cases as f64
-            }
-        };
         out.push_str(&format!(
             "contract paper-exact => engine: {} violations in {} paper-exact yes (canary, plain f64 transcription: {} violations)\n",
             c.violations, c.paper_yes, c.plain_violations
@@ -716,14 +709,42 @@ impl Report {
                 c.certificate_breaches
             ));
         }
-        out.push_str(&format!(
-            "conservative answers (an undecided comparison): {} ({:.4}%), {} of them where paper-exact says no ({:.4}%)\n",
+        out.push_str(&self.conservative_line());
+        out
+    }
+
+    /// The rate of conservative answers as one line a document can quote: the counts,
+    /// the rates, and where the cases were drawn (the seed, and the scale space with how
+    /// many cases sit at the ends of the float range, which is where most conservative
+    /// answers are: `--aim ends=none` and `ends=all` measure the two apart).
+    pub fn conservative_line(&self) -> String {
+        let c = &self.contract;
+        let pct = |n: u64| {
+            if self.cases == 0 {
+                0.0
+            } else {
+                100.0 * n as f64 / self.cases as f64
+            }
+        };
+        // the space's label leaves out the default ends (one case in eight): say it
+        let space = if self.space.contains("ends=") {
+            self.space.clone()
+        } else {
+            format!(
+                "{},ends={}",
+                self.space,
+                crate::harness::gen::Ends::Eighth.name()
+            )
+        };
+        format!(
+            "conservative answers (an undecided comparison): {} of {} cases ({:.4} %), {} of them where paper-exact says no ({:.4} %); seed {}, space {space}\n",
             c.conservative,
+            self.cases,
             pct(c.conservative),
             c.conservative_paper_no,
-            pct(c.conservative_paper_no)
-        ));
-        out
+            pct(c.conservative_paper_no),
+            self.seed,
+        )
     }
 }
 
@@ -807,6 +828,35 @@ mod tests {
             r.add(&verdict(class, Method::DetectSame2d), "free", (1, -3));
         }
         r
+    }
+
+    /// The conservative answers' line says its counts, rates, seed and space, the ends of
+    /// the float range included when the label leaves the default out.
+    #[test]
+    fn the_conservative_line_says_where_its_cases_were_drawn() {
+        let mut r = Report {
+            seed: 2,
+            space: crate::harness::gen::Space::FULL.label(),
+            ..Default::default()
+        };
+        for k in 0..8 {
+            let mut v = verdict(Class::Agree, Method::DetectSame2d);
+            v.conservative = k < 2;
+            v.paper = k != 0;
+            r.add(&v, "free", (1, -3));
+        }
+        assert_eq!(
+            r.conservative_line(),
+            "conservative answers (an undecided comparison): 2 of 8 cases (25.0000 %), 1 of \
+             them where paper-exact says no (12.5000 %); seed 2, space \
+             path=1e-3..1e7,buff=1e-12..1e0,ends=eighth\n"
+        );
+        r.space = crate::harness::gen::Space::FULL
+            .with_ends(crate::harness::gen::Ends::None)
+            .label();
+        assert!(r
+            .conservative_line()
+            .ends_with(",buff=1e-12..1e0,ends=none\n"));
     }
 
     /// The coverage views count cases per bucket and mode, and give a class's rate.

@@ -386,6 +386,89 @@ impl Report {
         self.kept.extend(other.kept.iter().cloned());
     }
 
+    /// Whether this report, the `at`-th (from 0) of a merge whose first report is
+    /// `first`, is a shard of the same campaign: same seed, size, mode, space and engine,
+    /// itself whole, split as the others (`n_shards`, set by the first), no shard already
+    /// `seen` (shard index → report), and holding exactly its shards' cases.
+    fn check_joins(
+        &self,
+        first: &Report,
+        at: usize,
+        n_shards: &mut Option<u64>,
+        seen: &mut BTreeMap<u64, usize>,
+    ) -> Result<(), String> {
+        let which = format!("report {}", at + 1);
+        if self.campaign_cases == 0 {
+            return Err(format!(
+                "{which} does not say its campaign's size (written before reports recorded it): run it again"
+            ));
+        }
+        if self.seed != first.seed {
+            return Err(format!(
+                "{which}: seed {} where report 1 has {}",
+                self.seed, first.seed
+            ));
+        }
+        if self.campaign_cases != first.campaign_cases {
+            return Err(format!(
+                "{which}: a campaign of {} cases where report 1's has {}",
+                self.campaign_cases, first.campaign_cases
+            ));
+        }
+        if self.contract_only != first.contract_only {
+            return Err(format!(
+                "{which}: a --contract run and a classifying run cannot be merged"
+            ));
+        }
+        if self.space != first.space {
+            return Err(format!(
+                "{which} draws from the scale space {}, report 1 from {}",
+                self.space, first.space
+            ));
+        }
+        if self.engine != first.engine {
+            return Err(format!(
+                "{which} judges the {} engine, report 1 the {} engine",
+                self.engine, first.engine
+            ));
+        }
+        if !self.missing_shards.is_empty() {
+            return Err(format!("{which} is itself a partial merge"));
+        }
+        for s in &self.shards {
+            let (i, n) =
+                parse_shard_name(s).ok_or_else(|| format!("{which}: shard {s:?} is not i/N"))?;
+            match *n_shards {
+                None => *n_shards = Some(n),
+                Some(m) if m != n => {
+                    return Err(format!(
+                        "{which}: shard {s} of a campaign split {n} ways, the others are split {m} ways"
+                    ))
+                }
+                Some(_) => {}
+            }
+            if let Some(prev) = seen.insert(i, at) {
+                return Err(format!(
+                    "{which}: shard {s} is also in report {} (its cases would count twice)",
+                    prev + 1
+                ));
+            }
+        }
+        let want: u64 = self
+            .shards
+            .iter()
+            .filter_map(|s| parse_shard_name(s))
+            .map(|(i, n)| shard_size(self.campaign_cases, i, n))
+            .sum();
+        if self.cases != want {
+            return Err(format!(
+                "{which}: {} cases where its shards {:?} of a {}-case campaign draw {want}",
+                self.cases, self.shards, self.campaign_cases
+            ));
+        }
+        Ok(())
+    }
+
     /// `assure merge`: the shards of one campaign joined exactly, or an error saying why
     /// they are not one campaign. Every report must give the same seed, campaign size and
     /// mode (classifying or `--contract`) and the same shard count N; no shard may come
@@ -399,75 +482,7 @@ impl Report {
         let mut n_shards = None;
         let mut seen: BTreeMap<u64, usize> = BTreeMap::new();
         for (at, r) in reports.iter().enumerate() {
-            let which = format!("report {}", at + 1);
-            if r.campaign_cases == 0 {
-                return Err(format!(
-                    "{which} does not say its campaign's size (written before reports recorded it): run it again"
-                ));
-            }
-            if r.seed != first.seed {
-                return Err(format!(
-                    "{which}: seed {} where report 1 has {}",
-                    r.seed, first.seed
-                ));
-            }
-            if r.campaign_cases != first.campaign_cases {
-                return Err(format!(
-                    "{which}: a campaign of {} cases where report 1's has {}",
-                    r.campaign_cases, first.campaign_cases
-                ));
-            }
-            if r.contract_only != first.contract_only {
-                return Err(format!(
-                    "{which}: a --contract run and a classifying run cannot be merged"
-                ));
-            }
-            if r.space != first.space {
-                return Err(format!(
-                    "{which} draws from the scale space {}, report 1 from {}",
-                    r.space, first.space
-                ));
-            }
-            if r.engine != first.engine {
-                return Err(format!(
-                    "{which} judges the {} engine, report 1 the {} engine",
-                    r.engine, first.engine
-                ));
-            }
-            if !r.missing_shards.is_empty() {
-                return Err(format!("{which} is itself a partial merge"));
-            }
-            for s in &r.shards {
-                let (i, n) = parse_shard_name(s)
-                    .ok_or_else(|| format!("{which}: shard {s:?} is not i/N"))?;
-                match n_shards {
-                    None => n_shards = Some(n),
-                    Some(m) if m != n => {
-                        return Err(format!(
-                            "{which}: shard {s} of a campaign split {n} ways, the others are split {m} ways"
-                        ))
-                    }
-                    Some(_) => {}
-                }
-                if let Some(prev) = seen.insert(i, at) {
-                    return Err(format!(
-                        "{which}: shard {s} is also in report {} (its cases would count twice)",
-                        prev + 1
-                    ));
-                }
-            }
-            let want: u64 = r
-                .shards
-                .iter()
-                .filter_map(|s| parse_shard_name(s))
-                .map(|(i, n)| shard_size(r.campaign_cases, i, n))
-                .sum();
-            if r.cases != want {
-                return Err(format!(
-                    "{which}: {} cases where its shards {:?} of a {}-case campaign draw {want}",
-                    r.cases, r.shards, r.campaign_cases
-                ));
-            }
+            r.check_joins(first, at, &mut n_shards, &mut seen)?;
         }
         let n = n_shards.unwrap_or(1);
         let missing: Vec<String> = (0..n)

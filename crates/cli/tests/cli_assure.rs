@@ -120,8 +120,9 @@ fn merge(
 }
 
 /// Two shards merge into exactly the unsharded run's counts, with every kept case's
-/// files beside the merged report; the merges the issue found lying are refused with
-/// exit 2, and a partial one needs --partial and says PARTIAL.
+/// files beside the merged report; merges that would lie (a shard missing or given twice,
+/// shards of other campaigns) are refused with exit 2, and a partial one needs --partial
+/// and says PARTIAL.
 #[test]
 fn merges_are_exact_or_refused() {
     let (whole, s0, s1, s0_other) = (
@@ -220,7 +221,7 @@ fn merges_are_exact_or_refused() {
     );
 }
 
-/// The hunt's canary (issue 9): on the same cases, judging the plain transcription finds
+/// The hunt's canary: on the same cases, judging the plain transcription finds
 /// missed detections (exit 1, kept and minimised), while the certified engine has none
 /// (exit 0). A hunt that found nothing against the plain engine would be blind.
 #[test]

@@ -52,8 +52,10 @@ pub struct AssureArgs {
     /// arithmetic only where the engine does not certify a yes.
     #[arg(long)]
     pub contract: bool,
-    /// The f64 engine to judge: `f64` (the certified engine, the product) or `plain` (the
-    /// uncertified transcription: the canary a hunt that sees must catch missing entries).
+    /// The engine to judge. Paper A's: `f64` (the certified engine, the product), `plain`
+    /// (the uncertified transcription: the canary, whose missed entries the hunt must
+    /// catch) or `shifted-time` (the entry-time check's canary); paper B's (`--paper b`):
+    /// `pipeline` or `sampled` (its canary).
     #[arg(long, value_enum, default_value_t = EngineArg::F64)]
     pub engine: EngineArg,
     /// Aim the campaign at part of the scale space: `path=1e3..1e7,buff=1e-12..1e-9`
@@ -69,7 +71,7 @@ pub struct AssureArgs {
     /// The paper to hunt in: `a` (point vs polygon, the default) or `b` (interference of
     /// areas and tracks on the Earth: docs/assurance.md, "Paper B"). With `b`, `--engine`
     /// is `pipeline` (the default) or `sampled` (the canary), and `--contract` and `--aim`
-    /// do not apply.
+    /// are refused (paper A's).
     #[arg(long, value_enum, default_value_t = PaperArg::A)]
     pub paper: PaperArg,
 }
@@ -154,8 +156,10 @@ impl From<EngineArg> for Hunted {
 #[derive(Debug, clap::Subcommand)]
 pub enum MergeCommand {
     /// Join the report.json files of the shards of one campaign exactly, with their
-    /// counterexample files. Reports of different seeds, campaign sizes or shard counts,
-    /// a shard given twice, or a missing shard are refused (exit 2).
+    /// counterexample files. Reports of different seeds, campaign sizes, shard counts or
+    /// engines (for paper A also scale spaces, and `--contract` runs beside classifying
+    /// ones), a shard given twice, or a missing shard (without --partial) are refused
+    /// (exit 2).
     Merge {
         /// The shards' report.json files.
         #[arg(required = true)]
@@ -398,7 +402,7 @@ pub fn run(args: &AssureArgs) -> ExitCode {
 fn paper_a_engine(args: &AssureArgs) -> Result<Hunted, ExitCode> {
     if matches!(args.engine, EngineArg::Pipeline | EngineArg::Sampled) {
         eprintln!(
-            "polyguard assure: --engine {} is paper B's: add --paper b (paper A's engines are f64 and plain)",
+            "polyguard assure: --engine {} is paper B's: add --paper b (paper A's engines are f64, plain and shifted-time)",
             if args.engine == EngineArg::Pipeline { "pipeline" } else { "sampled" }
         );
         return Err(ExitCode::from(2));
@@ -406,7 +410,8 @@ fn paper_a_engine(args: &AssureArgs) -> Result<Hunted, ExitCode> {
     let hunted = Hunted::from(args.engine);
     if args.contract && hunted != Hunted::Certified {
         eprintln!(
-            "polyguard assure: --contract judges the certified engine (and counts the plain one's breaches as its canary); drop --engine plain"
+            "polyguard assure: --contract judges the certified engine (and counts the plain one's breaches as its canary); drop --engine {}",
+            hunted.name()
         );
         return Err(ExitCode::from(2));
     }

@@ -68,7 +68,8 @@ pub fn wide_case(raw: &RawCase) -> RawCase {
     wide
 }
 
-/// The class of a compared case (issue "differential hunting", item 1).
+/// The class of a compared case: what the engine, paper A in exact arithmetic and the
+/// truth say together.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Class {
@@ -273,7 +274,7 @@ pub const TIME_CANARY_STEPS: f64 = 2.0;
 /// Why the f64 entry time `answer` contradicts the exact truth, or `None` when it agrees:
 /// a certified "never" for a point that enters, a certified entry for one that never does,
 /// or an exact entry time outside [lo, hi] (compared exactly). An undefined truth judges
-/// nothing. (Paper A §II–III's "the point enters", timed: issue 13, item 2.)
+/// nothing. (Paper A §II–III's "the point enters", timed.)
 pub fn time_failure(
     answer: polyguard::entry::EntryTime,
     truth: &polyguard_oracle::Truth,

@@ -10,7 +10,7 @@
 //! slab boundary reached at the contact time (detect_3d).
 //!
 //! On top of the threshold, every mode draws its scales independently and log-uniformly
-//! ([`Space`], issue "hunting that sees", item 1):
+//! ([`Space`]):
 //! - the relative path (the point's path relative to the polygon over the lookahead)
 //!   from 10⁻³ to 10⁷ polygon sizes; paths beyond 3 sizes are made by [`stretch`]ing a
 //!   short case back in time, so that the threshold configuration lies far along a
@@ -298,7 +298,7 @@ impl Ends {
 }
 
 impl Space {
-    /// The whole space of issue "hunting that sees", item 1.
+    /// The whole space: relative paths 10⁻³ … 10⁷ and BUFF 10⁻¹² … 1 polygon sizes.
     pub const FULL: Space = Space {
         path: (-3.0, 7.0),
         buff: (-12.0, 0.0),

@@ -948,7 +948,8 @@ mod tests {
         assert_eq!(back, m);
     }
 
-    /// Each way the issue found to make a merge lie is refused, and says why.
+    /// Each way a merge could lie (counting cases twice, mixing campaigns) is refused,
+    /// and says why.
     #[test]
     fn merges_that_would_lie_are_refused() {
         let err = |rs: &[Report], partial: bool| {

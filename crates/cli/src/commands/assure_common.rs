@@ -80,6 +80,8 @@ impl CampaignProgress {
 }
 
 impl Lines {
+    /// Counts one case, and prints a line when it reaches the next tenth or when
+    /// [`LINE_EVERY`] has passed since the last line (the 100 % line only once).
     fn inc(&self, failed: bool) {
         if failed {
             self.failures.fetch_add(1, Ordering::Relaxed);

@@ -120,8 +120,9 @@ fn merge(
 }
 
 /// Two shards merge into exactly the unsharded run's counts, with every kept case's
-/// files beside the merged report; the merges the issue found lying are refused with
-/// exit 2, and a partial one needs --partial and says PARTIAL.
+/// files beside the merged report; merges that would lie (a shard missing or given twice,
+/// shards of other campaigns) are refused with exit 2, and a partial one needs --partial
+/// and says PARTIAL.
 #[test]
 fn merges_are_exact_or_refused() {
     let (whole, s0, s1, s0_other) = (
@@ -220,7 +221,7 @@ fn merges_are_exact_or_refused() {
     );
 }
 
-/// The hunt's canary (issue 9): on the same cases, judging the plain transcription finds
+/// The hunt's canary: on the same cases, judging the plain transcription finds
 /// missed detections (exit 1, kept and minimised), while the certified engine has none
 /// (exit 0). A hunt that found nothing against the plain engine would be blind.
 #[test]
@@ -428,4 +429,60 @@ fn paper_b_shards_merge_exactly() {
     );
     assert_eq!(r.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&r.stderr).contains("paper B's and the rest paper A's"));
+}
+
+/// The progress lines of a campaign whose standard error is a pipe (no terminal: no bar):
+/// one at every tenth of the cases, counts rising to the 100 % line, and none with
+/// `--quiet`; for either paper. The canary's failures are counted as they come.
+#[test]
+fn a_piped_run_prints_progress_lines_unless_quiet() {
+    let progress = |err: &str| -> Vec<(u64, u64, u64)> {
+        err.lines()
+            .filter_map(|l| {
+                // polyguard assure: 60/200 cases (30 %), 0 s, 0 failures so far
+                let rest = l.strip_prefix("polyguard assure: ")?;
+                let (done, rest) = rest.split_once('/')?;
+                let (total, rest) = rest.split_once(" cases (")?;
+                let (_, rest) = rest.split_once(" %), ")?;
+                let (_, rest) = rest.split_once(" s, ")?;
+                let failures = rest.strip_suffix(" failures so far")?;
+                Some((
+                    done.parse().ok()?,
+                    total.parse().ok()?,
+                    failures.parse().ok()?,
+                ))
+            })
+            .collect()
+    };
+    for (paper, engine, cases) in [("a", "plain", 400), ("b", "pipeline", 60)] {
+        let n = cases.to_string();
+        let args = [
+            "--paper", paper, "--engine", engine, "--cases", &n, "--seed", "1",
+        ];
+        let (_, _, err) = assure(&args, &out_dir(&format!("assure-progress-{paper}")));
+        let lines = progress(&err);
+        assert!(lines.len() >= 10, "paper {paper}: {err}");
+        assert_eq!(
+            lines.last().map(|l| (l.0, l.1)),
+            Some((cases, cases)),
+            "{err}"
+        );
+        assert!(
+            lines
+                .windows(2)
+                .all(|w| w[0].0 < w[1].0 && w[0].2 <= w[1].2),
+            "{err}"
+        );
+        assert!(lines.iter().all(|l| l.1 == cases), "{err}");
+        if paper == "a" {
+            assert!(
+                lines[lines.len() - 1].2 > 0,
+                "the plain engine fails: {err}"
+            );
+        }
+        let quiet = [&args[..], &["--quiet"]].concat();
+        let (_, _, err) = assure(&quiet, &out_dir(&format!("assure-progress-{paper}-q")));
+        assert!(progress(&err).is_empty(), "--quiet: {err}");
+        assert!(!err.contains("cases ("), "--quiet: {err}");
+    }
 }

@@ -2,7 +2,7 @@
 
 mod common;
 
-/// Issue 5: the sphere model's published window, to be reproduced within ±0.002 h
+/// The sphere model's published window, to be reproduced within ±0.002 h
 /// (the same tolerance as crates/earth/tests/paper_b_example3.rs).
 const EXAMPLE3_TOL_H: f64 = 0.002;
 
@@ -19,8 +19,8 @@ fn binary_on_shipped_example() {
 }
 
 /// `--geodesy wgs84` answers with the window paper B prints for Example 3 (4.12–4.63 h,
-/// ±0.006 h, the issue's tolerance), names the model in the stats, and a model that does
-/// not exist is refused before anything is read.
+/// within ±0.006 h), names the model in the stats, and a model that does not exist is
+/// refused before anything is read.
 #[test]
 fn binary_on_shipped_example_on_wgs84() {
     let (out, err, code) = common::run(

@@ -89,6 +89,26 @@ fn each_case_error_names_field_line_and_id() {
             "wx".into(),
             "lookahead: -1 is not > 0",
         ),
+        // a JSON number beyond f64's range fails serde_json's whole parse: the reader
+        // finds its field, nested ones too, and keeps the id
+        (
+            with(r#""lookahead":10"#, r#""lookahead":1e400"#),
+            "wx".into(),
+            "lookahead: not a finite number",
+        ),
+        (
+            with(
+                r#""vertices":[[0,0],[2,0]"#,
+                r#""vertices":[[0,0],[-2e400,0]"#,
+            ),
+            "wx".into(),
+            "polygon.vertices[1][0]: not a finite number",
+        ),
+        (
+            with(r#""vel":[0,1]"#, r#""vel":[0,1e309]"#),
+            "wx".into(),
+            "point.vel[1]: not a finite number",
+        ),
         (
             "{\"id\":\"cut\",\"lookahead\":".into(),
             2.into(),

@@ -1,4 +1,4 @@
-//! The seeded batch workload (batch detection, issue 13; extends paper A's single case to
+//! The seeded batch workload (batch detection; extends paper A's single case to
 //! N points and M polygons): the one generator behind benches/batch.rs, the batch tests
 //! and `polyguard detect-batch --generate`.
 //!

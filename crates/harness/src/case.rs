@@ -139,14 +139,19 @@ fn syntax_failure(line: &str, e: &serde_json::Error) -> (CaseError, Option<Value
         Some(i) => format!("{} at column {}", &text[..i], e.column()),
         None => text,
     };
-    // NaN and ±Infinity (which Python's json writes) are not JSON: read them as marked
-    // strings to name their field.
-    let lenient = serde_json::from_str::<Value>(&mark_non_json_numbers(line)).ok();
+    // NaN and ±Infinity (which Python's json writes) are not JSON, and a number beyond
+    // f64's range fails the whole parse: read them as marked strings to name their field.
+    let lenient = serde_json::from_str::<Value>(&mark_unreadable_numbers(line)).ok();
     let marked = lenient
         .as_ref()
-        .and_then(|v| first_marked(v, String::new()));
+        .and_then(|v| first_marked(v, String::new()))
+        .filter(|(field, _)| !field.is_empty());
     let error = match marked {
-        Some((field, literal)) => CaseError::NotJsonNumber { field, literal },
+        Some((field, literal)) if NON_JSON_NUMBERS.contains(&literal.as_str()) => {
+            CaseError::NotJsonNumber { field, literal }
+        }
+        // a JSON number whose nearest f64 is infinite (1e400)
+        Some((field, _)) => CaseError::NotFinite { field },
         None => CaseError::Syntax { message },
     };
     (error, lenient)
@@ -168,6 +173,9 @@ fn read_object(line: &str, prefix: &str) -> Result<Map<String, Value>, CaseError
             CaseError::NotJsonNumber { field, literal } => CaseError::NotJsonNumber {
                 field: format!("{prefix}{field}"),
                 literal,
+            },
+            CaseError::NotFinite { field } => CaseError::NotFinite {
+                field: format!("{prefix}{field}"),
             },
             other => other,
         }),
@@ -258,9 +266,10 @@ const NON_JSON_NUMBERS: [&str; 4] = ["-Infinity", "Infinity", "NaN", "+Infinity"
 /// A marked literal, as a string no JSON writer produces (a NUL character).
 const MARK: char = '\u{0}';
 
-/// `line` with every NaN/Infinity literal outside strings turned into the string
-/// "\u0000NaN" (etc.), so that a JSON reader can place it.
-fn mark_non_json_numbers(line: &str) -> String {
+/// `line` with every NaN/Infinity literal outside strings, and every JSON number whose
+/// nearest f64 is infinite (`1e400`), turned into the string "\u0000NaN" (etc.), so that
+/// a JSON reader can place it.
+fn mark_unreadable_numbers(line: &str) -> String {
     let mut out = String::with_capacity(line.len() + 16);
     let mut in_string = false;
     let mut escaped = false;
@@ -274,6 +283,19 @@ fn mark_non_json_numbers(line: &str) -> String {
         } else if let Some(lit) = NON_JSON_NUMBERS.iter().find(|l| rest.starts_with(**l)) {
             out.push_str(&format!("\"\\u0000{lit}\""));
             rest = &rest[lit.len()..];
+            continue;
+        } else if c == '-' || c.is_ascii_digit() {
+            // a number token: JSON's grammar has only these characters in one
+            let len = rest
+                .find(|d: char| !(d.is_ascii_digit() || "+-.eE".contains(d)))
+                .unwrap_or(rest.len());
+            let token = &rest[..len];
+            if token.parse::<f64>().is_ok_and(f64::is_infinite) {
+                out.push_str(&format!("\"\\u0000{token}\""));
+            } else {
+                out.push_str(token);
+            }
+            rest = &rest[len..];
             continue;
         }
         out.push(c);
@@ -757,8 +779,56 @@ mod tests {
             r#""bottom":0,"top":5,"vz":0,"velocities""#,
         );
         assert!(err(&slab2d).starts_with("point.pos: 2D and 3D mixed"));
-        // A number too large for an f64 is a syntax error of serde_json, not a panic.
-        assert!(err(&GOOD.replace("10,", "1e400,")).starts_with("line:"));
+    }
+
+    /// A JSON number too large for an f64 fails serde_json's whole parse ("number out of
+    /// range", no field): the error names its field, nested ones too, and the id is kept.
+    #[test]
+    fn numbers_beyond_f64_name_their_field_and_keep_the_id() {
+        let cases = [
+            (r#""lookahead":10"#, r#""lookahead":1e400"#, "lookahead"),
+            (r#""buff":0.01"#, r#""buff":-2.5E+309"#, "buff"),
+            (r#""pos":[5,-3]"#, r#""pos":[5,-1e999]"#, "point.pos[1]"),
+            (
+                r#""vertices":[[0,0],[2,0]"#,
+                r#""vertices":[[0,0],[2,1e400]"#,
+                "polygon.vertices[1][1]",
+            ),
+            (
+                r#""velocities":[[1,0],[1,0],[1,0]"#,
+                r#""velocities":[[1,0],[1,0],[1e400,0]"#,
+                "polygon.velocities[2][0]",
+            ),
+        ];
+        for (from, to, field) in cases {
+            let line = GOOD.replacen(from, to, 1);
+            assert_ne!(line, GOOD, "{from}");
+            let p = parse_line(&line, 3);
+            assert_eq!(p.id, Value::from("a"), "{line}");
+            assert_eq!(
+                p.case.err().map(|e| e.to_string()),
+                Some(format!("{field}: not a finite number")),
+                "{line}"
+            );
+        }
+        // a huge number inside a string is text; one that underflows reads as 0
+        let named = GOOD.replace(r#""id":"a""#, r#""id":"1e400""#);
+        assert_eq!(parse_line(&named, 3).id, Value::from("1e400"));
+        assert_eq!(err(&named), "ok");
+        let tiny = GOOD.replace("[5,-3]", "[5,-1e-400]");
+        assert_eq!(err(&tiny), "ok");
+        // a batch's point line names the field in the case's terms
+        let e = point_from_line(r#"{"pos":[1e400,0],"vel":[0,0]}"#).err();
+        assert_eq!(
+            e.map(|e| e.to_string()),
+            Some("point.pos[0]: not a finite number".into())
+        );
+        // a line that is a bare number is not an object: no field to name
+        assert!(
+            err("1e400").starts_with("line: not a JSON object"),
+            "{}",
+            err("1e400")
+        );
     }
 
     /// A typo must never turn a hit into a miss: the misspelt `velocity` was read as a

@@ -68,7 +68,8 @@ pub fn wide_case(raw: &RawCase) -> RawCase {
     wide
 }
 
-/// The class of a compared case (issue "differential hunting", item 1).
+/// The class of a compared case: what the engine, paper A in exact arithmetic and the
+/// truth say together.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Class {
@@ -204,6 +205,15 @@ pub struct Verdict {
     pub nanos: [u64; 4],
 }
 
+impl Verdict {
+    /// A failure of the campaign on this case (what makes `polyguard assure` exit 1): a
+    /// failing class ([`Class::is_failure`]), a breach of the contract (paper A without
+    /// rounding says yes, the engine no) or of the certificate.
+    pub fn is_failure(&self) -> bool {
+        self.class.is_failure() || (self.paper && !self.engine) || self.certificate_breach
+    }
+}
+
 /// Why a case could not be compared.
 #[derive(Clone, Debug, PartialEq)]
 pub enum CompareError {
@@ -264,7 +274,7 @@ pub const TIME_CANARY_STEPS: f64 = 2.0;
 /// Why the f64 entry time `answer` contradicts the exact truth, or `None` when it agrees:
 /// a certified "never" for a point that enters, a certified entry for one that never does,
 /// or an exact entry time outside [lo, hi] (compared exactly). An undefined truth judges
-/// nothing. (Paper A §II–III's "the point enters", timed: issue 13, item 2.)
+/// nothing. (Paper A §II–III's "the point enters", timed.)
 pub fn time_failure(
     answer: polyguard::entry::EntryTime,
     truth: &polyguard_oracle::Truth,
@@ -433,6 +443,18 @@ pub struct ContractVerdict {
     /// Paper A in exact arithmetic, asked only when the engine does not certify a yes
     /// (a certified yes is paper A's yes by the engine's certificate).
     pub paper: Option<bool>,
+}
+
+impl ContractVerdict {
+    /// Paper A without rounding says yes (known from the engine's certified yes, or asked).
+    pub fn paper_yes(&self) -> bool {
+        self.engine == polyguard::Tri::Yes || self.paper == Some(true)
+    }
+
+    /// A breach of the contract: paper A without rounding says yes, the engine no.
+    pub fn is_breach(&self) -> bool {
+        self.paper_yes() && self.engine == polyguard::Tri::No
+    }
 }
 
 /// The engine's contract on one case: the engine, the plain transcription, and paper A

@@ -10,7 +10,7 @@
 //! slab boundary reached at the contact time (detect_3d).
 //!
 //! On top of the threshold, every mode draws its scales independently and log-uniformly
-//! ([`Space`], issue "hunting that sees", item 1):
+//! ([`Space`]):
 //! - the relative path (the point's path relative to the polygon over the lookahead)
 //!   from 10⁻³ to 10⁷ polygon sizes; paths beyond 3 sizes are made by [`stretch`]ing a
 //!   short case back in time, so that the threshold configuration lies far along a
@@ -273,29 +273,32 @@ pub enum Ends {
     Tiny,
     /// Every case that can be moved, the largest length near 2⁹⁰⁰ … 2¹⁰⁰⁰.
     Huge,
+    /// No case: every case stays at the scale it is drawn at (the normal range).
+    None,
 }
 
 impl Ends {
-    /// The name `--aim ends=…` takes (`eighth`, `all`, `tiny`, `huge`).
+    /// The name `--aim ends=…` takes (`eighth`, `all`, `tiny`, `huge`, `none`).
     pub fn name(self) -> &'static str {
         match self {
             Ends::Eighth => "eighth",
             Ends::All => "all",
             Ends::Tiny => "tiny",
             Ends::Huge => "huge",
+            Ends::None => "none",
         }
     }
 
     /// The one of that name.
     pub fn from_name(name: &str) -> Option<Ends> {
-        [Ends::Eighth, Ends::All, Ends::Tiny, Ends::Huge]
+        [Ends::Eighth, Ends::All, Ends::Tiny, Ends::Huge, Ends::None]
             .into_iter()
             .find(|e| e.name() == name)
     }
 }
 
 impl Space {
-    /// The whole space of issue "hunting that sees", item 1.
+    /// The whole space: relative paths 10⁻³ … 10⁷ and BUFF 10⁻¹² … 1 polygon sizes.
     pub const FULL: Space = Space {
         path: (-3.0, 7.0),
         buff: (-12.0, 0.0),
@@ -491,10 +494,26 @@ fn simple_throughout(raw: &RawCase) -> bool {
         .is_ok_and(|c| polyguard_oracle::truth::simple_on_window(&c).is_ok())
 }
 
-/// One boundary-biased case of the given shape and mode, its scales drawn from `space`.
-pub fn case<S: Source>(src: &mut S, shape: Shape, mode: Mode, space: &Space) -> Drawn {
+/// The scales of a case and its polygon at time 0 (the first draws of [`case`]).
+struct Scales {
+    outline: Outline,
+    /// The polygon's vertices, the finest feature's size, and its centre's offset `o`.
+    verts: Vec<Vect2>,
+    finest: f64,
+    o: Vect2,
+    size: f64,
+    buff: f64,
+    /// The time of the unstretched case, the point's speed relative to the polygon, and
+    /// the stretch that makes the path as long as drawn (1: none).
+    t: f64,
+    spd: f64,
+    k: f64,
+}
+
+/// Draws the scales of a case from `space`: size and offset, then BUFF, path and T, each
+/// log-uniform, and the polygon.
+fn draw_scales<S: Source>(src: &mut S, space: &Space) -> Scales {
     let tau = core::f64::consts::TAU;
-    // Scales: size and offset, then BUFF, path and T, each log-uniform.
     let outline = src.pick(&Outline::ALL);
     let (size, offset) = if src.below(5) == 0 {
         (decade(src, (-6.0, 6.0)), 0.0)
@@ -505,7 +524,6 @@ pub fn case<S: Source>(src: &mut S, shape: Shape, mode: Mode, space: &Space) -> 
     let dir_o = src.range(0.0, tau);
     let o = Vect2::new(offset * dir_o.cos(), offset * dir_o.sin());
     let (verts, finest, outline) = polygon(src, outline, size, o);
-    let n = verts.len();
     let buff = size * decade(src, space.buff);
     let path = decade(src, space.path);
     let t_final = decade(src, (-6.0, 9.0));
@@ -517,7 +535,45 @@ pub fn case<S: Source>(src: &mut S, shape: Shape, mode: Mode, space: &Space) -> 
         (rel, path / rel)
     };
     let t = t_final / k;
-    let spd = rel * size / t; // the point's speed relative to the polygon
+    Scales {
+        outline,
+        verts,
+        finest,
+        o,
+        size,
+        buff,
+        t,
+        spd: rel * size / t,
+        k,
+    }
+}
+
+/// How the polygon and the point move and where the threshold sits (the draws of
+/// [`case`] after the scales).
+struct Motion {
+    fac: f64,
+    warping: bool,
+    drift: Vect2,
+    /// An edge whose ends move alike: dot_nn_lin's A = 0.
+    keep: usize,
+    warp: [f64; 4],
+    jitter: Vec<Vect2>,
+    e: f64,
+    i: usize,
+    dir: f64,
+    along: f64,
+    side: f64,
+    below: f64,
+    dx: f64,
+    start_off: Vect2,
+    z: [f64; 5],
+    z_still: bool,
+    z_bottom: bool,
+}
+
+/// Draws the motion of a case of `shape` whose polygon has `n` vertices, at scales `sc`.
+fn draw_motion<S: Source>(src: &mut S, shape: Shape, n: usize, sc: &Scales) -> Motion {
+    let tau = core::f64::consts::TAU;
     let fac = src.pick(&[1e-4, 1e-4, 1e-2, 1e-6]);
     let warping = match shape {
         Shape::Static => false,
@@ -526,8 +582,8 @@ pub fn case<S: Source>(src: &mut S, shape: Shape, mode: Mode, space: &Space) -> 
     };
     let drift_dir = src.range(0.0, tau);
     let drift = Vect2::new(drift_dir.cos(), drift_dir.sin())
-        .scale(src.range(0.0, 1.0) * src.pick(&[1.0, 1.0, 1e3]) * size / t);
-    let keep = src.below(n); // an edge whose ends move alike: dot_nn_lin's A = 0
+        .scale(src.range(0.0, 1.0) * src.pick(&[1.0, 1.0, 1e3]) * sc.size / sc.t);
+    let keep = src.below(n);
     let warp = [
         src.range(-0.3, 0.3),
         src.range(-0.3, 0.3),
@@ -542,7 +598,7 @@ pub fn case<S: Source>(src: &mut S, shape: Shape, mode: Mode, space: &Space) -> 
     let dir = src.range(0.0, tau);
     let along = src.unit();
     let side = if src.coin() { 1.0 } else { -1.0 };
-    let below = size * src.range(0.0, 1.0);
+    let below = sc.size * src.range(0.0, 1.0);
     let dx = src.range(-1.0, 1.0);
     let start_off = Vect2::new(src.range(-1.5, 1.5), src.range(-1.5, 1.5));
     let z = [
@@ -553,76 +609,115 @@ pub fn case<S: Source>(src: &mut S, shape: Shape, mode: Mode, space: &Space) -> 
         decade(src, (-6.0, 3.0)),
     ];
     let (z_still, z_bottom) = (src.coin(), src.coin());
+    Motion {
+        fac,
+        warping,
+        drift,
+        keep,
+        warp,
+        jitter,
+        e,
+        i,
+        dir,
+        along,
+        side,
+        below,
+        dx,
+        start_off,
+        z,
+        z_still,
+        z_bottom,
+    }
+}
+
+/// The case of scales `sc` and motion `m` at the threshold of `mode`, its polygon warped
+/// with strength `w` (0: it only translates) and drifting at `drift`, stretched to its
+/// path when `sc.k` > 1; with the stretch made.
+fn threshold_at(
+    sc: &Scales,
+    m: &Motion,
+    shape: Shape,
+    mode: Mode,
+    w: f64,
+    drift: Vect2,
+) -> (RawCase, f64) {
+    let (t, n) = (sc.t, sc.verts.len());
+    let mut vels: Vec<Vect2> = sc
+        .verts
+        .iter()
+        .zip(&m.jitter)
+        .map(|(&p, &jit)| {
+            let q = (p - sc.o).scale(w / t);
+            let warp = m.warp;
+            let affine = Vect2::new(warp[0] * q.x + warp[1] * q.y, warp[2] * q.x + warp[3] * q.y);
+            drift + affine + jit.scale(w * sc.finest / t)
+        })
+        .collect();
+    if w > 0.0 {
+        vels[(m.keep + 1) % n] = vels[m.keep];
+    }
+    let mut raw = threshold_case(&Threshold {
+        mode,
+        verts: &sc.verts,
+        vels: &vels,
+        i: m.i,
+        e: m.e,
+        t,
+        buff: sc.buff,
+        fac: m.fac,
+        spd: sc.spd,
+        dir: m.dir,
+        along: m.along,
+        side: m.side,
+        below: m.below,
+        dx: m.dx,
+        start_off: m.start_off,
+        o: sc.o,
+        size: sc.size,
+    });
+    if shape == Shape::ThreeD {
+        add_slab(&mut raw, &m.z, m.z_still, m.z_bottom, m.e, sc.spd, sc.size);
+    }
+    let k_done = if sc.k > 1.0 {
+        stretch_to(&mut raw, sc.k)
+    } else {
+        1.0
+    };
+    (raw, k_done)
+}
+
+/// One boundary-biased case of the given shape and mode, its scales drawn from `space`.
+pub fn case<S: Source>(src: &mut S, shape: Shape, mode: Mode, space: &Space) -> Drawn {
+    let sc = draw_scales(src, space);
+    let m = draw_motion(src, shape, sc.verts.len(), &sc);
     // Warps from the full one down to none; the first whose polygon stays simple over
     // [0, T] exactly is taken (a static polygon only translates: always simple).
-    let strengths: &[f64] = if warping {
+    let strengths: &[f64] = if m.warping {
         &[1.0, 1e-2, 1e-5, 0.0]
     } else {
         &[0.0]
     };
-    let make = |w: f64, drift: Vect2| {
-        let mut vels: Vec<Vect2> = verts
-            .iter()
-            .zip(&jitter)
-            .map(|(&p, &jit)| {
-                let q = (p - o).scale(w / t);
-                let affine =
-                    Vect2::new(warp[0] * q.x + warp[1] * q.y, warp[2] * q.x + warp[3] * q.y);
-                drift + affine + jit.scale(w * finest / t)
-            })
-            .collect();
-        if w > 0.0 {
-            vels[(keep + 1) % n] = vels[keep];
-        }
-        let mut raw = threshold_case(&Threshold {
-            mode,
-            verts: &verts,
-            vels: &vels,
-            i,
-            e,
-            t,
-            buff,
-            fac,
-            spd,
-            dir,
-            along,
-            side,
-            below,
-            dx,
-            start_off,
-            o,
-            size,
-        });
-        if shape == Shape::ThreeD {
-            add_slab(&mut raw, &z, z_still, z_bottom, e, spd, size);
-        }
-        let k_done = if k > 1.0 {
-            stretch_to(&mut raw, k)
-        } else {
-            1.0
-        };
-        (raw, k_done)
-    };
     // A stretch that the rounding of far-away vertices (p − τ·v₀) would break is
     // redrawn without the polygon's drift, where that rounding is gone.
-    let drifts = [drift, Vect2::default()];
+    let drifts = [m.drift, Vect2::default()];
+    let make = |w: f64, d: Vect2| threshold_at(&sc, &m, shape, mode, w, d);
     let (raw, stretch) = drifts
         .iter()
         .flat_map(|&d| strengths.iter().map(move |&w| (w, d)))
         .find_map(|(w, d)| {
             let (raw, k_done) = make(w, d);
-            let stretched = k <= 1.0 || k_done > 1.0 || d == Vect2::default();
+            let stretched = sc.k <= 1.0 || k_done > 1.0 || d == Vect2::default();
             (stretched && (w == 0.0 || simple_throughout(&raw))).then_some((raw, k_done))
         })
         .unwrap_or_else(|| make(0.0, Vect2::default()));
     // Drawn last, so that the cases left at their scale are the same as before.
-    let (raw, scale_exp) = absolute_scale(src, raw, warping, space.ends);
+    let (raw, scale_exp) = absolute_scale(src, raw, m.warping, space.ends);
     Drawn {
         raw,
         shape,
         mode,
-        outline,
-        eps: e,
+        outline: sc.outline,
+        eps: m.e,
         stretch,
         scale_exp,
     }
@@ -643,14 +738,15 @@ pub fn absolute_scale<S: Source>(
     ends: Ends,
 ) -> (RawCase, i32) {
     // The default draws exactly as before `ends` existed, so seeded campaigns keep
-    // their cases.
-    if ends == Ends::Eighth && src.below(8) != 0 {
+    // their cases. With none moved nothing is drawn: this is the case's last draw, so
+    // case k is then the default campaign's case k wherever that one was not moved.
+    if ends == Ends::None || (ends == Ends::Eighth && src.below(8) != 0) {
         return (raw, 0);
     }
     let tiny = match ends {
         Ends::Tiny => true,
         Ends::Huge => false,
-        Ends::Eighth | Ends::All => src.coin(),
+        Ends::Eighth | Ends::All | Ends::None => src.coin(),
     };
     let u = if tiny {
         src.range(-1072.0, -1040.0)
@@ -900,6 +996,42 @@ pub fn bucket(raw: &RawCase) -> (i32, i32) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The homogeneity [`RawCase::exact`] relies on: generated cases moved by 2⁻¹⁰⁰⁰
+    /// and by 2⁹⁰⁰ (exactly), handed to the oracle as they are, get paper A's answer,
+    /// the truth and the entry time of the case at its own scale.
+    #[test]
+    fn the_oracle_answers_alike_at_every_scale() {
+        use super::super::classify::Exact;
+        use polyguard_oracle::{paper_detect, truth, ExactCase};
+        // the entry time as a value (a + b·√d is written in more than one way)
+        let answers = |c: &ExactCase<Exact>| {
+            let t = match truth(c) {
+                polyguard_oracle::Truth::Enters { entry_time } => {
+                    Some(Some(entry_time.to_decimal_string(40)))
+                }
+                polyguard_oracle::Truth::Misses => Some(None),
+                polyguard_oracle::Truth::Undefined { .. } => None,
+            };
+            (paper_detect(c).detected, t)
+        };
+        let mut src = SplitMix(5);
+        let mut moved = 0;
+        for _ in 0..40 {
+            let raw = any_case(&mut src).raw;
+            let want = answers(&raw.exact().expect("a generated case is valid"));
+            for s in [-1000, 900] {
+                let c = raw.times_pow2(s);
+                if c.times_pow2(-s) != raw {
+                    continue; // the move rounded: not the same case
+                }
+                moved += 1;
+                let got = answers(&c.exact_as_is().expect("moved exactly"));
+                assert_eq!(got, want, "moved by 2^{s}: {c:?}");
+            }
+        }
+        assert!(moved >= 40, "only {moved} of 80 moves were exact");
+    }
 
     #[test]
     fn generated_cases_are_valid_and_seeded() {

@@ -332,12 +332,11 @@ fn within_format(sc: &Scenario) -> bool {
     })
 }
 
-/// One draw of [`draw`].
+/// One draw of [`draw`]: a mode, a place, and the pair of features of that mode there.
 fn draw_once(src: &mut impl Source) -> CaseB {
     let mode = src.pick(&MODES);
     let place = src.pick(&PLACES);
     let e = place.draw(src);
-    let em = sphere::mercator(e);
     // near the poles tracks stay short, within the format's ±85°
     let far = if matches!(place, Place::Polar | Place::PolarAntimeridian) {
         20.0
@@ -345,205 +344,11 @@ fn draw_once(src: &mut impl Source) -> CaseB {
         300.0
     };
     let (ka, kb) = match mode {
-        "touch_vertex" | "touch_edge" | "near_vertex" => {
-            let r = log_uniform(src, 1e-5, 0.05);
-            let a = convex_around(src, em, r);
-            let n = a.len();
-            let i = src.below(n);
-            let ring_a = ring_from_merc(a.clone());
-            // ring_from_merc keeps the order (the angles are sorted: counterclockwise)
-            let (prev, v, next) = (a[(i + n - 1) % n], a[i], a[(i + 1) % n]);
-            let w = unit(add(
-                unit([v[0] - prev[0], v[1] - prev[1]]),
-                unit([v[0] - next[0], v[1] - next[1]]),
-                1.0,
-            ));
-            let rb = r * log_uniform(src, 0.1, 3.0);
-            let b = match mode {
-                "touch_edge" => {
-                    // the edge v → next, shared exactly, with an apex outside it
-                    let mid = add(v, [next[0] - v[0], next[1] - v[1]], 0.5);
-                    let out = unit([next[1] - v[1], v[0] - next[0]]);
-                    let apex = sphere::inverse_mercator(add(mid, out, rb));
-                    vec![ring_a[(i + 1) % n], ring_a[i], apex]
-                }
-                _ => {
-                    let alpha = src.range(0.05, 0.5);
-                    let (u1, u2) = (rot(w, alpha), rot(w, -alpha));
-                    let (p1, p2) = (add(v, u2, rb), add(v, u1, rb));
-                    let shared = if mode == "near_vertex" {
-                        sphere::inverse_mercator(add(v, w, signed_gap(src, 1e-13, 1e-2) * r))
-                    } else {
-                        ring_a[i]
-                    };
-                    vec![
-                        shared,
-                        sphere::inverse_mercator(p1),
-                        sphere::inverse_mercator(p2),
-                    ]
-                }
-            };
-            let mut life = || {
-                if src.below(3) == 0 {
-                    let t0 = src.range(-5.0, 5.0);
-                    (Some(t0), Some(t0 + src.range(0.0, 10.0)))
-                } else {
-                    (None, None)
-                }
-            };
-            let (t0a, tfa) = life();
-            let (t0b, tfb) = life();
-            (area(ring_a, t0a, tfa), area(b, t0b, tfb))
-        }
-        "graze" | "ends" => {
-            let th = bearing(src);
-            let (before, after) = (log_uniform(src, 1.0, far), log_uniform(src, 1.0, far));
-            let (s0, s1) = track_through(e, th, before, after);
-            let (d, speed, t0) = (
-                dims(src),
-                log_uniform(src, 2.0, 600.0),
-                src.range(-10.0, 10.0),
-            );
-            let leg = Leg::new(s0, s1, speed, t0, d);
-            let dir = unit([
-                leg.merc[1][0] - leg.merc[0][0],
-                leg.merc[1][1] - leg.merc[0][1],
-            ]);
-            // where and in which direction the area's apex approaches the rectangle
-            let (t_star, push) = if mode == "graze" {
-                let side = if src.coin() { 1.0 } else { -1.0 };
-                (src.range(leg.t0, leg.t1), [-dir[1] * side, dir[0] * side])
-            } else if src.coin() {
-                (leg.t0, [-dir[0], -dir[1]])
-            } else {
-                (leg.t1, dir)
-            };
-            let verts = leg.merc_vertices_at(t_star);
-            let k = (0..4)
-                .max_by(|&i, &j| {
-                    let f = |p: Merc| p[0] * push[0] + p[1] * push[1];
-                    f(verts[i]).total_cmp(&f(verts[j]))
-                })
-                .unwrap_or(0);
-            let scale = (leg.dims.side / sphere::EARTH_RADIUS_NM) / e.lat.cos();
-            let apex = add(
-                verts[k],
-                push,
-                signed_gap(src, 1e-8, 1e-2) * scale.max(1e-9),
-            );
-            let rb = scale * log_uniform(src, 0.1, if far < 300.0 { 1.0 } else { 10.0 });
-            let alpha = src.range(0.1, 1.2);
-            let ring = vec![
-                apex,
-                add(apex, rot(push, alpha), rb),
-                add(apex, rot(push, -alpha), rb),
-            ];
-            let (ta0, taf) = if mode == "ends" && src.below(3) == 0 {
-                // the area's own life ends (or starts) mid-encounter
-                let t = src.range(leg.t0, leg.t1);
-                if src.coin() {
-                    (None, Some(t))
-                } else {
-                    (Some(t), None)
-                }
-            } else {
-                (None, None)
-            };
-            (
-                track(vec![s0, s1], speed, t0, d),
-                area(ring_from_merc(ring), ta0, taf),
-            )
-        }
-        "parallel" => {
-            let th = bearing(src);
-            let (da, db) = (dims(src), dims(src));
-            let (s0, s1) = track_through(
-                e,
-                th,
-                log_uniform(src, 1.0, far),
-                log_uniform(src, 1.0, far),
-            );
-            let side = if src.coin() { FRAC_PI_2 } else { -FRAC_PI_2 };
-            let lateral = da.side + db.side + signed_gap(src, 1e-9, 1.0);
-            let along = src.range(-far, far) / 3.0;
-            let b0 = sphere::rhumb_destination(
-                sphere::rhumb_destination(s0, th + side, lateral),
-                th,
-                along,
-            );
-            let b1 = sphere::rhumb_destination(b0, th, log_uniform(src, 1.0, far));
-            let (va, vb) = (log_uniform(src, 2.0, 600.0), log_uniform(src, 2.0, 600.0));
-            let (t0a, t0b) = (src.range(-5.0, 5.0), src.range(-5.0, 5.0));
-            (
-                track(vec![s0, s1], va, t0a, da),
-                track(vec![b0, b1], vb, t0b, db),
-            )
-        }
-        "east_west" => {
-            let (da, db) = (dims(src), dims(src));
-            let la = log_uniform(src, 0.02, 3.0).to_radians();
-            let lb = log_uniform(src, 0.02, 3.0).to_radians();
-            let a0 = LonLat {
-                lon: e.lon - 0.5 * la,
-                lat: e.lat,
-            };
-            let a1 = LonLat {
-                lon: e.lon + 0.5 * la,
-                lat: e.lat,
-            };
-            let dlat = (da.side + db.side) / sphere::EARTH_RADIUS_NM + signed_gap(src, 1e-12, 1e-3);
-            let latb = e.lat + if src.coin() { dlat } else { -dlat };
-            let (b0, b1) = if src.coin() {
-                // head-on
-                (
-                    LonLat {
-                        lon: e.lon + 0.5 * lb,
-                        lat: latb,
-                    },
-                    LonLat {
-                        lon: e.lon - 0.5 * lb,
-                        lat: latb,
-                    },
-                )
-            } else {
-                (
-                    LonLat {
-                        lon: e.lon - 0.5 * lb,
-                        lat: latb,
-                    },
-                    LonLat {
-                        lon: e.lon + 0.5 * lb,
-                        lat: latb,
-                    },
-                )
-            };
-            let (va, vb) = (log_uniform(src, 2.0, 600.0), log_uniform(src, 2.0, 600.0));
-            let (t0a, t0b) = (src.range(-2.0, 2.0), src.range(-2.0, 2.0));
-            (
-                track(vec![a0, a1], va, t0a, da),
-                track(vec![b0, b1], vb, t0b, db),
-            )
-        }
-        _ => {
-            // crossing at e: a passes e at ta, b at ta + Δ
-            let (tha, thb) = (bearing(src), bearing(src));
-            let (da, db) = (dims(src), dims(src));
-            let (va, vb) = (log_uniform(src, 2.0, 600.0), log_uniform(src, 2.0, 600.0));
-            let (ba, aa) = (log_uniform(src, 1.0, far), log_uniform(src, 1.0, far));
-            let (bb, ab) = (log_uniform(src, 1.0, far), log_uniform(src, 1.0, far));
-            let (a0, a1) = track_through(e, tha, ba, aa);
-            let (b0, b1) = track_through(e, thb, bb, ab);
-            let t0a = src.range(-2.0, 2.0);
-            let ta = t0a + ba / va;
-            // a time offset of about the time to clear the rectangles, moved a little
-            let clear = (da.front + da.back + db.front + db.back) / va.min(vb);
-            let dt = clear * log_uniform(src, 0.05, 2.0) * if src.coin() { 1.0 } else { -1.0 };
-            let t0b = ta + dt - bb / vb;
-            (
-                track(vec![a0, a1], va, t0a, da),
-                track(vec![b0, b1], vb, t0b, db),
-            )
-        }
+        "touch_vertex" | "touch_edge" | "near_vertex" => touching(src, mode, e),
+        "graze" | "ends" => grazing(src, mode, e, far),
+        "parallel" => parallel(src, e, far),
+        "east_west" => east_west(src, e),
+        _ => crossing(src, e, far),
     };
     CaseB {
         scenario: Scenario {
@@ -553,6 +358,219 @@ fn draw_once(src: &mut impl Source) -> CaseB {
         },
         mode: format!("{mode}@{}", place.name()),
     }
+}
+
+/// Modes `touch_vertex`, `touch_edge`, `near_vertex`: two areas near `e`, the second
+/// touching the first at a vertex, along an edge, or a signed gap from a vertex.
+fn touching(src: &mut impl Source, mode: &str, e: LonLat) -> (Kind, Kind) {
+    let em = sphere::mercator(e);
+    let r = log_uniform(src, 1e-5, 0.05);
+    let a = convex_around(src, em, r);
+    let n = a.len();
+    let i = src.below(n);
+    let ring_a = ring_from_merc(a.clone());
+    // ring_from_merc keeps the order (the angles are sorted: counterclockwise)
+    let (prev, v, next) = (a[(i + n - 1) % n], a[i], a[(i + 1) % n]);
+    let w = unit(add(
+        unit([v[0] - prev[0], v[1] - prev[1]]),
+        unit([v[0] - next[0], v[1] - next[1]]),
+        1.0,
+    ));
+    let rb = r * log_uniform(src, 0.1, 3.0);
+    let b = match mode {
+        "touch_edge" => {
+            // the edge v → next, shared exactly, with an apex outside it
+            let mid = add(v, [next[0] - v[0], next[1] - v[1]], 0.5);
+            let out = unit([next[1] - v[1], v[0] - next[0]]);
+            let apex = sphere::inverse_mercator(add(mid, out, rb));
+            vec![ring_a[(i + 1) % n], ring_a[i], apex]
+        }
+        _ => {
+            let alpha = src.range(0.05, 0.5);
+            let (u1, u2) = (rot(w, alpha), rot(w, -alpha));
+            let (p1, p2) = (add(v, u2, rb), add(v, u1, rb));
+            let shared = if mode == "near_vertex" {
+                sphere::inverse_mercator(add(v, w, signed_gap(src, 1e-13, 1e-2) * r))
+            } else {
+                ring_a[i]
+            };
+            vec![
+                shared,
+                sphere::inverse_mercator(p1),
+                sphere::inverse_mercator(p2),
+            ]
+        }
+    };
+    let mut life = || {
+        if src.below(3) == 0 {
+            let t0 = src.range(-5.0, 5.0);
+            (Some(t0), Some(t0 + src.range(0.0, 10.0)))
+        } else {
+            (None, None)
+        }
+    };
+    let (t0a, tfa) = life();
+    let (t0b, tfb) = life();
+    (area(ring_a, t0a, tfa), area(b, t0b, tfb))
+}
+
+/// Modes `graze` and `ends`: a track through `e` and an area whose apex comes a signed
+/// gap from the track's rectangle, beside it (`graze`) or at its start or end (`ends`,
+/// where the area's own life may also end or start mid-encounter).
+fn grazing(src: &mut impl Source, mode: &str, e: LonLat, far: f64) -> (Kind, Kind) {
+    let th = bearing(src);
+    let (before, after) = (log_uniform(src, 1.0, far), log_uniform(src, 1.0, far));
+    let (s0, s1) = track_through(e, th, before, after);
+    let (d, speed, t0) = (
+        dims(src),
+        log_uniform(src, 2.0, 600.0),
+        src.range(-10.0, 10.0),
+    );
+    let leg = Leg::new(s0, s1, speed, t0, d);
+    let dir = unit([
+        leg.merc[1][0] - leg.merc[0][0],
+        leg.merc[1][1] - leg.merc[0][1],
+    ]);
+    // where and in which direction the area's apex approaches the rectangle
+    let (t_star, push) = if mode == "graze" {
+        let side = if src.coin() { 1.0 } else { -1.0 };
+        (src.range(leg.t0, leg.t1), [-dir[1] * side, dir[0] * side])
+    } else if src.coin() {
+        (leg.t0, [-dir[0], -dir[1]])
+    } else {
+        (leg.t1, dir)
+    };
+    let verts = leg.merc_vertices_at(t_star);
+    let k = (0..4)
+        .max_by(|&i, &j| {
+            let f = |p: Merc| p[0] * push[0] + p[1] * push[1];
+            f(verts[i]).total_cmp(&f(verts[j]))
+        })
+        .unwrap_or(0);
+    let scale = (leg.dims.side / sphere::EARTH_RADIUS_NM) / e.lat.cos();
+    let apex = add(
+        verts[k],
+        push,
+        signed_gap(src, 1e-8, 1e-2) * scale.max(1e-9),
+    );
+    let rb = scale * log_uniform(src, 0.1, if far < 300.0 { 1.0 } else { 10.0 });
+    let alpha = src.range(0.1, 1.2);
+    let ring = vec![
+        apex,
+        add(apex, rot(push, alpha), rb),
+        add(apex, rot(push, -alpha), rb),
+    ];
+    let (ta0, taf) = if mode == "ends" && src.below(3) == 0 {
+        // the area's own life ends (or starts) mid-encounter
+        let t = src.range(leg.t0, leg.t1);
+        if src.coin() {
+            (None, Some(t))
+        } else {
+            (Some(t), None)
+        }
+    } else {
+        (None, None)
+    };
+    (
+        track(vec![s0, s1], speed, t0, d),
+        area(ring_from_merc(ring), ta0, taf),
+    )
+}
+
+/// Mode `parallel`: two tracks on parallel rhumb lines, their rectangles a signed gap
+/// apart side by side.
+fn parallel(src: &mut impl Source, e: LonLat, far: f64) -> (Kind, Kind) {
+    let th = bearing(src);
+    let (da, db) = (dims(src), dims(src));
+    let (s0, s1) = track_through(
+        e,
+        th,
+        log_uniform(src, 1.0, far),
+        log_uniform(src, 1.0, far),
+    );
+    let side = if src.coin() { FRAC_PI_2 } else { -FRAC_PI_2 };
+    let lateral = da.side + db.side + signed_gap(src, 1e-9, 1.0);
+    let along = src.range(-far, far) / 3.0;
+    let b0 =
+        sphere::rhumb_destination(sphere::rhumb_destination(s0, th + side, lateral), th, along);
+    let b1 = sphere::rhumb_destination(b0, th, log_uniform(src, 1.0, far));
+    let (va, vb) = (log_uniform(src, 2.0, 600.0), log_uniform(src, 2.0, 600.0));
+    let (t0a, t0b) = (src.range(-5.0, 5.0), src.range(-5.0, 5.0));
+    (
+        track(vec![s0, s1], va, t0a, da),
+        track(vec![b0, b1], vb, t0b, db),
+    )
+}
+
+/// Mode `east_west`: two tracks along parallels of latitude (rhumb lines due east or
+/// west), a signed gap apart in latitude, the same way or head-on.
+fn east_west(src: &mut impl Source, e: LonLat) -> (Kind, Kind) {
+    let (da, db) = (dims(src), dims(src));
+    let la = log_uniform(src, 0.02, 3.0).to_radians();
+    let lb = log_uniform(src, 0.02, 3.0).to_radians();
+    let a0 = LonLat {
+        lon: e.lon - 0.5 * la,
+        lat: e.lat,
+    };
+    let a1 = LonLat {
+        lon: e.lon + 0.5 * la,
+        lat: e.lat,
+    };
+    let dlat = (da.side + db.side) / sphere::EARTH_RADIUS_NM + signed_gap(src, 1e-12, 1e-3);
+    let latb = e.lat + if src.coin() { dlat } else { -dlat };
+    let (b0, b1) = if src.coin() {
+        // head-on
+        (
+            LonLat {
+                lon: e.lon + 0.5 * lb,
+                lat: latb,
+            },
+            LonLat {
+                lon: e.lon - 0.5 * lb,
+                lat: latb,
+            },
+        )
+    } else {
+        (
+            LonLat {
+                lon: e.lon - 0.5 * lb,
+                lat: latb,
+            },
+            LonLat {
+                lon: e.lon + 0.5 * lb,
+                lat: latb,
+            },
+        )
+    };
+    let (va, vb) = (log_uniform(src, 2.0, 600.0), log_uniform(src, 2.0, 600.0));
+    let (t0a, t0b) = (src.range(-2.0, 2.0), src.range(-2.0, 2.0));
+    (
+        track(vec![a0, a1], va, t0a, da),
+        track(vec![b0, b1], vb, t0b, db),
+    )
+}
+
+/// Mode `crossing`: two tracks crossing at `e`, the second passing it about the time to
+/// clear the rectangles before or after the first.
+fn crossing(src: &mut impl Source, e: LonLat, far: f64) -> (Kind, Kind) {
+    // a passes e at ta, b at ta + Δ
+    let (tha, thb) = (bearing(src), bearing(src));
+    let (da, db) = (dims(src), dims(src));
+    let (va, vb) = (log_uniform(src, 2.0, 600.0), log_uniform(src, 2.0, 600.0));
+    let (ba, aa) = (log_uniform(src, 1.0, far), log_uniform(src, 1.0, far));
+    let (bb, ab) = (log_uniform(src, 1.0, far), log_uniform(src, 1.0, far));
+    let (a0, a1) = track_through(e, tha, ba, aa);
+    let (b0, b1) = track_through(e, thb, bb, ab);
+    let t0a = src.range(-2.0, 2.0);
+    let ta = t0a + ba / va;
+    // a time offset of about the time to clear the rectangles, moved a little
+    let clear = (da.front + da.back + db.front + db.back) / va.min(vb);
+    let dt = clear * log_uniform(src, 0.05, 2.0) * if src.coin() { 1.0 } else { -1.0 };
+    let t0b = ta + dt - bb / vb;
+    (
+        track(vec![a0, a1], va, t0a, da),
+        track(vec![b0, b1], vb, t0b, db),
+    )
 }
 
 // ---------------------------------------------------------------- judging

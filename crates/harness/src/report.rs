@@ -79,10 +79,10 @@ impl Contract {
 
     fn add_check(&mut self, v: &ContractVerdict) {
         use polyguard::Tri;
-        let paper_yes = v.engine == Tri::Yes || v.paper == Some(true);
+        let paper_yes = v.paper_yes();
         self.paper_yes += u64::from(paper_yes);
         self.certified_yes += u64::from(v.engine == Tri::Yes);
-        self.violations += u64::from(paper_yes && v.engine == Tri::No);
+        self.violations += u64::from(v.is_breach());
         self.conservative += u64::from(v.engine == Tri::Unsure);
         self.conservative_paper_no += u64::from(v.engine == Tri::Unsure && v.paper == Some(false));
         self.plain_violations += u64::from(paper_yes && !v.plain);
@@ -386,6 +386,89 @@ impl Report {
         self.kept.extend(other.kept.iter().cloned());
     }
 
+    /// Whether this report, the `at`-th (from 0) of a merge whose first report is
+    /// `first`, is a shard of the same campaign: same seed, size, mode, space and engine,
+    /// itself whole, split as the others (`n_shards`, set by the first), no shard already
+    /// `seen` (shard index → report), and holding exactly its shards' cases.
+    fn check_joins(
+        &self,
+        first: &Report,
+        at: usize,
+        n_shards: &mut Option<u64>,
+        seen: &mut BTreeMap<u64, usize>,
+    ) -> Result<(), String> {
+        let which = format!("report {}", at + 1);
+        if self.campaign_cases == 0 {
+            return Err(format!(
+                "{which} does not say its campaign's size (written before reports recorded it): run it again"
+            ));
+        }
+        if self.seed != first.seed {
+            return Err(format!(
+                "{which}: seed {} where report 1 has {}",
+                self.seed, first.seed
+            ));
+        }
+        if self.campaign_cases != first.campaign_cases {
+            return Err(format!(
+                "{which}: a campaign of {} cases where report 1's has {}",
+                self.campaign_cases, first.campaign_cases
+            ));
+        }
+        if self.contract_only != first.contract_only {
+            return Err(format!(
+                "{which}: a --contract run and a classifying run cannot be merged"
+            ));
+        }
+        if self.space != first.space {
+            return Err(format!(
+                "{which} draws from the scale space {}, report 1 from {}",
+                self.space, first.space
+            ));
+        }
+        if self.engine != first.engine {
+            return Err(format!(
+                "{which} judges the {} engine, report 1 the {} engine",
+                self.engine, first.engine
+            ));
+        }
+        if !self.missing_shards.is_empty() {
+            return Err(format!("{which} is itself a partial merge"));
+        }
+        for s in &self.shards {
+            let (i, n) =
+                parse_shard_name(s).ok_or_else(|| format!("{which}: shard {s:?} is not i/N"))?;
+            match *n_shards {
+                None => *n_shards = Some(n),
+                Some(m) if m != n => {
+                    return Err(format!(
+                        "{which}: shard {s} of a campaign split {n} ways, the others are split {m} ways"
+                    ))
+                }
+                Some(_) => {}
+            }
+            if let Some(prev) = seen.insert(i, at) {
+                return Err(format!(
+                    "{which}: shard {s} is also in report {} (its cases would count twice)",
+                    prev + 1
+                ));
+            }
+        }
+        let want: u64 = self
+            .shards
+            .iter()
+            .filter_map(|s| parse_shard_name(s))
+            .map(|(i, n)| shard_size(self.campaign_cases, i, n))
+            .sum();
+        if self.cases != want {
+            return Err(format!(
+                "{which}: {} cases where its shards {:?} of a {}-case campaign draw {want}",
+                self.cases, self.shards, self.campaign_cases
+            ));
+        }
+        Ok(())
+    }
+
     /// `assure merge`: the shards of one campaign joined exactly, or an error saying why
     /// they are not one campaign. Every report must give the same seed, campaign size and
     /// mode (classifying or `--contract`) and the same shard count N; no shard may come
@@ -399,75 +482,7 @@ impl Report {
         let mut n_shards = None;
         let mut seen: BTreeMap<u64, usize> = BTreeMap::new();
         for (at, r) in reports.iter().enumerate() {
-            let which = format!("report {}", at + 1);
-            if r.campaign_cases == 0 {
-                return Err(format!(
-                    "{which} does not say its campaign's size (written before reports recorded it): run it again"
-                ));
-            }
-            if r.seed != first.seed {
-                return Err(format!(
-                    "{which}: seed {} where report 1 has {}",
-                    r.seed, first.seed
-                ));
-            }
-            if r.campaign_cases != first.campaign_cases {
-                return Err(format!(
-                    "{which}: a campaign of {} cases where report 1's has {}",
-                    r.campaign_cases, first.campaign_cases
-                ));
-            }
-            if r.contract_only != first.contract_only {
-                return Err(format!(
-                    "{which}: a --contract run and a classifying run cannot be merged"
-                ));
-            }
-            if r.space != first.space {
-                return Err(format!(
-                    "{which} draws from the scale space {}, report 1 from {}",
-                    r.space, first.space
-                ));
-            }
-            if r.engine != first.engine {
-                return Err(format!(
-                    "{which} judges the {} engine, report 1 the {} engine",
-                    r.engine, first.engine
-                ));
-            }
-            if !r.missing_shards.is_empty() {
-                return Err(format!("{which} is itself a partial merge"));
-            }
-            for s in &r.shards {
-                let (i, n) = parse_shard_name(s)
-                    .ok_or_else(|| format!("{which}: shard {s:?} is not i/N"))?;
-                match n_shards {
-                    None => n_shards = Some(n),
-                    Some(m) if m != n => {
-                        return Err(format!(
-                            "{which}: shard {s} of a campaign split {n} ways, the others are split {m} ways"
-                        ))
-                    }
-                    Some(_) => {}
-                }
-                if let Some(prev) = seen.insert(i, at) {
-                    return Err(format!(
-                        "{which}: shard {s} is also in report {} (its cases would count twice)",
-                        prev + 1
-                    ));
-                }
-            }
-            let want: u64 = r
-                .shards
-                .iter()
-                .filter_map(|s| parse_shard_name(s))
-                .map(|(i, n)| shard_size(r.campaign_cases, i, n))
-                .sum();
-            if r.cases != want {
-                return Err(format!(
-                    "{which}: {} cases where its shards {:?} of a {}-case campaign draw {want}",
-                    r.cases, r.shards, r.campaign_cases
-                ));
-            }
+            r.check_joins(first, at, &mut n_shards, &mut seen)?;
         }
         let n = n_shards.unwrap_or(1);
         let missing: Vec<String> = (0..n)
@@ -699,13 +714,6 @@ impl Report {
     fn contract_lines(&self) -> String {
         let mut out = String::new();
         let c = &self.contract;
-        let pct = |n: u64| {
-            if self.cases == 0 {
-                0.0
-            } else {
-                100.0 * n as f64 / self.cases as f64
-            }
-        };
         out.push_str(&format!(
             "contract paper-exact => engine: {} violations in {} paper-exact yes (canary, plain f64 transcription: {} violations)\n",
             c.violations, c.paper_yes, c.plain_violations
@@ -716,14 +724,38 @@ impl Report {
                 c.certificate_breaches
             ));
         }
-        out.push_str(&format!(
-            "conservative answers (an undecided comparison): {} ({:.4}%), {} of them where paper-exact says no ({:.4}%)\n",
+        out.push_str(&self.conservative_line());
+        out
+    }
+
+    /// The rate of conservative answers as one line a document can quote: the counts,
+    /// the rates, and where the cases were drawn (the seed, and the scale space with how
+    /// many cases sit at the ends of the float range, which is where most conservative
+    /// answers are: `--aim ends=none` and `ends=all` measure the two apart).
+    pub fn conservative_line(&self) -> String {
+        let c = &self.contract;
+        let pct = |n: u64| {
+            if self.cases == 0 {
+                0.0
+            } else {
+                100.0 * n as f64 / self.cases as f64
+            }
+        };
+        // the space's label leaves out the default ends (one case in eight): say it
+        let space = if self.space.contains("ends=") {
+            self.space.clone()
+        } else {
+            format!("{},ends={}", self.space, crate::gen::Ends::Eighth.name())
+        };
+        format!(
+            "conservative answers (an undecided comparison): {} of {} cases ({:.4} %), {} of them where paper-exact says no ({:.4} %); seed {}, space {space}\n",
             c.conservative,
+            self.cases,
             pct(c.conservative),
             c.conservative_paper_no,
-            pct(c.conservative_paper_no)
-        ));
-        out
+            pct(c.conservative_paper_no),
+            self.seed,
+        )
     }
 }
 
@@ -809,6 +841,35 @@ mod tests {
         r
     }
 
+    /// The conservative answers' line says its counts, rates, seed and space, the ends of
+    /// the float range included when the label leaves the default out.
+    #[test]
+    fn the_conservative_line_says_where_its_cases_were_drawn() {
+        let mut r = Report {
+            seed: 2,
+            space: crate::gen::Space::FULL.label(),
+            ..Default::default()
+        };
+        for k in 0..8 {
+            let mut v = verdict(Class::Agree, Method::DetectSame2d);
+            v.conservative = k < 2;
+            v.paper = k != 0;
+            r.add(&v, "free", (1, -3));
+        }
+        assert_eq!(
+            r.conservative_line(),
+            "conservative answers (an undecided comparison): 2 of 8 cases (25.0000 %), 1 of \
+             them where paper-exact says no (12.5000 %); seed 2, space \
+             path=1e-3..1e7,buff=1e-12..1e0,ends=eighth\n"
+        );
+        r.space = crate::gen::Space::FULL
+            .with_ends(crate::gen::Ends::None)
+            .label();
+        assert!(r
+            .conservative_line()
+            .ends_with(",buff=1e-12..1e0,ends=none\n"));
+    }
+
     /// The coverage views count cases per bucket and mode, and give a class's rate.
     #[test]
     fn coverage_views_count_and_rate() {
@@ -883,7 +944,8 @@ mod tests {
         assert_eq!(back, m);
     }
 
-    /// Each way the issue found to make a merge lie is refused, and says why.
+    /// Each way a merge could lie (counting cases twice, mixing campaigns) is refused,
+    /// and says why.
     #[test]
     fn merges_that_would_lie_are_refused() {
         let err = |rs: &[Report], partial: bool| {

@@ -401,15 +401,50 @@ fn clip(a: Vect2, b: Vect2, centre: Vect2, half: f64) -> Option<(Vect2, Vect2)> 
         .then(|| (centre + ra + d.scale(t0), centre + ra + d.scale(t1)))
 }
 
-fn dot(out: &mut String, m: &Map, p: Vect2, colour: &str, label: &str) {
+/// A dot of `colour` at `p`, without a label.
+fn dot(out: &mut String, m: &Map, p: Vect2, colour: &str) {
     let (x, y) = m.px(p);
     let _ = writeln!(
         out,
         r#"<circle cx="{x:.2}" cy="{y:.2}" r="4" fill="{colour}"/>"#
     );
-    if !label.is_empty() {
-        text(out, x + 7.0, y - 7.0, 12.0, "start", label);
-    }
+}
+
+/// Font size of a dot's label.
+const LABEL_SIZE: f64 = 12.0;
+
+/// Where a dot's label goes so that it stays inside `frame` (which clips the panel):
+/// beside the dot at pixel (x, y), above it (or below when `below`), to its right unless
+/// that runs past the frame's right side, and on the other side vertically when the
+/// chosen one runs past the top or bottom. The width is estimated at 0.62 of the font
+/// size per character (sans-serif digits and letters are narrower). Returns the text's
+/// x, baseline y and anchor.
+fn label_place(frame: Rect, (x, y): (f64, f64), label: &str, below: bool) -> (f64, f64, &str) {
+    let (gap, margin) = (7.0, 3.0);
+    let width = 0.62 * LABEL_SIZE * label.chars().count() as f64;
+    let (right, bottom) = (frame.x + frame.w - margin, frame.y + frame.h - margin);
+    let (lx, anchor) = if x + gap + width <= right {
+        (x + gap, "start")
+    } else if x - gap - width >= frame.x + margin {
+        (x - gap, "end")
+    } else {
+        (right, "end")
+    };
+    let above = y - gap;
+    let under = y + gap + LABEL_SIZE;
+    let fits_above = above - LABEL_SIZE >= frame.y + margin;
+    let fits_under = under <= bottom;
+    let ly = match (below, fits_above, fits_under) {
+        (false, true, _) | (true, true, false) => above,
+        _ => under.min(bottom),
+    };
+    (lx, ly, anchor)
+}
+
+/// Writes a dot's label, placed by [`label_place`].
+fn dot_label(out: &mut String, frame: Rect, at: (f64, f64), label: &str, below: bool) {
+    let (x, y, anchor) = label_place(frame, at, label, below);
+    text(out, x, y, LABEL_SIZE, anchor, label);
 }
 
 fn yes(b: bool) -> &'static str {
@@ -480,19 +515,19 @@ pub fn picture(raw: &RawCase, pic: &Picture) -> String {
     polygon(&mut out, &m, &p0, raw.buff, false);
     polygon(&mut out, &m, &pe, raw.buff, true);
     path(&mut out, &m, s, s_t);
-    // Labels of the ends only where they do not pile up on a short path.
-    let ((ax, ay), (bx, by)) = (m.px(s), m.px(s_t));
-    let long = (ax - bx).hypot(ay - by) > 60.0;
-    dot(&mut out, &m, s, "#264653", if long { "t = 0" } else { "" });
-    dot(
-        &mut out,
-        &m,
-        s_t,
-        "#264653",
-        if long { "t = T" } else { "" },
-    );
-    dot(&mut out, &m, s_e, "#e76f51", &format!("t = {}", num(event)));
+    dot(&mut out, &m, s, "#264653");
+    dot(&mut out, &m, s_t, "#264653");
+    dot(&mut out, &m, s_e, "#e76f51");
     out.push_str("</g>\n");
+    // The labels inside the frame. Those of the ends only where they do not pile up on a
+    // short path; the end's label below its dot when the event's label sits near it.
+    let (a, b, e) = (m.px(s), m.px(s_t), m.px(s_e));
+    let apart = |p: (f64, f64), q: (f64, f64)| (p.0 - q.0).hypot(p.1 - q.1);
+    if apart(a, b) > 60.0 {
+        dot_label(&mut out, MAIN, a, "t = 0", apart(a, e) < 20.0);
+        dot_label(&mut out, MAIN, b, "t = T", apart(b, e) < 20.0);
+    }
+    dot_label(&mut out, MAIN, e, &format!("t = {}", num(event)), false);
     scale_bar(&mut out, &m, MAIN, &back);
 
     // Inset: the point at the event and the nearest edge of P(event), BUFF visible.
@@ -619,8 +654,8 @@ fn inset(
     if let Some((lo, hi)) = clip(lo, hi, centre, view) {
         path(out, &m, lo, hi);
     }
-    dot(out, &m, s_e, "#e76f51", "");
-    dot(out, &m, q, "#2a9d8f", "");
+    dot(out, &m, s_e, "#e76f51");
+    dot(out, &m, q, "#2a9d8f");
     out.push_str("</g>\n");
     scale_bar(out, &m, INSET, back);
     let mut y = INSET.y + INSET.h + 16.0;
@@ -806,6 +841,43 @@ fn heights(out: &mut String, raw: &RawCase, event: f64, zname: &str) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A dot's label stays inside the main panel's frame (which clips it) wherever the dot
+    /// is: at a corner, on an edge, in the middle; below the dot when asked and it fits.
+    #[test]
+    fn dot_labels_stay_inside_the_frame() {
+        let f = MAIN;
+        let inside = |at: (f64, f64), label: &str, below: bool| {
+            let (x, y, anchor) = label_place(f, at, label, below);
+            let width = 0.62 * LABEL_SIZE * label.chars().count() as f64;
+            let (left, right) = match anchor {
+                "start" => (x, x + width),
+                _ => (x - width, x),
+            };
+            assert!(
+                left >= f.x && right <= f.x + f.w && y - LABEL_SIZE >= f.y && y <= f.y + f.h,
+                "{label:?} at {at:?}: x {left}..{right}, baseline {y}"
+            );
+            (x, y)
+        };
+        for at in [
+            (f.x, f.y),
+            (f.x + f.w, f.y),
+            (f.x, f.y + f.h),
+            (f.x + f.w, f.y + f.h),
+            (f.x + f.w - 20.0, f.y + 200.0),
+            (f.x + 200.0, f.y + 2.0),
+            (f.x + 200.0, f.y + 200.0),
+        ] {
+            for label in ["t = T", "t = 0", "t = 1.000e-5", "t = 41638.6363"] {
+                inside(at, label, false);
+                inside(at, label, true);
+            }
+        }
+        let mid = (f.x + 200.0, f.y + 200.0);
+        assert!(inside(mid, "t = T", true).1 > mid.1, "below when asked");
+        assert!(inside(mid, "t = T", false).1 < mid.1, "above by default");
+    }
 
     /// The distance the inset reports is right at both ends of the float range: a
     /// point 3 units from an edge 8 long, moved whole by 2^±1000 (exactly), is 3·2^±1000

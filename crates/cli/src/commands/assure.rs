@@ -17,6 +17,8 @@ use polyguard_harness::minimise::minimise;
 use polyguard_harness::report::{Kept, Report};
 use polyguard_harness::svg::{picture, Picture};
 
+use super::assure_common::{keep_lowest, write_report, CampaignProgress};
+
 pub use polyguard_harness::report::KEEP_PER_CLASS;
 
 /// Arguments of `polyguard assure`.
@@ -41,7 +43,8 @@ pub struct AssureArgs {
     /// Run only shard i of N ("i/N", 0-based): case k belongs to shard k mod N.
     #[arg(long, value_parser = parse_shard)]
     pub shard: Option<(u64, u64)>,
-    /// No progress bar.
+    /// No progress on standard error: without it, a bar on a terminal, else a line at
+    /// every tenth of the cases and at least every 30 s.
     #[arg(long)]
     pub quiet: bool,
     /// Check only the engine's contract (paper A without rounding says yes ⇒ the engine
@@ -49,21 +52,26 @@ pub struct AssureArgs {
     /// arithmetic only where the engine does not certify a yes.
     #[arg(long)]
     pub contract: bool,
-    /// The f64 engine to judge: `f64` (the certified engine, the product) or `plain` (the
-    /// uncertified transcription: the canary a hunt that sees must catch missing entries).
+    /// The engine to judge. Paper A's: `f64` (the certified engine, the product), `plain`
+    /// (the uncertified transcription: the canary, whose missed entries the hunt must
+    /// catch) or `shifted-time` (the entry-time check's canary); paper B's (`--paper b`):
+    /// `pipeline` or `sampled` (its canary).
     #[arg(long, value_enum, default_value_t = EngineArg::F64)]
     pub engine: EngineArg,
     /// Aim the campaign at part of the scale space: `path=1e3..1e7,buff=1e-12..1e-9`
     /// (relative path and BUFF per polygon size, as powers of ten; either may be left
-    /// out), and `ends=all` (or `tiny`, `huge`) to move every case to an end of the float
-    /// range (BUFF subnormal, or the largest length near 2^900..2^1000) instead of one in
-    /// eight. The default is the whole space (path 1e-3..1e7, buff 1e-12..1e0, ends=eighth).
+    /// out), and `ends=all` (or `tiny`, `huge`) to move every case that can be moved to an
+    /// end of the float range (BUFF subnormal, or the largest length near 2^900..2^1000)
+    /// instead of one in eight, or `ends=none` to keep every case in the normal range.
+    /// `--contract --aim ends=none` and `--contract --aim ends=all` give the rate of
+    /// conservative answers in each. The default is the whole space (path 1e-3..1e7,
+    /// buff 1e-12..1e0, ends=eighth).
     #[arg(long, value_parser = parse_aim)]
     pub aim: Option<Space>,
     /// The paper to hunt in: `a` (point vs polygon, the default) or `b` (interference of
     /// areas and tracks on the Earth: docs/assurance.md, "Paper B"). With `b`, `--engine`
     /// is `pipeline` (the default) or `sampled` (the canary), and `--contract` and `--aim`
-    /// do not apply.
+    /// are refused (paper A's).
     #[arg(long, value_enum, default_value_t = PaperArg::A)]
     pub paper: PaperArg,
 }
@@ -83,11 +91,14 @@ fn parse_aim(s: &str) -> Result<Space, String> {
     let mut ends = Ends::Eighth;
     for part in s.split(',') {
         let (key, range) = part.split_once('=').ok_or_else(|| {
-            format!("{part:?}: expected path=1eA..1eB, buff=1eC..1eD or ends=all|tiny|huge|eighth")
+            format!(
+                "{part:?}: expected path=1eA..1eB, buff=1eC..1eD or ends=all|tiny|huge|none|eighth"
+            )
         })?;
         if key.trim() == "ends" {
-            ends = Ends::from_name(range.trim())
-                .ok_or_else(|| format!("ends: {range:?} is not one of eighth, all, tiny, huge"))?;
+            ends = Ends::from_name(range.trim()).ok_or_else(|| {
+                format!("ends: {range:?} is not one of eighth, all, tiny, huge, none")
+            })?;
             continue;
         }
         let (lo, hi) = range
@@ -145,8 +156,10 @@ impl From<EngineArg> for Hunted {
 #[derive(Debug, clap::Subcommand)]
 pub enum MergeCommand {
     /// Join the report.json files of the shards of one campaign exactly, with their
-    /// counterexample files. Reports of different seeds, campaign sizes or shard counts,
-    /// a shard given twice, or a missing shard are refused (exit 2).
+    /// counterexample files. Reports of different seeds, campaign sizes, shard counts or
+    /// engines (for paper A also scale spaces, and `--contract` runs beside classifying
+    /// ones), a shard given twice, or a missing shard (without --partial) are refused
+    /// (exit 2).
     Merge {
         /// The shards' report.json files.
         #[arg(required = true)]
@@ -341,26 +354,13 @@ pub fn run(args: &AssureArgs) -> ExitCode {
         }) => return coverage(report, mode.as_deref(), *class),
         None => {}
     }
-    let (shard_i, shard_n) = args.shard.unwrap_or((0, 1));
     if args.paper == PaperArg::B {
         return run_paper_b(args);
     }
-    if matches!(args.engine, EngineArg::Pipeline | EngineArg::Sampled) {
-        eprintln!(
-            "polyguard assure: --engine {} is paper B's: add --paper b (paper A's engines are f64 and plain)",
-            if args.engine == EngineArg::Pipeline { "pipeline" } else { "sampled" }
-        );
-        return ExitCode::from(2);
-    }
-    let space = args.aim.unwrap_or_default();
-    let hunted = Hunted::from(args.engine);
-    if args.contract && hunted != Hunted::Certified {
-        eprintln!(
-            "polyguard assure: --contract judges the certified engine (and counts the plain one's breaches as its canary); drop --engine plain"
-        );
-        return ExitCode::from(2);
-    }
-    let threads = threads(args);
+    let hunted = match paper_a_engine(args) {
+        Ok(h) => h,
+        Err(code) => return code,
+    };
     if let Err(e) = fs::create_dir_all(&args.out) {
         eprintln!(
             "polyguard assure: cannot create {}: {e}",
@@ -368,86 +368,26 @@ pub fn run(args: &AssureArgs) -> ExitCode {
         );
         return ExitCode::from(2);
     }
-    let mine: u64 = (0..args.cases).filter(|k| k % shard_n == shard_i).count() as u64;
-    let bar = progress_bar(mine, args.quiet);
-    let next = AtomicU64::new(0);
-    let report = Mutex::new(Report {
+    let (shard_i, shard_n) = args.shard.unwrap_or((0, 1));
+    let campaign = Campaign {
         seed: args.seed,
-        shards: vec![format!("{shard_i}/{shard_n}")],
-        campaign_cases: args.cases,
-        contract_only: args.contract,
-        engine: hunted.name().into(),
-        space: space.label(),
-        ..Default::default()
-    });
-    let interesting: Mutex<Vec<(u64, Verdict, RawCase, &'static str)>> = Mutex::new(Vec::new());
+        shard_i,
+        shard_n,
+        space: args.aim.unwrap_or_default(),
+        contract: args.contract,
+        hunted,
+    };
+    let mine = polyguard_harness::report::shard_size(args.cases, shard_i, shard_n);
+    let progress = CampaignProgress::new(mine, args.quiet);
     let start = Instant::now();
-    std::thread::scope(|scope| {
-        for _ in 0..threads {
-            scope.spawn(|| {
-                let mut local = Report::default();
-                let mut local_rejected = 0u64;
-                loop {
-                    let j = next.fetch_add(1, Ordering::Relaxed);
-                    if j >= mine {
-                        break;
-                    }
-                    let k = j * shard_n + shard_i;
-                    let (raw, mode) = campaign_case(args.seed, k, &space);
-                    if args.contract {
-                        match check_contract(&raw) {
-                            Ok(c) => local.add_contract(&c),
-                            Err(e) => {
-                                eprintln!("polyguard assure: case {k} rejected: {e:?}");
-                                local_rejected += 1;
-                            }
-                        }
-                        bar.inc(1);
-                        continue;
-                    }
-                    match compare_as(&raw, hunted) {
-                        Ok(v) => {
-                            local.add(&v, mode, bucket(&raw));
-                            if is_kept_class(v.class) {
-                                // The KEEP_PER_CLASS lowest indices of the class, whatever
-                                // the threads' order: shards then merge into exactly the
-                                // unsharded run's kept cases.
-                                if let Ok(mut g) = interesting.lock() {
-                                    let same: Vec<usize> =
-                                        (0..g.len()).filter(|&x| g[x].1.class == v.class).collect();
-                                    if same.len() < KEEP_PER_CLASS {
-                                        g.push((k, v, raw, mode));
-                                    } else if let Some(&worst) =
-                                        same.iter().max_by_key(|&&x| g[x].0)
-                                    {
-                                        if g[worst].0 > k {
-                                            g[worst] = (k, v, raw, mode);
-                                        }
-                                    }
-                                }
-                            }
-                        }
-                        Err(e) => {
-                            // The generator's cases are valid by construction: say which
-                            // one was not, so that it can be reproduced.
-                            eprintln!("polyguard assure: case {k} rejected: {e:?}");
-                            local_rejected += 1;
-                        }
-                    }
-                    bar.inc(1);
-                }
-                local.rejected = local_rejected;
-                if let Ok(mut r) = report.lock() {
-                    r.absorb(&local);
-                }
-            });
-        }
-    });
-    bar.finish_and_clear();
-    let mut report = report.into_inner().unwrap_or_default();
+    let (mut report, found) = run_cases(&campaign, mine, threads(args), &progress);
+    progress.finish();
+    report.shards = vec![format!("{shard_i}/{shard_n}")];
+    report.campaign_cases = args.cases;
+    report.contract_only = args.contract;
+    report.engine = hunted.name().into();
+    report.space = campaign.space.label();
     report.wall_seconds = start.elapsed().as_secs_f64();
-    let mut found = interesting.into_inner().unwrap_or_default();
-    found.sort_by_key(|(k, _, _, _)| *k);
     for (k, v, raw, mode) in &found {
         match write_counterexample(&args.out, *k, v, raw, mode, hunted) {
             Ok(kept) => report.kept.push(kept),
@@ -455,6 +395,115 @@ pub fn run(args: &AssureArgs) -> ExitCode {
         }
     }
     finish(&report, &args.out)
+}
+
+/// The engine a paper-A campaign judges, or exit 2 when `--engine` (or `--contract`
+/// with it) is not one of paper A's.
+fn paper_a_engine(args: &AssureArgs) -> Result<Hunted, ExitCode> {
+    if matches!(args.engine, EngineArg::Pipeline | EngineArg::Sampled) {
+        eprintln!(
+            "polyguard assure: --engine {} is paper B's: add --paper b (paper A's engines are f64, plain and shifted-time)",
+            if args.engine == EngineArg::Pipeline { "pipeline" } else { "sampled" }
+        );
+        return Err(ExitCode::from(2));
+    }
+    let hunted = Hunted::from(args.engine);
+    if args.contract && hunted != Hunted::Certified {
+        eprintln!(
+            "polyguard assure: --contract judges the certified engine (and counts the plain one's breaches as its canary); drop --engine {}",
+            hunted.name()
+        );
+        return Err(ExitCode::from(2));
+    }
+    Ok(hunted)
+}
+
+/// What a paper-A campaign draws and judges: case k of `seed` from `space`, for the k of
+/// shard i of N (k mod N = i), with the full classification or the contract alone.
+struct Campaign {
+    seed: u64,
+    shard_i: u64,
+    shard_n: u64,
+    space: Space,
+    contract: bool,
+    hunted: Hunted,
+}
+
+/// A case kept for its class: its index, verdict, the case and its generator mode.
+type Found = (u64, Verdict, RawCase, &'static str);
+
+/// Runs the shard's `mine` cases on `threads` threads: the counts (seed and shard not
+/// yet filled in), and the cases kept per class, by index.
+fn run_cases(
+    c: &Campaign,
+    mine: u64,
+    threads: usize,
+    progress: &CampaignProgress,
+) -> (Report, Vec<Found>) {
+    let next = AtomicU64::new(0);
+    let report = Mutex::new(Report {
+        seed: c.seed,
+        ..Default::default()
+    });
+    let interesting: Mutex<Vec<Found>> = Mutex::new(Vec::new());
+    std::thread::scope(|scope| {
+        for _ in 0..threads {
+            scope.spawn(|| {
+                let mut local = Report::default();
+                loop {
+                    let j = next.fetch_add(1, Ordering::Relaxed);
+                    if j >= mine {
+                        break;
+                    }
+                    let failed = one_case(c, j * c.shard_n + c.shard_i, &mut local, &interesting);
+                    progress.inc(failed);
+                }
+                if let Ok(mut r) = report.lock() {
+                    r.absorb(&local);
+                }
+            });
+        }
+    });
+    let report = report.into_inner().unwrap_or_default();
+    let mut found = interesting.into_inner().unwrap_or_default();
+    found.sort_by_key(|(k, _, _, _)| *k);
+    (report, found)
+}
+
+/// Draws and judges case `k` into `local` (a rejected case is said and counted), keeping
+/// it in `interesting` when its class is kept; whether it is a failure of the campaign.
+fn one_case(c: &Campaign, k: u64, local: &mut Report, interesting: &Mutex<Vec<Found>>) -> bool {
+    let (raw, mode) = campaign_case(c.seed, k, &c.space);
+    let judged = if c.contract {
+        check_contract(&raw).map(|v| {
+            local.add_contract(&v);
+            v.is_breach()
+        })
+    } else {
+        compare_as(&raw, c.hunted).map(|v| {
+            local.add(&v, mode, bucket(&raw));
+            let failed = v.is_failure();
+            if is_kept_class(v.class) {
+                if let Ok(mut g) = interesting.lock() {
+                    keep_lowest(
+                        &mut g,
+                        (k, v, raw, mode),
+                        KEEP_PER_CLASS,
+                        |f| f.0,
+                        |f| f.1.class,
+                    );
+                }
+            }
+            failed
+        })
+    };
+    judged.unwrap_or_else(|e| {
+        // The generator's cases are valid by construction: say which one was not, so
+        // that it can be reproduced.
+        eprintln!("polyguard assure: case {k} rejected: {e:?}");
+        local.rejected += 1;
+        false
+    })
 }
 
 /// `assure --paper b`.
@@ -472,30 +521,15 @@ fn run_paper_b(args: &AssureArgs) -> ExitCode {
         eprintln!("polyguard assure: --contract and --aim are paper A's; drop them with --paper b");
         return ExitCode::from(2);
     }
-    let threads = threads(args);
     assure_b::run(
         args.cases,
         args.seed,
-        threads,
+        threads(args),
         &args.out,
         args.shard.unwrap_or((0, 1)),
         args.quiet,
         engine,
     )
-}
-
-/// The campaign's progress bar over `cases` (hidden with `--quiet`).
-pub fn progress_bar(cases: u64, quiet: bool) -> indicatif::ProgressBar {
-    let bar = if quiet {
-        indicatif::ProgressBar::hidden()
-    } else {
-        indicatif::ProgressBar::new(cases)
-    };
-    bar.set_style(
-        indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} {per_sec} eta {eta} {msg}")
-            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
-    );
-    bar
 }
 
 /// `--threads`, or one per core.
@@ -507,19 +541,6 @@ fn threads(args: &AssureArgs) -> usize {
                 .unwrap_or(1)
         })
         .max(1)
-}
-
-/// Writes `DIR/report.json` (either paper's report); exit 2 when it cannot.
-pub fn write_report<T: serde::Serialize>(report: &T, out: &Path) -> Result<(), ExitCode> {
-    let path = out.join("report.json");
-    let json = serde_json::to_string_pretty(report).map_err(|e| {
-        eprintln!("polyguard assure: cannot serialise the report: {e}");
-        ExitCode::from(2)
-    })?;
-    fs::write(&path, json + "\n").map_err(|e| {
-        eprintln!("polyguard assure: cannot write {}: {e}", path.display());
-        ExitCode::from(2)
-    })
 }
 
 /// Writes `DIR/report.json`, then prints the summary. The report is written first and a
@@ -708,6 +729,10 @@ mod tests {
     #[test]
     fn aimed_at_the_ends_cases_go_there() {
         assert_eq!(parse_aim("ends=all"), Ok(Space::FULL.with_ends(Ends::All)));
+        assert_eq!(
+            parse_aim("ends=none"),
+            Ok(Space::FULL.with_ends(Ends::None))
+        );
         assert!(parse_aim("ends=middle").is_err());
         assert_eq!(Space::FULL.label(), "path=1e-3..1e7,buff=1e-12..1e0");
         for (name, want_tiny) in [("tiny", Some(true)), ("huge", Some(false)), ("all", None)] {
@@ -752,6 +777,18 @@ mod tests {
             (50..=150).contains(&moved),
             "{moved} of {n} moved by default"
         );
+        // ends=none moves none, and its cases are the default's wherever the default
+        // left a case at its scale
+        let none = parse_aim("ends=none").expect("a valid aim");
+        assert!(none.label().ends_with(",ends=none"));
+        for k in 0..n {
+            let kept = any_case_in(&mut SplitMix(case_seed(3, k)), &none);
+            assert_eq!(kept.scale_exp, 0, "case {k} moved with ends=none");
+            let default = any_case_in(&mut SplitMix(case_seed(3, k)), &Space::FULL);
+            if default.scale_exp == 0 {
+                assert_eq!(kept.raw, default.raw, "case {k}");
+            }
+        }
     }
 
     #[test]

@@ -9,6 +9,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Mutex;
 use std::time::Instant;
 
+use super::assure_common::{keep_lowest, write_report, CampaignProgress};
 use polyguard_earth::conflict::{geom, pipeline, Object};
 use polyguard_earth::reference::truth::Outcome;
 use polyguard_earth::scenario::{self, Scenario};
@@ -255,7 +256,7 @@ pub fn run(
         return ExitCode::from(2);
     }
     let mine: u64 = (0..cases).filter(|k| k % shard_n == shard_i).count() as u64;
-    let bar = super::assure::progress_bar(mine, quiet);
+    let progress = CampaignProgress::new(mine, quiet);
     let next = AtomicU64::new(0);
     let report = Mutex::new(ReportB {
         paper: "b".into(),
@@ -279,6 +280,7 @@ pub fn run(
                     }
                     let k = j * shard_n + shard_i;
                     let c = campaign_case(seed, k);
+                    let mut failed = false;
                     match judge(&c, engine) {
                         Ok((v, sc, _, ne, nt)) => {
                             local.cases += 1;
@@ -291,9 +293,11 @@ pub fn run(
                                 .or_default()
                                 .entry(v.class)
                                 .or_insert(0) += 1;
+                            failed = v.class.is_failure();
                             if !matches!(v.class, ClassB::Agree | ClassB::NearAlarm) {
                                 if let Ok(mut g) = kept.lock() {
-                                    keep(&mut g, (k, c, v, sc));
+                                    let f = (k, c, v, sc);
+                                    keep_lowest(&mut g, f, KEEP_PER_CLASS, |f| f.0, |f| f.2.class);
                                 }
                             }
                         }
@@ -305,7 +309,7 @@ pub fn run(
                             local.rejected += 1;
                         }
                     }
-                    bar.inc(1);
+                    progress.inc(failed);
                 }
                 if let Ok(mut r) = report.lock() {
                     r.absorb(&local);
@@ -313,7 +317,7 @@ pub fn run(
             });
         }
     });
-    bar.finish_and_clear();
+    progress.finish();
     let mut report = report.into_inner().unwrap_or_default();
     report.wall_seconds = start.elapsed().as_secs_f64();
     let mut found = kept.into_inner().unwrap_or_default();
@@ -327,24 +331,9 @@ pub fn run(
     finish(&report, out)
 }
 
-/// Keeps the [`KEEP_PER_CLASS`] lowest indices of each class (whatever the threads'
-/// order, so that shards merge into the whole run's kept cases).
-fn keep(g: &mut Vec<(u64, CaseB, VerdictB, Scenario)>, f: (u64, CaseB, VerdictB, Scenario)) {
-    let same: Vec<usize> = (0..g.len())
-        .filter(|&x| g[x].2.class == f.2.class)
-        .collect();
-    if same.len() < KEEP_PER_CLASS {
-        g.push(f);
-    } else if let Some(&worst) = same.iter().max_by_key(|&&x| g[x].0) {
-        if g[worst].0 > f.0 {
-            g[worst] = f;
-        }
-    }
-}
-
 /// Writes `report.json`, prints the summary; exit 1 on failures (or rejected cases).
 pub fn finish(report: &ReportB, out: &Path) -> ExitCode {
-    if let Err(code) = super::assure::write_report(report, out) {
+    if let Err(code) = write_report(report, out) {
         return code;
     }
     let path = out.join("report.json");

@@ -65,8 +65,9 @@ pub struct ConflictsArgs {
     /// No progress display.
     #[arg(long)]
     pub quiet: bool,
-    /// Leave out the conflict regions (`"region": null`) and the paper's projection
-    /// windows: the answer of a 10⁶-object scenario is otherwise gigabytes of coordinates.
+    /// Leave out the conflict regions (no `region` key) and the paper's projection windows
+    /// (`"projection_windows": null`): the answer of a 10⁶-object scenario is otherwise
+    /// gigabytes of coordinates.
     #[arg(long)]
     pub no_regions: bool,
 }

@@ -137,7 +137,11 @@ struct Group {
     nanos: u128,
 }
 
-fn group_key(case: &Case) -> (&'static str, &'static str, usize) {
+/// A timing group: dimension, static or warping, number of vertices.
+type GroupKey = (&'static str, &'static str, usize);
+
+/// The timing group of a case.
+fn group_key(case: &Case) -> GroupKey {
     let dim = if case.point().z.is_some() { "3D" } else { "2D" };
     let shape = if case.polygon().statically_shaped() {
         "static"
@@ -305,7 +309,7 @@ pub fn process<R: BufRead, W: Write>(
     let mut buf = Vec::new();
     let mut line_no = 0usize;
     let mut failed = 0u64;
-    let mut groups: BTreeMap<(&'static str, &'static str, usize), Group> = BTreeMap::new();
+    let mut groups: BTreeMap<GroupKey, Group> = BTreeMap::new();
     let mut worker: Option<Worker> = None;
     let ask = Ask {
         engine: args.engine,
@@ -317,7 +321,6 @@ pub fn process<R: BufRead, W: Write>(
             break;
         }
         line_no += 1;
-        let mut obj = Map::new();
         let text = match std::str::from_utf8(&buf) {
             Ok(t) => t,
             Err(_) => {
@@ -331,70 +334,20 @@ pub fn process<R: BufRead, W: Write>(
             continue;
         }
         let parsed = parse_line_with(text, line_no, args.kappa);
+        let mut obj = Map::new();
         obj.insert("id".into(), parsed.id);
-        if let Some(limit) = args.case_timeout {
-            let result = match parsed.case {
-                Err(e) => Err(e.to_string()),
-                Ok(case) => {
-                    let w = match worker.take() {
-                        Some(w) => w,
-                        None => Worker::spawn()?,
-                    };
-                    match w.answer(case, ask, args.repeat, limit) {
-                        Some(r) => {
-                            worker = Some(w);
-                            r
-                        }
-                        None => Err(format!(
-                            "case: no answer within {limit} s (--case-timeout); the case was abandoned"
-                        )),
-                    }
-                }
-            };
-            match result {
-                Ok(fields) => obj.extend(fields),
-                Err(e) => {
-                    failed += 1;
-                    obj.insert("line".into(), line_no.into());
-                    obj.insert("error".into(), e.into());
-                }
+        let result = match (parsed.case, args.case_timeout) {
+            (Err(e), _) => Err(e.to_string()),
+            (Ok(case), Some(limit)) => answer_within(case, ask, args.repeat, limit, &mut worker)?,
+            (Ok(case), None) => answer_here(&case, args, ask, &mut groups),
+        };
+        match result {
+            Ok(fields) => obj.extend(fields),
+            Err(e) => {
+                failed += 1;
+                obj.insert("line".into(), line_no.into());
+                obj.insert("error".into(), e.into());
             }
-            writeln!(out, "{}", Value::Object(obj))?;
-            continue;
-        }
-        let result = parsed.case.map_err(|e| e.to_string()).and_then(|case| {
-            // The engine asked for is the one timed: its decision alone for f64 and plain,
-            // the whole answer (conversion to rationals included) for exact and truth.
-            let once = |case: &Case| match args.engine {
-                Engine::F64 => {
-                    black_box(api::detected(black_box(case)));
-                }
-                Engine::Plain => {
-                    black_box(api::detected_plain(black_box(case)));
-                }
-                Engine::Exact | Engine::Truth => {
-                    let _ = black_box(answer(black_box(case), ask, &mut Map::new()));
-                }
-            };
-            if args.timing {
-                let start = Instant::now();
-                for _ in 0..args.repeat {
-                    once(&case);
-                }
-                let g = groups.entry(group_key(&case)).or_default();
-                g.calls += u64::from(args.repeat);
-                g.nanos += start.elapsed().as_nanos();
-            } else {
-                for _ in 1..args.repeat {
-                    once(&case);
-                }
-            }
-            answer(&case, ask, &mut obj)
-        });
-        if let Err(e) = result {
-            failed += 1;
-            obj.insert("line".into(), line_no.into());
-            obj.insert("error".into(), e.into());
         }
         writeln!(out, "{}", Value::Object(obj))?;
     }
@@ -404,7 +357,71 @@ pub fn process<R: BufRead, W: Write>(
     Ok(failed)
 }
 
-fn report_timing(groups: &BTreeMap<(&'static str, &'static str, usize), Group>) {
+/// A valid case answered on the worker thread (`--case-timeout`): its fields, or an
+/// error when no answer came within `limit` seconds (the worker is then abandoned and
+/// the next case gets a new one).
+fn answer_within(
+    case: Case,
+    ask: Ask,
+    repeat: u32,
+    limit: f64,
+    worker: &mut Option<Worker>,
+) -> io::Result<Reply> {
+    let w = match worker.take() {
+        Some(w) => w,
+        None => Worker::spawn()?,
+    };
+    Ok(match w.answer(case, ask, repeat, limit) {
+        Some(r) => {
+            *worker = Some(w);
+            r
+        }
+        None => Err(format!(
+            "case: no answer within {limit} s (--case-timeout); the case was abandoned"
+        )),
+    })
+}
+
+/// A valid case answered on this thread, `--repeat` times, timed per group with
+/// `--timing`: its fields (the answer is computed once more, untimed, to be written).
+fn answer_here(
+    case: &Case,
+    args: &DetectArgs,
+    ask: Ask,
+    groups: &mut BTreeMap<GroupKey, Group>,
+) -> Reply {
+    // The engine asked for is the one timed: its decision alone for f64 and plain,
+    // the whole answer (conversion to rationals included) for exact and truth.
+    let once = |case: &Case| match args.engine {
+        Engine::F64 => {
+            black_box(api::detected(black_box(case)));
+        }
+        Engine::Plain => {
+            black_box(api::detected_plain(black_box(case)));
+        }
+        Engine::Exact | Engine::Truth => {
+            let _ = black_box(answer(black_box(case), ask, &mut Map::new()));
+        }
+    };
+    if args.timing {
+        let start = Instant::now();
+        for _ in 0..args.repeat {
+            once(case);
+        }
+        let g = groups.entry(group_key(case)).or_default();
+        g.calls += u64::from(args.repeat);
+        g.nanos += start.elapsed().as_nanos();
+    } else {
+        for _ in 1..args.repeat {
+            once(case);
+        }
+    }
+    let mut fields = Map::new();
+    answer(case, ask, &mut fields).map(|()| fields)
+}
+
+/// Prints `--timing`'s table: per group, the calls and the time per call.
+fn report_timing(groups: &BTreeMap<GroupKey, Group>) {
     eprintln!(
         "{:<4} {:<8} {:>9} {:>12} {:>12}",
         "dim", "shape", "vertices", "calls", "ns/call"

@@ -54,7 +54,8 @@ pub struct DetectBatchArgs {
     /// With --generate: 3D points (with a height) and polygons (with a slab).
     #[arg(long, requires = "generate")]
     pub three_d: bool,
-    /// No summary on standard error.
+    /// No summary on standard error (with --generate: no note of the options to answer
+    /// with).
     #[arg(long)]
     pub quiet: bool,
 }

@@ -1,6 +1,5 @@
-//! `polyguard detect-earth [FILE]`: paper A's detection on lon/lat input (issue 13, item
-//! 6), one JSON line per encounter (docs/earth-cases.md), answered by
-//! `polyguard_earth::paper_a`.
+//! `polyguard detect-earth [FILE]`: paper A's detection on lon/lat input, one JSON line
+//! per encounter (docs/earth-cases.md), answered by `polyguard_earth::paper_a`.
 
 use std::fs::File;
 use std::io::{self, BufRead, BufReader, BufWriter, Write};

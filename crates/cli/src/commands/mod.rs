@@ -1,6 +1,7 @@
 //! The command-line tool's subcommands, one module each.
 pub mod assure;
 pub mod assure_b;
+pub mod assure_common;
 pub mod conflicts;
 pub mod detect;
 pub mod detect_batch;

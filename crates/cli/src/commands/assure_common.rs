@@ -1,0 +1,209 @@
+//! What both papers' campaigns share (`polyguard assure`, `assure --paper b`): the
+//! progress shown on standard error while the cases run, and the report file.
+
+use std::fs;
+use std::io::IsTerminal;
+use std::path::Path;
+use std::process::ExitCode;
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::Mutex;
+use std::time::{Duration, Instant};
+
+/// When standard error is not a terminal, a progress line is printed at least this often
+/// (and at every tenth of the cases).
+const LINE_EVERY: Duration = Duration::from_secs(30);
+
+/// A campaign's progress over its cases, on standard error: a bar on a terminal, plain
+/// lines when standard error is a pipe or a file (a bar would leave nothing to read for
+/// minutes), nothing with `--quiet`. Shared by the worker threads.
+pub struct CampaignProgress {
+    bar: indicatif::ProgressBar,
+    lines: Option<Lines>,
+}
+
+/// The plain progress lines: one at every tenth of the cases and at least one every
+/// [`LINE_EVERY`], each `polyguard assure: 300/600 cases (50 %), 31 s, 0 failures so far`.
+struct Lines {
+    total: u64,
+    start: Instant,
+    done: AtomicU64,
+    failures: AtomicU64,
+    /// The count of cases at which the next tenth is reached.
+    next_mark: AtomicU64,
+    /// Milliseconds from `start` to the last line printed.
+    last_ms: AtomicU64,
+    /// Held while a line is printed, so that two threads do not print the same mark.
+    printing: Mutex<()>,
+}
+
+impl CampaignProgress {
+    /// The progress of `cases` cases: a bar when standard error is a terminal, lines
+    /// otherwise, nothing when `quiet`.
+    pub fn new(cases: u64, quiet: bool) -> CampaignProgress {
+        let terminal = std::io::stderr().is_terminal();
+        let bar = if quiet || !terminal {
+            indicatif::ProgressBar::hidden()
+        } else {
+            indicatif::ProgressBar::new(cases)
+        };
+        bar.set_style(
+            indicatif::ProgressStyle::with_template(
+                "{bar:40} {pos}/{len} {per_sec} eta {eta} {msg}",
+            )
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        );
+        let lines = (!quiet && !terminal && cases > 0).then(|| Lines {
+            total: cases,
+            start: Instant::now(),
+            done: AtomicU64::new(0),
+            failures: AtomicU64::new(0),
+            next_mark: AtomicU64::new(tenth_mark(cases, 0)),
+            last_ms: AtomicU64::new(0),
+            printing: Mutex::new(()),
+        });
+        CampaignProgress { bar, lines }
+    }
+
+    /// One more case done; `failed` when it is a failure of the campaign (a missed
+    /// detection, a far false alarm, a contract breach, …).
+    pub fn inc(&self, failed: bool) {
+        self.bar.inc(1);
+        if let Some(l) = &self.lines {
+            l.inc(failed);
+        }
+    }
+
+    /// The cases are done: the bar is cleared (the lines have said 100 % already).
+    pub fn finish(&self) {
+        self.bar.finish_and_clear();
+    }
+}
+
+impl Lines {
+    /// Counts one case, and prints a line when it reaches the next tenth or when
+    /// [`LINE_EVERY`] has passed since the last line (the 100 % line only once).
+    fn inc(&self, failed: bool) {
+        if failed {
+            self.failures.fetch_add(1, Ordering::Relaxed);
+        }
+        let done = self.done.fetch_add(1, Ordering::Relaxed) + 1;
+        let now_ms = self.start.elapsed().as_millis() as u64;
+        let due_by_time = now_ms.saturating_sub(self.last_ms.load(Ordering::Relaxed))
+            >= LINE_EVERY.as_millis() as u64;
+        if done < self.next_mark.load(Ordering::Relaxed) && !due_by_time {
+            return;
+        }
+        let Ok(_guard) = self.printing.lock() else {
+            return;
+        };
+        // another thread may have printed this mark while this one waited
+        let now_ms = self.start.elapsed().as_millis() as u64;
+        let done = self.done.load(Ordering::Relaxed);
+        let mark = self.next_mark.load(Ordering::Relaxed);
+        let last = self.last_ms.load(Ordering::Relaxed);
+        let due_by_time = now_ms.saturating_sub(last) >= LINE_EVERY.as_millis() as u64;
+        // the last line is the 100 % mark's, printed once
+        if done < mark && !(due_by_time && done < self.total) {
+            return;
+        }
+        // the count may be past the mark (threads run on while one prints): the line
+        // says the count
+        eprintln!(
+            "polyguard assure: {done}/{} cases ({} %), {} s, {} failures so far",
+            self.total,
+            done * 100 / self.total,
+            now_ms / 1000,
+            self.failures.load(Ordering::Relaxed)
+        );
+        self.next_mark
+            .store(tenth_mark(self.total, done), Ordering::Relaxed);
+        self.last_ms.store(now_ms, Ordering::Relaxed);
+    }
+}
+
+/// The first count above `done` that reaches a tenth of `total` (⌈total·i/10⌉ for the
+/// least such i ≤ 10), or `u64::MAX` past the last.
+fn tenth_mark(total: u64, done: u64) -> u64 {
+    (1..=10u64)
+        .map(|i| (total * i).div_ceil(10))
+        .find(|&m| m > done)
+        .unwrap_or(u64::MAX)
+}
+
+/// Keeps, of each class, the `per_class` items of the lowest case indices, whatever the
+/// threads' order, so that the shards of a campaign merge into exactly the whole run's
+/// kept cases. `index` is an item's case index, `class` its class.
+pub fn keep_lowest<T, C: PartialEq>(
+    kept: &mut Vec<T>,
+    item: T,
+    per_class: usize,
+    index: impl Fn(&T) -> u64,
+    class: impl Fn(&T) -> C,
+) {
+    let same: Vec<usize> = (0..kept.len())
+        .filter(|&x| class(&kept[x]) == class(&item))
+        .collect();
+    if same.len() < per_class {
+        kept.push(item);
+    } else if let Some(&worst) = same.iter().max_by_key(|&&x| index(&kept[x])) {
+        if index(&kept[worst]) > index(&item) {
+            kept[worst] = item;
+        }
+    }
+}
+
+/// Writes `DIR/report.json` (either paper's report); exit 2 when it cannot.
+pub fn write_report<T: serde::Serialize>(report: &T, out: &Path) -> Result<(), ExitCode> {
+    let path = out.join("report.json");
+    let json = serde_json::to_string_pretty(report).map_err(|e| {
+        eprintln!("polyguard assure: cannot serialise the report: {e}");
+        ExitCode::from(2)
+    })?;
+    fs::write(&path, json + "\n").map_err(|e| {
+        eprintln!("polyguard assure: cannot write {}: {e}", path.display());
+        ExitCode::from(2)
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The marks are the tenths of the campaign, rounded up, each once.
+    #[test]
+    fn progress_lines_fall_on_the_tenths() {
+        let marks = |total: u64| {
+            let mut out = vec![];
+            let mut m = tenth_mark(total, 0);
+            while m != u64::MAX {
+                out.push(m);
+                m = tenth_mark(total, m);
+            }
+            out
+        };
+        assert_eq!(marks(100), (1..=10).map(|i| 10 * i).collect::<Vec<_>>());
+        assert_eq!(marks(25), vec![3, 5, 8, 10, 13, 15, 18, 20, 23, 25]);
+        assert_eq!(marks(3), vec![1, 2, 3]);
+        assert_eq!(tenth_mark(60_000, 30_000), 36_000);
+    }
+
+    /// Whatever the order the items come in, the lowest indices of each class stay.
+    #[test]
+    fn the_lowest_indices_of_each_class_are_kept() {
+        let items = [
+            (9, 'a'),
+            (3, 'b'),
+            (7, 'a'),
+            (1, 'a'),
+            (8, 'b'),
+            (2, 'b'),
+            (5, 'a'),
+        ];
+        let mut kept = vec![];
+        for it in items {
+            keep_lowest(&mut kept, it, 2, |x| x.0, |x| x.1);
+        }
+        kept.sort();
+        assert_eq!(kept, vec![(1, 'a'), (2, 'b'), (3, 'b'), (5, 'a')]);
+    }
+}

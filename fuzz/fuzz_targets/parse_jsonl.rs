@@ -1,13 +1,14 @@
-//! Arbitrary bytes into the case parser and `polyguard detect`'s line loop: never a panic.
-//! A case that parses must also survive the round trip through the case format bit for bit.
+//! Arbitrary bytes into the case parser and the answer format: never a panic. A case that
+//! parses must survive the round trip through the case format bit for bit, and get an
+//! answer from the f64 engine with its entry-time enclosure (docs/cases.md, "Answers").
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use polyguard_harness::case::parse_line;
-use polyguard_cli::commands::detect::{process, DetectArgs, Engine};
-use polyguard_harness::case::RawCase;
+use polyguard_harness::answer::{answer, Ask, Engine};
+use polyguard_harness::case::{parse_line, RawCase};
+use serde_json::Map;
 
-/// Lines handed to `process` at most (each runs the engine once).
+/// Lines read at most (each runs the engine once).
 const MAX_LINES: usize = 8;
 
 fuzz_target!(|data: &[u8]| {
@@ -21,26 +22,15 @@ fuzz_target!(|data: &[u8]| {
                 Ok(back) => assert_eq!(back, case, "the case format does not round-trip"),
                 Err(e) => panic!("a valid case, written back, does not parse: {e}"),
             }
+            let ask = Ask {
+                engine: Engine::F64,
+                time: true,
+            };
+            let mut out = Map::new();
+            if let Err(e) = answer(&case, ask, &mut out) {
+                panic!("the f64 engine gave no answer to a valid case: {e}");
+            }
+            assert!(out.contains_key("detected") && out.contains_key("entry"));
         }
-    }
-    // The raw bytes (not UTF-8 cleaned) through the streaming loop with the f64 engine.
-    let end = data
-        .iter()
-        .enumerate()
-        .filter(|(_, &b)| b == b'\n')
-        .nth(MAX_LINES - 1)
-        .map_or(data.len(), |(i, _)| i);
-    let args = DetectArgs {
-        file: None,
-        engine: Engine::F64,
-        repeat: 1,
-        timing: false,
-        kappa: polyguard_harness::case::DEFAULT_KAPPA_DEG,
-        case_timeout: None,
-        time: false,
-    };
-    let mut out = Vec::new();
-    if let Err(e) = process(&data[..end], &mut out, &args) {
-        panic!("process failed on an in-memory reader: {e}");
     }
 });

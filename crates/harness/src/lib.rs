@@ -9,12 +9,14 @@
 //! - [`gen`]: boundary-biased case generators over a seeded or byte-fed [`gen::Source`];
 //!   [`workload`]: the uniform benchmark workload (no threshold sought); [`batch`]: the
 //!   seeded batch workload (N points, M polygons) of `detect-batch`.
+//! - [`answer`]: one case answered as the answer format says (docs/cases.md).
 //! - [`classify`]: the verdict of one case (agree, float divergence, missed detection, …).
 //! - [`report`]: counts per function, mode and class; shards merge exactly.
 //! - [`minimise`]: a smaller case of the same class. [`svg`]: its picture.
 //! - [`paper_b`]: paper B's hunt (scenario generator, judge, pictures).
 #![deny(missing_docs)]
 
+pub mod answer;
 pub mod batch;
 pub mod case;
 pub mod classify;

@@ -11,13 +11,12 @@ use std::time::Instant;
 use serde_json::{json, Map, Value};
 
 use polyguard::api::{self, Case};
+use polyguard_harness::answer::{answer, Ask, Engine};
 use polyguard_harness::case::parse_line_with;
-use polyguard_harness::case::RawCase;
-use polyguard_harness::classify::Exact;
 
-/// Which implementation answers.
+/// Which implementation answers (the command line's names for [`Engine`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum Engine {
+pub enum EngineArg {
     /// The certified f64 engine (paper A in floating point): the product.
     F64,
     /// The plain f64 transcription of paper A, without certificate: for comparison only
@@ -29,6 +28,17 @@ pub enum Engine {
     Truth,
 }
 
+impl From<EngineArg> for Engine {
+    fn from(e: EngineArg) -> Engine {
+        match e {
+            EngineArg::F64 => Engine::F64,
+            EngineArg::Plain => Engine::Plain,
+            EngineArg::Exact => Engine::Exact,
+            EngineArg::Truth => Engine::Truth,
+        }
+    }
+}
+
 /// Arguments of `polyguard detect`.
 #[derive(Debug, clap::Args)]
 pub struct DetectArgs {
@@ -36,7 +46,7 @@ pub struct DetectArgs {
     pub file: Option<PathBuf>,
     /// Which implementation answers.
     #[arg(long, value_enum, default_value = "f64")]
-    pub engine: Engine,
+    pub engine: EngineArg,
     /// Run each case this many times (for --timing); the answer is printed once.
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..))]
     pub repeat: u32,
@@ -72,14 +82,6 @@ fn parse_timeout(s: &str) -> Result<f64, String> {
 /// times.
 type Job = (Case, Ask, u32);
 
-/// The engine asked for, and whether `--time` was.
-#[derive(Clone, Copy, Debug)]
-pub struct Ask {
-    /// The engine.
-    pub engine: Engine,
-    /// `--time`.
-    pub time: bool,
-}
 /// Its answer: the fields after `id`, or the error.
 type Reply = Result<Map<String, Value>, String>;
 
@@ -151,96 +153,6 @@ fn group_key(case: &Case) -> GroupKey {
     (dim, shape, case.polygon().vertices().len())
 }
 
-/// The exact case the oracle reads: the rationals the f64 inputs denote.
-fn exact_case(case: &Case) -> Result<polyguard_oracle::ExactCase<Exact>, String> {
-    RawCase::from_api(case)
-        .exact::<Exact>()
-        .map_err(|e| e.to_string())
-}
-
-/// `well_formed` and, when false, `well_formed_reason`: which §II.J rule failed.
-fn well_formed_fields(out: &mut Map<String, Value>, fault: Option<impl std::fmt::Display>) {
-    out.insert("well_formed".into(), fault.is_none().into());
-    if let Some(f) = fault {
-        out.insert("well_formed_reason".into(), f.to_string().into());
-    }
-}
-
-/// §II.J decided exactly (the exact and truth engines): κ enters as the f64 cos κ that
-/// the f64 engine uses, read as the rational it denotes.
-fn exact_well_formed(
-    case: &Case,
-    exact: &polyguard_oracle::ExactCase<Exact>,
-) -> Result<Option<polyguard_oracle::well_formed::Fault>, String> {
-    let cos_kappa = polyguard_oracle::convert::f64_to_exact::<Exact>(case.params().cos_kappa())
-        .ok_or("kappa: cos κ is not finite")?;
-    Ok(polyguard_oracle::well_formed::well_formed_fault(
-        &exact.vertices,
-        &exact.buff,
-        &cos_kappa,
-    ))
-}
-
-/// `entry`, and `entry_lo`, `entry_hi` unless it is "never": the f64 enclosure of the
-/// first-entry time (`--time`).
-fn entry_fields(out: &mut Map<String, Value>, e: polyguard::entry::EntryTime) {
-    out.insert("entry".into(), e.name().into());
-    if let Some((lo, hi)) = e.enclosure() {
-        out.insert("entry_lo".into(), lo.into());
-        out.insert("entry_hi".into(), hi.into());
-    }
-}
-
-/// Answers one valid case with the chosen engine; the fields after `id`.
-fn answer(case: &Case, ask: Ask, out: &mut Map<String, Value>) -> Result<(), String> {
-    match ask.engine {
-        Engine::F64 => {
-            let d = api::detect(case);
-            out.insert("detected".into(), d.detected.into());
-            out.insert("kind".into(), d.kind.name().into());
-            out.insert("decided_by".into(), d.method.name().into());
-            well_formed_fields(out, d.well_formed_fault);
-            if ask.time {
-                entry_fields(out, api::detect_time(case));
-            }
-        }
-        Engine::Plain => {
-            out.insert("detected".into(), api::detected_plain(case).into());
-            out.insert("decided_by".into(), case.method().name().into());
-            well_formed_fields(out, api::detect(case).well_formed_fault);
-        }
-        Engine::Exact => {
-            let exact = exact_case(case)?;
-            let a = polyguard_oracle::paper_detect(&exact);
-            out.insert("detected".into(), a.detected.into());
-            out.insert("decided_by".into(), a.method.name().into());
-            well_formed_fields(out, exact_well_formed(case, &exact)?);
-        }
-        Engine::Truth => {
-            let exact = exact_case(case)?;
-            match polyguard_oracle::truth(&exact) {
-                polyguard_oracle::Truth::Enters { entry_time } => {
-                    out.insert("detected".into(), true.into());
-                    out.insert(
-                        "entry_time".into(),
-                        polyguard_oracle::convert::time_to_f64(&entry_time).into(),
-                    );
-                    out.insert("entry_time_exact".into(), entry_time.exact_text().into());
-                }
-                polyguard_oracle::Truth::Misses => {
-                    out.insert("detected".into(), false.into());
-                }
-                polyguard_oracle::Truth::Undefined { reason } => {
-                    return Err(format!("truth undefined: {reason}"));
-                }
-            }
-            out.insert("decided_by".into(), "truth".into());
-            well_formed_fields(out, exact_well_formed(case, &exact)?);
-        }
-    }
-    Ok(())
-}
-
 fn open(file: &Option<PathBuf>) -> io::Result<Box<dyn BufRead>> {
     match file {
         // a directory opens on Unix and fails only at the first read: say so up front
@@ -255,7 +167,7 @@ fn open(file: &Option<PathBuf>) -> io::Result<Box<dyn BufRead>> {
 
 /// Runs `polyguard detect`: one answer line per non-blank input line, in order.
 pub fn run(args: &DetectArgs) -> ExitCode {
-    if args.time && args.engine != Engine::F64 {
+    if args.time && args.engine != EngineArg::F64 {
         eprintln!("polyguard detect: --time is answered by the f64 engine only (the truth engine gives entry_time without it)");
         return ExitCode::from(2);
     }
@@ -312,7 +224,7 @@ pub fn process<R: BufRead, W: Write>(
     let mut groups: BTreeMap<GroupKey, Group> = BTreeMap::new();
     let mut worker: Option<Worker> = None;
     let ask = Ask {
-        engine: args.engine,
+        engine: args.engine.into(),
         time: args.time,
     };
     loop {
@@ -392,7 +304,7 @@ fn answer_here(
 ) -> Reply {
     // The engine asked for is the one timed: its decision alone for f64 and plain,
     // the whole answer (conversion to rationals included) for exact and truth.
-    let once = |case: &Case| match args.engine {
+    let once = |case: &Case| match ask.engine {
         Engine::F64 => {
             black_box(api::detected(black_box(case)));
         }

@@ -1,4 +1,4 @@
-//! Criterion bench of batch detection (`polyguard::batch`, issue 13), group `batch`:
+//! Criterion bench of batch detection (`polyguard::batch`), group `batch`:
 //! 10⁴ points against 10³ polygons of 8 vertices at the harness's density
 //! (`polyguard_harness::batch`: polygons about 1 across, one per 1000 square units
 //! in a 1000 × 1000 square, a quarter warping; points at 2 to 5 units per time unit for

@@ -2,8 +2,8 @@
 //! counterclockwise polygons of size ~1000, lookahead 300, BUFF 0.01, F 1e-4, about half
 //! the cases hitting. Groups: detect_same_2d, detect_diff_2d (n = 4 … 64) and detect_3d
 //! (n = 8, static and warping), each timed for the certified engine (`certified`) and,
-//! in the same run, for the plain f64 transcription it replaced (`plain`, the engine of
-//! commit b0875a2, kept behind feature `plain`).
+//! in the same run, for the plain f64 transcription it replaced (`plain`, paper A
+//! transcribed without error bounds, kept behind feature `plain`).
 //!
 //! Group `detect_time`: the f64 enclosure of the first-entry time (`entry::first_entry`)
 //! on the same workloads (n = 8 and 32, static and warping), beside the certified

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Large-polygon detection cases for timing `polyguard detect --engine truth`
-(issue 13, item 3): for each vertex count, a convex circle and a non-convex star, at
+"""Large-polygon detection cases for timing `polyguard detect --engine truth`:
+for each vertex count, a convex circle and a non-convex star, at
 rest, translating and warping, 2D and 3D, with point tracks that enter, graze a vertex
 exactly and miss by a hair. One JSON line per case (docs/cases.md), on standard output.
 

@@ -1,5 +1,5 @@
 //! Batch detection: N moving points against M moving polygons in one call (extends paper
-//! A §II.H, §II.I and §III from one pair to many; issue 13).
+//! A §II.H, §II.I and §III from one pair to many).
 //!
 //! Two phases:
 //!

@@ -1,4 +1,4 @@
-//! Batch detection (`polyguard::batch`, issue 13) against the pairwise engine: on seeded
+//! Batch detection (`polyguard::batch`) against the pairwise engine: on seeded
 //! workloads with touching and nearly touching pairs, 2D and 3D, rigid, warping and
 //! collapsing polygons, `detect_batch` returns the pairs for which `api::detected` says
 //! yes, with the same kind and method, but for conservative pairwise yeses that paper A

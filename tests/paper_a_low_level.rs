@@ -2,7 +2,7 @@
 //! `detect_diff_2d` and `detect_3d` called on slices, in the case's own (absolute)
 //! coordinates, as a user of the `no_std` path calls them.
 //!
-//! At b0875a2 only `api::Case::new` translated the case to the point, so the slice
+//! Once only `api::Case::new` translated the case to the point, so the slice
 //! functions missed what `api::detect` found: `polyguard::detect_3d` answered false on
 //! `missed_detection-2486702` (tests/regressions/assure-seed7.jsonl), where paper A in
 //! exact arithmetic answers true. The certified engine takes every decision on
@@ -94,7 +94,7 @@ fn detect_3d_on_slices_finds_missed_detection_2486702() {
         "paper-exact detects it"
     );
     assert!(slice_answer(&raw).or_true());
-    // The canary: the plain transcription (the engine of b0875a2) on the same slices
+    // The canary: the plain transcription (paper A without error bounds) on the same slices
     // still misses it, so this test would have caught that engine.
     let p: Vec<Vect2> = raw.vertices.iter().map(|&q| q.into()).collect();
     let vels: Vec<Vect2> = raw.velocities.iter().map(|&q| q.into()).collect();

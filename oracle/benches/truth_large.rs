@@ -1,4 +1,4 @@
-//! The exact truth on large polygons (issue 13, item 3: "truth at 16k vertices ≤ 1 s"):
+//! The exact truth on large polygons (the goal: the truth at 16k vertices within 1 s):
 //! what `polyguard detect --engine truth` computes after reading a case, the exact case
 //! built from the f64 inputs, `truth` and the exact §II.J report (`well_formed_fault`),
 //! on circles (convex) and 64-lobed stars (not convex) of 4k and 16k vertices of radius

@@ -1,4 +1,4 @@
-//! Large polygons (issue 13, item 3): the fast paths of the exact §II.J report and of the
+//! Large polygons: the fast paths of the exact §II.J report and of the
 //! truth give the answers of their references on polygons built to sit on their filters'
 //! edges.
 //!

@@ -1,5 +1,5 @@
-//! The plain transcription of paper A in f64, as the engine was before certification
-//! (commit b0875a2): every comparison is taken on the rounded value, with no error bound.
+//! The plain transcription of paper A in f64, as it reads without error analysis
+//! (the engine before certification): every comparison is taken on the rounded value, with no error bound.
 //!
 //! Kept **for comparison only** (feature `plain`, `polyguard detect --engine plain`):
 //! it misses true entries on relative paths long compared with the polygon, which is

@@ -2,7 +2,7 @@
 //!
 //! The paper: areas of 3–10 vertices at radius 50–100 nm from a random centre, in the box
 //! latitude 0–30°, longitude −45…−15°; tracks from a random first waypoint to a second
-//! 50–100 nm away, rectangles 20–40 nm a side. Where the paper is silent (issue 5):
+//! 50–100 nm away, rectangles 20–40 nm a side. Where the paper is silent:
 //! angles are sorted and redrawn when a gap exceeds π (else the ring crosses itself
 //! around its centre), vertices are rhumb destinations at the drawn bearing and distance,
 //! rectangle length = front + back and width = 2·side each uniform in 20–40 nm with
@@ -26,7 +26,7 @@ pub const BOX_LAT_DEG: (f64, f64) = (0.0, 30.0);
 pub const BOX_LON_DEG: (f64, f64) = (-45.0, -15.0);
 /// `--density-box`: objects per paper box (the paper's runs had 500–800 objects).
 pub const DENSITY_BOX_OBJECTS: f64 = 800.0;
-/// Issue 5: speed of generated tracks (kn).
+/// Speed of generated tracks (kn); the paper gives none.
 pub const TRACK_SPEED_KN: f64 = 15.0;
 
 /// Which objects to generate.

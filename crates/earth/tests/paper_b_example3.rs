@@ -8,7 +8,8 @@ const SQUARE10: RectDims = RectDims {
     back: 10.0,
     side: 10.0,
 };
-/// Issue 5: the sphere model's published window, to be reproduced within ±0.002 h.
+/// The sphere model's published window (the paper's Example 3, two decimals), to be
+/// reproduced within ±0.002 h.
 const EXAMPLE3_TOL_H: f64 = 0.002;
 
 fn blue() -> Leg {

@@ -1,4 +1,4 @@
-//! The batch contract at the bench's scale (batch detection, issue 13): on the seeded
+//! The batch contract at the bench's scale (batch detection): on the seeded
 //! batch workload (`polyguard_harness::batch`), `detect_batch` against
 //! `api::detected` on every one of the N·M pairs, 2D and 3D. Too slow for a unit test at
 //! 10⁴ × 10³ in debug; in release it takes seconds:

@@ -1,5 +1,5 @@
-//! The certified engine against the plain f64 transcription (`polyguard::plain`, the
-//! engine of commit b0875a2) on the criterion workload (`polyguard_harness::workload`),
+//! The certified engine against the plain f64 transcription (`polyguard::plain`, paper
+//! A without error bounds) on the criterion workload (`polyguard_harness::workload`),
 //! interleaved in one process: 30 rounds of `REPS` passes over the 256 cases per engine,
 //! the fastest round of each reported, and their ratio. A quick look between criterion
 //! runs on a noisy machine; callgrind gives instruction counts that the load does not

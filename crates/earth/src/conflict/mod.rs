@@ -24,7 +24,7 @@ pub mod stage4;
 use crate::sphere::{Leg, Merc};
 
 /// Paper B stage 4 tolerance: the default time tolerance of first/last conflict times,
-/// one second in hours (issue 5: "default 1 s").
+/// one second in hours.
 pub const DEFAULT_TIME_TOLERANCE_H: f64 = 1.0 / 3600.0;
 
 /// How an object moves (Paper B eq 1: static polygons have constant vertices).

@@ -1,7 +1,7 @@
 //! Paper B Section IV-D, eqs 11–13 and Algorithm 3: projection of the conflict region
 //! onto a track, giving a time window.
 //!
-//! Paper defects fixed here (issue 5):
+//! Paper defects fixed here:
 //! * Algorithm 3 ends the window at `ρ_max − ρ_f` (the *front* reaching the last conflict
 //!   vertex). The rectangle covers fractions `[ρ + ρ_b, ρ + ρ_f]` (ρ_b < 0, eq 13), so it
 //!   still touches `ρ_max` until its *back* leaves it: the end is `ρ_max − ρ_b`, and the

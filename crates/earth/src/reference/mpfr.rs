@@ -8,7 +8,7 @@
 use rug::float::Constant;
 pub use rug::Float;
 
-/// Working precision (bits): ≥ 200 as issue 5 asks; 256 leaves ~200 bits after the
+/// Working precision (bits): at least 200 for a reference; 256 leaves ~200 bits after the
 /// worst cancellation met here (`ψ(φ2) − ψ(φ1)` for latitudes 1e-15 rad apart).
 pub const PREC: u32 = 256;
 

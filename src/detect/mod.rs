@@ -161,6 +161,15 @@ impl Method {
 /// height and the polygon a slab (`vertical`), else detect_same_2D when every vertex
 /// velocity is the same ([`statically_shaped`]), else detect_diff_2D. The one place the
 /// choice is made: `api` and [`detect_3d`] (for its 2D part) both ask here.
+///
+/// ```
+/// use polyguard::{dispatch, Method, Vect2};
+/// let rigid = [Vect2::new(1.0, 0.0); 3];
+/// let warping = [Vect2::ZERO, Vect2::new(0.1, 0.0), Vect2::ZERO];
+/// assert_eq!(dispatch(false, &rigid[..]), Method::DetectSame2d);
+/// assert_eq!(dispatch(false, &warping[..]), Method::DetectDiff2d);
+/// assert_eq!(dispatch(true, &rigid[..]), Method::Detect3d);
+/// ```
 pub fn dispatch<V: VertexSeq + ?Sized>(vertical: bool, vels: &V) -> Method {
     if vertical {
         Method::Detect3d

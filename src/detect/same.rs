@@ -15,6 +15,16 @@ use crate::vect2::Vect2;
 /// Step 1: s not definitely outside P → true. Step 2: s + T·v not definitely outside
 /// P + T·V → true. Step 3: some edge with segments_close(s, s + T·(v − v_i), p_i, p_j,
 /// BUFF) → true. Certified: `false` only when the exact answer is false.
+///
+/// ```
+/// use polyguard::{detect_same_2d, Vect2};
+/// let square = [Vect2::new(0.0, 0.0), Vect2::new(2.0, 0.0), Vect2::new(2.0, 2.0), Vect2::new(0.0, 2.0)];
+/// let east = [Vect2::new(1.0, 0.0); 4]; // the cell drifts east, rigidly
+/// // an aircraft 3 south of the cell's path, flying north: it enters at t = 3
+/// let (s, north) = (Vect2::new(5.0, -3.0), Vect2::new(0.0, 1.0));
+/// assert!(detect_same_2d(10.0, s, north, &square[..], &east[..], 0.01));
+/// assert!(!detect_same_2d(2.5, s, north, &square[..], &east[..], 0.01)); // T too short
+/// ```
 #[inline]
 pub fn detect_same_2d<P, V>(t: f64, s: Vect2, v: Vect2, p: &P, vels: &V, buff: f64) -> bool
 where

@@ -177,6 +177,17 @@ pub fn slab_window(t: f64, sz: f64, vz: f64, pmin: f64, pmax: f64, vsp: f64) -> 
 /// Paper A §III detect_3D: 2D detection (detect_same_2D when all vertex velocities are
 /// equal, detect_diff_2D otherwise) from s + a·v and P + a·V over the lookahead b − a,
 /// where [a, b] is the slab window of [`slab_window_balls`]. Certified.
+///
+/// ```
+/// use polyguard::{detect_3d, Vect2};
+/// let square = [Vect2::new(0.0, 0.0), Vect2::new(4.0, 0.0), Vect2::new(4.0, 4.0), Vect2::new(0.0, 4.0)];
+/// let rest = [Vect2::ZERO; 4];
+/// let (s, east) = (Vect2::new(-2.0, 2.0), Vect2::new(1.0, 0.0));
+/// // between heights 3 and 5: climbing at 1 from 0 it reaches the floor at t = 3, over
+/// // the square; climbing at 0.2 it reaches it at t = 15, long after leaving the square
+/// assert!(detect_3d(20.0, s, east, 0.0, 1.0, &square[..], &rest[..], 3.0, 5.0, 0.0, 0.01, 1e-4));
+/// assert!(!detect_3d(20.0, s, east, 0.0, 0.2, &square[..], &rest[..], 3.0, 5.0, 0.0, 0.01, 1e-4));
+/// ```
 #[inline]
 pub fn detect_3d<P, V>(
     t: f64,

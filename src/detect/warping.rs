@@ -33,6 +33,17 @@ fn dot_coeffs(ww: BallV, vv: BallV, aa: BallV, bb: BallV, zero: [bool; 4]) -> [B
 /// two intervals whose union is {t ∈ [0, T] : (ww + t·vv)·(aa + t·bb) ≥ 0}.
 ///
 /// Certified as an outer enclosure: the returned interval contains the exact one.
+///
+/// ```
+/// use polyguard::{dot_nn_lin, Sign, Vect2};
+/// // (ww + t·vv)·aa = t − 1 with ww = (−1, 0), vv = (1, 0), aa = (1, 0), bb = 0:
+/// // non-negative exactly on [1, T]
+/// let (ww, vv, aa, bb) = (Vect2::new(-1.0, 0.0), Vect2::new(1.0, 0.0), Vect2::new(1.0, 0.0), Vect2::ZERO);
+/// let both = [Sign::Neg, Sign::Pos].map(|sigma| dot_nn_lin(3.0, ww, vv, aa, bb, sigma));
+/// let covers = |t: f64| both.iter().any(|i| !i.is_empty() && i.lb <= t && t <= i.ub);
+/// assert!(covers(1.0) && covers(2.5) && covers(3.0));
+/// assert!(!covers(0.5));
+/// ```
 #[inline]
 pub fn dot_nn_lin(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2, sigma: Sign) -> Interval {
     let e = BallV::exact;
@@ -117,6 +128,14 @@ fn quad_at(c: &[Ball; 3], t: f64) -> Ball {
 /// |(ww + t·vv)·(aa + t·bb)| ≤ (1 + F)·‖aa + t·bb‖² and
 /// |(ww + t·vv)·(aa⊥ + t·bb⊥)| ≤ F·‖aa⊥ + t·bb⊥‖²? Certified (see
 /// [`edge_detect_simp_tri`]).
+///
+/// ```
+/// use polyguard::{edge_detect_simp, Vect2};
+/// // 2 left of an edge's midpoint, moving right at 1, against the half-edge (0, 1)
+/// let (ww, aa, bb) = (Vect2::new(-2.0, 0.0), Vect2::new(0.0, 1.0), Vect2::ZERO);
+/// assert!(edge_detect_simp(5.0, ww, Vect2::new(1.0, 0.0), aa, bb, 1e-4));
+/// assert!(!edge_detect_simp(5.0, ww, Vect2::new(-1.0, 0.0), aa, bb, 1e-4)); // moving away
+/// ```
 #[inline]
 pub fn edge_detect_simp(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2, f: f64) -> bool {
     let e = BallV::exact;
@@ -345,6 +364,15 @@ pub fn edge_detect_simp_tri(
 ///
 /// edge_detect_simp(T, s − (½p_j + ½p_i), v − (½v_j + ½v_i), ½p_j − ½p_i, ½v_j − ½v_i, F):
 /// positions relative to the edge's midpoint, against the half-edge vector. Certified.
+///
+/// ```
+/// use polyguard::{edge_detect, Vect2};
+/// let (pi, pj, rest) = (Vect2::new(2.0, -1.0), Vect2::new(2.0, 1.0), Vect2::ZERO);
+/// let s = Vect2::ZERO;
+/// // moving right, the point crosses the edge x = 2 at t = 2
+/// assert!(edge_detect(5.0, s, Vect2::new(1.0, 0.0), pi, pj, rest, rest, 1e-4));
+/// assert!(!edge_detect(5.0, s, Vect2::new(-1.0, 0.0), pi, pj, rest, rest, 1e-4));
+/// ```
 #[inline]
 pub fn edge_detect(
     t: f64,
@@ -407,6 +435,17 @@ fn edge_detect_window(
 
 /// Paper A §II.I detect_diff_2D: s not definitely outside P, or some moving edge met by
 /// s + t·v within [0, T] (edge_detect). Certified: `false` only when the exact answer is.
+///
+/// ```
+/// use polyguard::{detect_diff_2d, Vect2};
+/// let square = [Vect2::new(0.0, 0.0), Vect2::new(2.0, 0.0), Vect2::new(2.0, 2.0), Vect2::new(0.0, 2.0)];
+/// // drifting east at 1 while each side moves out at 0.1: a warping polygon
+/// let vels = [Vect2::new(0.9, -0.1), Vect2::new(1.1, -0.1), Vect2::new(1.1, 0.1), Vect2::new(0.9, 0.1)];
+/// // from (5, −4) north at 1, the point meets the south side at t = 40/11 ≈ 3.64
+/// let (s, north) = (Vect2::new(5.0, -4.0), Vect2::new(0.0, 1.0));
+/// assert!(detect_diff_2d(10.0, s, north, &square[..], &vels[..], 1e-4, 0.01));
+/// assert!(!detect_diff_2d(3.0, s, north, &square[..], &vels[..], 1e-4, 0.01));
+/// ```
 #[inline]
 pub fn detect_diff_2d<P, V>(t: f64, s: Vect2, v: Vect2, p: &P, vels: &V, f: f64, buff: f64) -> bool
 where

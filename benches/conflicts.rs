@@ -2,7 +2,7 @@
 //! `end_to_end_800` (parse + four stages + answer JSON, per mix), `stages_800_mixed`
 //! (each stage alone on its real input) and `scaling` (10³, 10⁴ objects, mixed, at the
 //! paper's density with `--density-box`). The 10⁵ and 10⁶ rows come from the CLI
-//! (`polyguard generate … --density-box | polyguard conflicts -`), see the note.
+//! (`polyguard generate … --density-box | polyguard conflicts -`), as docs/performance.md says.
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use polyguard_earth::analysis::analyse;

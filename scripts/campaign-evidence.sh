@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The long assurance campaign (issue "hunting that sees", item 9: 10⁸ cases) in pieces,
+# A long assurance campaign (10⁷ or 10⁸ cases) in pieces,
 # recorded in the repository. It runs the shards that evidence/campaign-<name>/ holds no
 # report for yet, one after another, and files each finished shard there, to be
 # committed; the next session goes on from there. When every shard is done, `assure

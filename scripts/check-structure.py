@@ -6,7 +6,8 @@
    comments and attributes) says why, with the words "Long because".
 3. No crate has an import circle between sibling modules: a file of module a names
    module b (`crate::b`, `super::b`) and a file of b names a, directly or through others.
-4. Comments say what and why, never the history: no "issue N" and no commit hash
+4. Comments say what and why, never the history: no "issue N", no 'issue "title"' or
+   "the issue's", and no commit hash
    ("commit 1a2b3c4", or a bare hash of 7 to 40 hex digits holding a letter and a digit)
    in the comments of Rust sources, build files and scripts. History goes in CHANGELOG.md.
 
@@ -134,7 +135,7 @@ def functions(path):
     return found
 
 
-HISTORY = re.compile(r"\bissue\s+#?\d+|\bcommit\s+[0-9a-f]{7,40}\b", re.IGNORECASE)
+HISTORY = re.compile(r"\bissue\s+(#?\d+|\")|\bthe issue's\b|\bcommit\s+[0-9a-f]{7,40}\b", re.IGNORECASE)
 HASH = re.compile(r"\b(?=[0-9a-f]*[a-f])(?=[0-9a-f]*[0-9])[0-9a-f]{7,40}\b")
 HISTORY_FILES = (".rs", ".toml", ".sh", ".py")
 HISTORY_NAMES = ("run", "build.sh")

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Mutation testing of the paper-A engine (issue "hunting that sees", item 7).
+# Mutation testing of the paper-A engine.
 #
 #   scripts/mutants.sh [--shard k/N] [any other cargo-mutants option]
 #

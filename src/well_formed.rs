@@ -152,8 +152,8 @@ fn corner_and_turn<P: VertexSeq + ?Sized>(p: &P, cos_kappa: f64) -> Option<Fault
         .then_some(Fault::TurnsRight(m))
 }
 
-/// §II.J rules 1 and 2 in O(n log n + k) for k nearby pairs (issue "the engine where its
-/// users are": `well_formed` was quadratic, 6.2 s on 64k vertices): the same predicates
+/// §II.J rules 1 and 2 in O(n log n + k) for k nearby pairs (a quadratic
+/// comparison of every pair takes seconds at 64k vertices): the same predicates
 /// on the pairs a sweep along the polygon's longer axis finds near, and the same fault,
 /// the first in the paper's order (the least pair `(i, j)` of the first rule broken).
 ///

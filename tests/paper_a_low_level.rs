@@ -76,7 +76,7 @@ fn check(raw: &RawCase, what: &str) -> bool {
     paper
 }
 
-/// The case: `polyguard::detect_3d` on slices, absolute coordinates.
+/// The case: `polyguard::detect_3d` on slices, absolute coordinates.
 #[test]
 fn detect_3d_on_slices_finds_missed_detection_2486702() {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/regressions/assure-seed7.jsonl");

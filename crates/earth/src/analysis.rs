@@ -344,7 +344,7 @@ pub struct Summary {
 
 /// [`analyse_with`], the answer written to `out` as each block of features is done
 /// ([`pipeline::run_blocks`]): memory holds one block's conflicts, never the whole answer
-/// (issue "any density in bounded memory"). The text written is the answer
+/// (any density, in bounded memory). The text written is the answer
 /// [`analyse_with`] gives, timings apart. `Err` when the text is not a collection
 /// (nothing is written then); the inner `Err` when writing fails (the answer is cut).
 pub fn analyse_into(

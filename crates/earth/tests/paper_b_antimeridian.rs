@@ -1,5 +1,5 @@
-//! Paper B on the real Earth, across the antimeridian (issue "paper B on the real Earth",
-//! item 1): longitudes are read modulo 360°, steps run the shorter way, and objects meet
+//! Paper B on the real Earth, across the antimeridian:
+//! longitudes are read modulo 360°, steps run the shorter way, and objects meet
 //! across ±180°. The strongest check is an invariance: turning a whole scenario about the
 //! Earth's axis (every longitude plus a constant) changes no conflict, whether or not the
 //! turned scenario straddles the antimeridian.
@@ -63,7 +63,7 @@ fn ids(a: &Analysis) -> Vec<(String, String)> {
     pairs(a).into_iter().map(|(x, y, _, _)| (x, y)).collect()
 }
 
-/// The issue's example: a box from 179.5 to −179.5 is 1° wide, across the antimeridian.
+/// A box from 179.5 to −179.5 is 1° wide, across the antimeridian.
 /// It meets a box just east of it (written in negative longitudes), one written beyond
 /// 180, and one west of it, but not one at longitude 10 (which a 359°-wide box would).
 #[test]

@@ -2,7 +2,7 @@
 //! dense exact check that the pipeline misses no conflict.
 //!
 //! Scale with `POLYGUARD_PROPTEST_CASES` (default 64) and `POLYGUARD_DENSE_PAIRS`
-//! (default 300; the acceptance run uses 10000).
+//! (default 300; an acceptance run uses 10000).
 
 use polyguard_earth::conflict::{geom, pipeline, stage1, stage3, stage4, Object};
 use polyguard_earth::generate::Mix;

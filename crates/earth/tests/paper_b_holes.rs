@@ -1,4 +1,4 @@
-//! Paper B with GeoJSON polygons as they are (issue "paper B on the real Earth", item 2):
+//! Paper B with GeoJSON polygons as they are:
 //! holes are not part of an area, and a MultiPolygon is the union of its parts. The times
 //! are checked against a truth sampled independently of the stages: at each of many
 //! instants, does the track's rectangle meet the area (exterior minus holes), by `geo`'s
@@ -168,7 +168,7 @@ fn donut(id: &str, at: f64) -> String {
     )
 }
 
-/// The issue's case: an area inside a donut's hole does not overlap the donut; one
+/// An area inside a donut's hole does not overlap the donut; one
 /// across the hole's edge does, and so does one on the ring.
 #[test]
 fn an_area_in_the_hole_is_not_in_the_donut() {

@@ -1,4 +1,4 @@
-//! Paper B's reported regions (issue "paper B on the real Earth", item 2): valid GeoJSON
+//! Paper B's reported regions: valid GeoJSON
 //! as printed, and for a track the region encloses the overlap swept over time.
 //!
 //! Validity is checked on the printed coordinates (7 decimals of a degree), in the

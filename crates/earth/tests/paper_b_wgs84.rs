@@ -14,7 +14,8 @@ const SQUARE10: RectDims = RectDims {
     side: 10.0,
 };
 
-/// The tolerance on the paper's printed numbers.
+/// The tolerance on the paper's printed numbers (they have two decimals, and the paper's
+/// own model is not the ellipsoid).
 const TOL_H: f64 = 0.006;
 
 fn leg(geo: Geodesy, a: (f64, f64), b: (f64, f64), dims: RectDims) -> Leg {

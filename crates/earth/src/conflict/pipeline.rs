@@ -109,7 +109,7 @@ pub fn run(objects: &[Object], opts: Options) -> (Vec<Conflict>, Stats) {
 /// the pairs whose first object lies in the block ([`stage1::Index`]), stages 2–4 and the
 /// merge per feature pair follow, and `sink` gets the block's conflicts, ordered by
 /// feature pair. Memory holds one block's pairs and conflicts, whatever their total
-/// (issue "any density in bounded memory"). The objects of a feature must be
+/// (any density, in bounded memory). The objects of a feature must be
 /// consecutive and in feature order, as [`crate::scenario::objects`] makes them (a
 /// feature pair's object pairs then all start in the block of its first feature);
 /// otherwise the whole is one block.

@@ -111,7 +111,7 @@ pub fn candidates(objects: &[Object]) -> Candidates {
     Candidates { pairs }
 }
 
-/// Stage 1 over a block of objects (issue "any density in bounded memory"): one R-tree of
+/// Stage 1 over a block of objects (any density, in bounded memory): one R-tree of
 /// every object's AABB, asked for the partners of the objects of a block, so that the
 /// pipeline holds the candidates of one block at a time.
 pub struct Index {

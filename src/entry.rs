@@ -51,7 +51,9 @@
 //! along an edge touches it on a whole interval): the answer is then `Possible` from the
 //! first time not excluded, which is still a true statement.
 
-use crate::ball::{mx, up, Ball, BallV};
+use crate::ball::mx;
+use crate::motion::{centre, winding, Edge, Frame, SlabLine, State};
+pub use crate::motion::{Heights, RESOLUTION, VISIT_BUDGET};
 use crate::vect2::Vect2;
 
 /// The answer of [`first_entry`]: where the exact first-entry time t* lies.
@@ -95,203 +97,12 @@ impl EntryTime {
     }
 }
 
-/// The slab of paper A §III, for [`first_entry`]: the point's height sz + t·vz, the
-/// slab's ends bottom + t·vsp and top + t·vsp.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Heights {
-    /// The point's height at t = 0.
-    pub sz: f64,
-    /// The point's vertical speed.
-    pub vz: f64,
-    /// The slab's bottom at t = 0.
-    pub bottom: f64,
-    /// The slab's top at t = 0.
-    pub top: f64,
-    /// The slab's vertical speed.
-    pub vsp: f64,
-}
-
-/// The finest interval the scan halves: T·2⁻³⁶ (an enclosure's typical width is one
-/// or two of them, below 10⁻¹⁰·T).
-pub const RESOLUTION: f64 = 1.0 / (1u64 << 36) as f64;
-
-/// The most intervals one scan visits before answering `Possible` from where it stands.
-pub const VISIT_BUDGET: usize = 20_000;
-
-/// The point's state about P(t) while it is on no edge.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum State {
-    Outside,
-    Inside,
-    Unknown,
-}
-
 /// Where the point is against the slab over an interval.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum InSlab {
     Never,
     Always,
     Maybe,
-}
-
-/// One edge i → j, in the point's frame: q(t) = x − a = q0 + t·q1, e(t) = b − a =
-/// e0 + t·e1, w(t) = b − x = e − q (paper A §II.C's relative motion).
-#[derive(Clone, Copy, Debug)]
-struct Edge {
-    q0: BallV,
-    q1: BallV,
-    e0: BallV,
-    e1: BallV,
-    w1: BallV,
-    /// g″/2, h₁″/2, h₂″/2: constant.
-    g2: Ball,
-    h12: Ball,
-    h22: Ball,
-}
-
-/// The enclosure of f over |t − m| ≤ h from f(m), f′(m) and f″/2 (a quadratic's
-/// Taylor form, exact: the radius only adds the rounding of its own terms, which
-/// [`up`] covers).
-#[inline]
-fn range(f0: Ball, f1: Ball, f2: Ball, h: f64) -> Ball {
-    let a1 = f1.z.abs() + f1.r;
-    let a2 = f2.z.abs() + f2.r;
-    Ball {
-        z: f0.z,
-        r: up(f0.r + a1 * h + a2 * h * h),
-    }
-}
-
-impl Edge {
-    /// The edge's relative motion (paper A §II.C).
-    fn new(s: Vect2, v: Vect2, a: Vect2, va: Vect2, b: Vect2, vb: Vect2) -> Edge {
-        let q1 = BallV::diff(v, va);
-        let e1 = BallV::diff(vb, va);
-        let w1 = e1.sub(q1);
-        Edge {
-            q0: BallV::diff(s, a),
-            q1,
-            e0: BallV::diff(b, a),
-            e1,
-            w1,
-            g2: q1.cross(e1),
-            h12: q1.dot(e1),
-            h22: w1.dot(e1),
-        }
-    }
-
-    /// q(m), e(m), w(m) at the float time m.
-    #[inline]
-    fn at(&self, m: f64) -> (BallV, BallV, BallV) {
-        let mb = Ball::exact(m);
-        let q = self.q0.add(self.q1.scale(mb));
-        let e = self.e0.add(self.e1.scale(mb));
-        (q, e, e.sub(q))
-    }
-
-    /// g(m) = (x − a) × (b − a) at the float time m.
-    fn g_at(&self, m: f64) -> Ball {
-        let (q, e, _) = self.at(m);
-        q.cross(e)
-    }
-
-    /// The ranges of g, h₁, h₂ over |t − m| ≤ h.
-    #[inline]
-    fn ranges(&self, m: f64, h: f64) -> [Ball; 3] {
-        let (q, e, w) = self.at(m);
-        let g = range(
-            q.cross(e),
-            self.q1.cross(e).add(q.cross(self.e1)),
-            self.g2,
-            h,
-        );
-        let h1 = range(q.dot(e), self.q1.dot(e).add(q.dot(self.e1)), self.h12, h);
-        let h2 = range(w.dot(e), self.w1.dot(e).add(w.dot(self.e1)), self.h22, h);
-        [g, h1, h2]
-    }
-
-    /// A crossing of this edge alone, resolved without halving (the scan's shortcut):
-    /// over [a, b] (centre m, half width h) h₁ > 0 and h₂ > 0 throughout and g′ ≠ 0
-    /// throughout, so the point meets the edge exactly where g = 0, at most once. `None`
-    /// when those conditions or the signs of g at a and b are not certain. `Some(None)`:
-    /// g has the same sign at a and b, so no contact on [a, b]. `Some(Some((t1, t2)))`:
-    /// a ≤ t1 < t2 ≤ b, no contact on [a, t1] (g monotone with one sign at a and t1), and
-    /// a contact in (t1, t2) (g changes sign there with h₁, h₂ > 0).
-    fn lone_crossing(
-        &self,
-        a: f64,
-        b: f64,
-        m: f64,
-        h: f64,
-        eps: f64,
-    ) -> Option<Option<(f64, f64)>> {
-        let (q, e, w) = self.at(m);
-        let g1 = self.q1.cross(e).add(q.cross(self.e1));
-        let h1 = range(q.dot(e), self.q1.dot(e).add(q.dot(self.e1)), self.h12, h);
-        let h2 = range(w.dot(e), self.w1.dot(e).add(w.dot(self.e1)), self.h22, h);
-        // g′(t) = g′(m) + 2·(g″/2)·(t − m).
-        let slope = Ball {
-            z: g1.z,
-            r: up(g1.r + 2.0 * (self.g2.z.abs() + self.g2.r) * h),
-        };
-        if !(h1.lo() > 0.0 && h2.lo() > 0.0 && (slope.lo() > 0.0 || slope.hi() < 0.0)) {
-            return None;
-        }
-        let sign = |x: Ball| -> Option<bool> {
-            if x.lo() > 0.0 {
-                Some(true)
-            } else if x.hi() < 0.0 {
-                Some(false)
-            } else {
-                None
-            }
-        };
-        let (sa, sb) = (sign(self.g_at(a))?, sign(self.g_at(b))?);
-        if sa == sb {
-            return Some(None);
-        }
-        // The root, estimated by Newton's method on the float centres (any estimate in
-        // [a, b] will do: what follows certifies the bracket around it).
-        let mut r = m;
-        for _ in 0..6 {
-            let (q, e, _) = self.at(r);
-            let d = self.q1.cross(e).add(q.cross(self.e1)).z;
-            let step = q.cross(e).z / d;
-            if !step.is_finite() {
-                break;
-            }
-            r = (r - step).clamp(a, b);
-        }
-        let mut delta = eps * (1.0 / 16.0);
-        for _ in 0..80 {
-            let t1 = if r - delta > a { r - delta } else { a };
-            let t2 = if r + delta < b { r + delta } else { b };
-            if t1 < t2 && sign(self.g_at(t1)) == Some(sa) && sign(self.g_at(t2)) == Some(sb) {
-                return Some(Some((t1, t2)));
-            }
-            delta *= 2.0;
-        }
-        None
-    }
-
-    /// Can the point be on this edge at some time of |t − m| ≤ h? `false` is certain.
-    /// A NaN range compares false both ways, so it is "may touch".
-    #[inline]
-    fn may_touch(&self, m: f64, h: f64) -> bool {
-        let [g, h1, h2] = self.ranges(m, h);
-        !(g.lo() > 0.0 || g.hi() < 0.0 || h1.hi() < 0.0 || h2.hi() < 0.0)
-    }
-
-    /// Certainly on the edge's interior at some time of [a, b] (m, h its centre and
-    /// half width): g changes sign between a and b while h₁ > 0 and h₂ > 0 throughout.
-    fn surely_crossed(&self, a: f64, b: f64, m: f64, h: f64) -> bool {
-        let [_, h1, h2] = self.ranges(m, h);
-        if !(h1.lo() > 0.0 && h2.lo() > 0.0) {
-            return false;
-        }
-        let (ga, gb) = (self.g_at(a), self.g_at(b));
-        (ga.lo() > 0.0 && gb.hi() < 0.0) || (ga.hi() < 0.0 && gb.lo() > 0.0)
-    }
 }
 
 /// The scan's state (see the module doc).
@@ -303,7 +114,7 @@ struct Scan<'a> {
     edges: Vec<Edge>,
     /// (sz − bottom, vz − vsp) and (top − sz, vsp − vz): the slab holds when both
     /// lines are ≥ 0.
-    slab: Option<[(Ball, Ball); 2]>,
+    slab: Option<[SlabLine; 2]>,
     eps: f64,
     state: State,
     lo: Option<f64>,
@@ -322,8 +133,8 @@ impl Scan<'_> {
             return InSlab::Always;
         };
         let mut always = true;
-        for (c0, c1) in lines {
-            let r = range(c0.add(c1.mul(Ball::exact(m))), c1, Ball::exact(0.0), h);
+        for line in lines {
+            let r = line.range(m, h);
             if r.hi() < 0.0 {
                 return InSlab::Never;
             }
@@ -337,72 +148,16 @@ impl Scan<'_> {
         }
     }
 
-    /// The point's winding number about P(τ), certified, with a ray along +x, +y, −x or
-    /// −y (the first whose every sign is decided): 0 outside, odd inside, else unknown.
-    /// (Paper A §II.B's crossing count, on balls.)
+    /// The point's winding number about P(τ) (paper A §II.B's crossing count, on
+    /// balls): see [`winding`].
     fn winding(&self, tau: f64) -> State {
-        let tb = Ball::exact(tau);
-        let rel: Vec<BallV> = self
-            .p
-            .iter()
-            .zip(self.vels)
-            .map(|(&pi, &vi)| BallV::diff(pi, self.s).add(BallV::diff(vi, self.v).scale(tb)))
-            .collect();
-        // Rotations by quarter turns are exact (swaps and negations).
-        let turns: [fn(BallV) -> BallV; 4] = [
-            |a| a,
-            |a| BallV {
-                v: Vect2::new(a.v.y, -a.v.x),
-                r: a.r,
-            },
-            |a| a.neg(),
-            |a| BallV {
-                v: Vect2::new(-a.v.y, a.v.x),
-                r: a.r,
-            },
-        ];
-        'ray: for turn in turns {
-            let n = rel.len();
-            let mut w: i64 = 0;
-            for i in 0..n {
-                let a = turn(rel[i]);
-                let b = turn(rel[if i + 1 == n { 0 } else { i + 1 }]);
-                let below = |y: Ball| -> Option<bool> {
-                    if y.hi() <= 0.0 {
-                        Some(true)
-                    } else if y.lo() > 0.0 {
-                        Some(false)
-                    } else {
-                        None
-                    }
-                };
-                let (Some(a_below), Some(b_below)) = (below(a.y()), below(b.y())) else {
-                    continue 'ray;
-                };
-                if a_below == b_below {
-                    continue;
-                }
-                let c = a.cross(b);
-                let side = if c.lo() > 0.0 {
-                    1
-                } else if c.hi() < 0.0 {
-                    -1
-                } else {
-                    continue 'ray;
-                };
-                if a_below && side > 0 {
-                    w += 1;
-                } else if !a_below && side < 0 {
-                    w -= 1;
-                }
-            }
-            return match w {
-                0 => State::Outside,
-                w if w % 2 != 0 => State::Inside,
-                _ => State::Unknown,
-            };
-        }
-        State::Unknown
+        winding(
+            self.p.len(),
+            |i| (self.p[i], self.vels[i]),
+            self.s,
+            self.v,
+            tau,
+        )
     }
 
     /// Visits [a, b] whose candidate edges are `cands[from..to]`; `true` stops the scan
@@ -413,9 +168,7 @@ impl Scan<'_> {
             self.gave_up_at = Some(a);
             return true;
         }
-        let m = 0.5 * a + 0.5 * b;
-        // |t − m| ≤ h on [a, b]: both differences are rounded once, up() covers it.
-        let h = up(mx(b - m, m - a));
+        let (m, h) = centre(a, b);
         let slab = self.in_slab(m, h);
         let start = self.cands.len();
         for k in from..to {
@@ -500,65 +253,6 @@ impl Scan<'_> {
     }
 }
 
-/// The case with every length times 2^k, when every scaled float is exact (else as
-/// given).
-struct Scaled {
-    s: Vect2,
-    v: Vect2,
-    p: Vec<Vect2>,
-    vels: Vec<Vect2>,
-    heights: Option<Heights>,
-}
-
-impl Scaled {
-    /// Scales by 2^k if that is exact for every coordinate (paper A §II's question is
-    /// invariant under a common change of length unit).
-    fn new(
-        k: i32,
-        s: Vect2,
-        v: Vect2,
-        p: &[Vect2],
-        vels: &[Vect2],
-        heights: Option<Heights>,
-    ) -> Scaled {
-        let unscaled = || Scaled {
-            s,
-            v,
-            p: p.to_vec(),
-            vels: vels.to_vec(),
-            heights,
-        };
-        if k == 0 {
-            return unscaled();
-        }
-        let mut exact = true;
-        let mut sc = |x: f64| {
-            let y = libm::scalbn(x, k);
-            exact &= libm::scalbn(y, -k) == x;
-            y
-        };
-        let mut sv = |a: Vect2| Vect2::new(sc(a.x), sc(a.y));
-        let out = Scaled {
-            s: sv(s),
-            v: sv(v),
-            p: p.iter().map(|&a| sv(a)).collect(),
-            vels: vels.iter().map(|&a| sv(a)).collect(),
-            heights: heights.map(|z| Heights {
-                sz: sc(z.sz),
-                vz: sc(z.vz),
-                bottom: sc(z.bottom),
-                top: sc(z.top),
-                vsp: sc(z.vsp),
-            }),
-        };
-        if exact {
-            out
-        } else {
-            unscaled()
-        }
-    }
-}
-
 /// The first time t ∈ [0, T] at which s + t·v lies in the closed polygon P + t·V (and,
 /// with `heights`, in the closed slab), enclosed in f64 (see the module doc).
 ///
@@ -584,37 +278,18 @@ pub fn first_entry(
     // Scale space by a power of two so that the largest magnitude is about 1: the
     // question is the same (every position and velocity times 2^k, exactly), and the
     // products of the scan neither overflow nor underflow. Only an exact scaling is used.
-    let mut mag = s.x.abs().max(s.y.abs()).max(t * v.x.abs().max(v.y.abs()));
-    for (pi, vi) in p.iter().zip(vels) {
-        mag = mag
-            .max(pi.x.abs().max(pi.y.abs()))
-            .max(t * vi.x.abs().max(vi.y.abs()));
-    }
-    if let Some(z) = heights {
-        for x in [z.sz, z.bottom, z.top, t * z.vz, t * z.vsp] {
-            mag = mag.max(x.abs());
-        }
-    }
-    let k = if mag.is_finite() && mag > 0.0 {
-        -libm::ilogb(mag)
-    } else {
-        0
-    };
-    let scaled = Scaled::new(k, s, v, p, vels, heights);
-    let (s, v, heights) = (scaled.s, scaled.v, scaled.heights);
-    let (p, vels) = (&scaled.p[..], &scaled.vels[..]);
+    let frame = Frame::new(t, s, v, p, vels, heights, &[]);
+    let (s, v, heights) = (frame.pt(s), frame.pt(v), heights.map(|z| frame.heights(z)));
+    let p: Vec<Vect2> = p.iter().map(|&a| frame.pt(a)).collect();
+    let vels: Vec<Vect2> = vels.iter().map(|&a| frame.pt(a)).collect();
+    let (p, vels) = (&p[..], &vels[..]);
     let edges: Vec<Edge> = (0..n)
         .map(|i| {
             let j = if i + 1 == n { 0 } else { i + 1 };
             Edge::new(s, v, p[i], vels[i], p[j], vels[j])
         })
         .collect();
-    let slab = heights.map(|z| {
-        [
-            (Ball::rounded(z.sz - z.bottom), Ball::rounded(z.vz - z.vsp)),
-            (Ball::rounded(z.top - z.sz), Ball::rounded(z.vsp - z.vz)),
-        ]
-    });
+    let slab = heights.map(|z| SlabLine::pair(z, 0.0));
     // An edge that is one repeated vertex throughout (the same float position and
     // velocity at both ends) is that vertex, which its neighbours' edges cover, as in the
     // truth; the scan skips it. A polygon of one point has no defined inside.

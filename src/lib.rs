@@ -101,6 +101,7 @@ pub mod detect;
 #[cfg(feature = "std")]
 pub mod entry;
 pub mod error;
+mod motion;
 #[cfg(feature = "plain")]
 pub mod plain;
 pub mod polygon;

@@ -23,6 +23,7 @@ use crate::detect::{
     detect_3d_tri, detect_diff_2d_tri, detect_same_2d_tri, dispatch, statically_shaped, Method,
 };
 use crate::error::CaseError;
+use crate::intervals::{Overflow, Relation, Separation, Span};
 use crate::ring::{self, RingFault, Winding};
 use crate::vect2::Vect2;
 use crate::well_formed::{well_formed_fault, Fault};
@@ -474,7 +475,12 @@ pub fn detected(case: &Case) -> bool {
 /// Paper A end to end: detect_3D for a 3D case, else detect_same_2D when all vertex
 /// velocities are equal, else detect_diff_2D; plus well_formed (§II.J) for information.
 pub fn detect(case: &Case) -> Detection {
-    let tri = decide(case);
+    detection(case, decide(case))
+}
+
+/// The [`Detection`] of a three-valued answer for the case: `Unsure` is a conservative
+/// yes; the method and §II.J's well_formed (at t = 0, for information) are the case's.
+fn detection(case: &Case, tri: Tri) -> Detection {
     let fault = well_formed_fault(
         &case.polygon.vertices[..],
         case.params.buff,
@@ -493,11 +499,10 @@ pub fn detect(case: &Case) -> Detection {
     }
 }
 
-/// When the point first enters the closed polygon (and slab), enclosed in f64: see
-/// [`crate::entry`]. No BUFF: the time the exact truth computes, which paper A's
-/// detection guarantees to flag. (Paper A §II–III's "the point enters", timed.)
-pub fn detect_time(case: &Case) -> crate::entry::EntryTime {
-    let heights = match (case.point.z, case.polygon.slab) {
+/// The case's heights for the time scans (paper A §III's point height and slab), or
+/// `None` in 2D.
+fn heights(case: &Case) -> Option<crate::entry::Heights> {
+    match (case.point.z, case.polygon.slab) {
         (Some((sz, vz)), Some(slab)) => Some(crate::entry::Heights {
             sz,
             vz,
@@ -506,15 +511,139 @@ pub fn detect_time(case: &Case) -> crate::entry::EntryTime {
             vsp: slab.vz,
         }),
         _ => None,
-    };
+    }
+}
+
+/// When the point first enters the closed polygon (and slab), enclosed in f64: see
+/// [`crate::entry`]. No BUFF: the time the exact truth computes, which paper A's
+/// detection guarantees to flag. (Paper A §II–III's "the point enters", timed.)
+pub fn detect_time(case: &Case) -> crate::entry::EntryTime {
     crate::entry::first_entry(
         case.lookahead,
         case.point.pos,
         case.point.vel,
         &case.polygon.vertices,
         &case.polygon.velocities,
-        heights,
+        heights(case),
     )
+}
+
+/// Every time the relation holds during [0, T], as certified spans: see
+/// [`crate::intervals`] (its definitions of inside, near_D and breach_D, and what the
+/// spans certify, G1–G3). BUFF, F and κ play no part. Build `sep` with
+/// [`Separation::new`], which refuses a negative or non-finite D or H; a `Separation`
+/// written by hand with such a value gets the uncertain answer (one possible span over
+/// [0, T]). (Paper A §II–§III's motion, timed.)
+///
+/// ```
+/// use polyguard::api::{intervals, Case, MovingPoint, MovingPolygon, Params};
+/// use polyguard::{Relation, Separation, Vect2};
+///
+/// let square = MovingPolygon::new(
+///     vec![[0.0, 0.0].into(), [2.0, 0.0].into(), [2.0, 2.0].into(), [0.0, 2.0].into()],
+///     None,
+/// )?;
+/// // (1, −2) moving north at 1: inside the square from t = 2 to t = 4.
+/// let point = MovingPoint::new_2d(Vect2::new(1.0, -2.0), Vect2::new(0.0, 1.0))?;
+/// let case = Case::new(10.0, point, square, Params::new(0.01)?)?;
+/// let spans = intervals(&case, Relation::Inside, Separation::NONE);
+/// assert_eq!(spans.len(), 1);
+/// let (start, end) = (spans[0].start, spans[0].end);
+/// assert!(spans[0].certain);
+/// assert!(start.lo <= 2.0 && 2.0 <= start.hi && start.hi - start.lo < 1e-8);
+/// assert!(end.lo <= 4.0 && 4.0 <= end.hi && end.hi - end.lo < 1e-8);
+/// // Within D = 0.5: from t = 1.5 to t = 4.5 (the loss of separation at 1.5).
+/// let near = intervals(&case, Relation::Near, Separation::new(0.5, 0.0)?);
+/// assert!(near[0].start.lo <= 1.5 && 1.5 <= near[0].start.hi);
+/// # Ok::<(), polyguard::error::CaseError>(())
+/// ```
+pub fn intervals(case: &Case, relation: Relation, sep: Separation) -> Vec<Span> {
+    crate::intervals::intervals(
+        case.lookahead,
+        case.point.pos,
+        case.point.vel,
+        &case.polygon.vertices,
+        &case.polygon.velocities,
+        heights(case),
+        relation,
+        sep,
+    )
+}
+
+/// [`intervals`] into a slice, allocating nothing: the number of spans, or
+/// [`Overflow`] with the number needed when `out` is too short (the spans that fit are
+/// written). (Paper A §II–§III's motion, timed; see [`crate::intervals`].)
+///
+/// ```
+/// use polyguard::api::{intervals_into, Case, MovingPoint, MovingPolygon, Params};
+/// use polyguard::{End, Relation, Separation, Span, Vect2};
+///
+/// let square = MovingPolygon::new(
+///     vec![[0.0, 0.0].into(), [2.0, 0.0].into(), [2.0, 2.0].into(), [0.0, 2.0].into()],
+///     None,
+/// )?;
+/// let point = MovingPoint::new_2d(Vect2::new(1.0, -2.0), Vect2::new(0.0, 1.0))?;
+/// let case = Case::new(10.0, point, square, Params::new(0.01)?)?;
+/// let mut out = [Span { start: End::at(0.0), end: End::at(0.0), certain: false }; 2];
+/// assert_eq!(intervals_into(&case, Relation::Inside, Separation::NONE, &mut out), Ok(1));
+/// assert!(out[0].start.lo <= 2.0 && 2.0 <= out[0].start.hi);
+/// assert!(out[0].end.lo <= 4.0 && 4.0 <= out[0].end.hi);
+/// # Ok::<(), polyguard::error::CaseError>(())
+/// ```
+pub fn intervals_into(
+    case: &Case,
+    relation: Relation,
+    sep: Separation,
+    out: &mut [Span],
+) -> Result<usize, Overflow> {
+    crate::intervals::intervals_into(
+        case.lookahead,
+        case.point.pos,
+        case.point.vel,
+        &case.polygon.vertices,
+        &case.polygon.velocities,
+        heights(case),
+        relation,
+        sep,
+        out,
+    )
+}
+
+/// Keep-in exit detection: does the point leave the fence (breach_D at some t ∈ [0, T],
+/// see [`crate::fence`])? `detected` is never false when it does; `kind` is `Exact` when
+/// the answer is certified, `Conservative` for a "yes" f64 could not certify. `method`
+/// and the §II.J well_formed fields are those of [`detect`]. BUFF and F play no part.
+/// Build `sep` with [`Separation::new`] (a hand-written negative or non-finite one gets
+/// a conservative yes). (Paper A §II–§III's motion and slab, for a keep-in polygon.)
+///
+/// ```
+/// use polyguard::api::{detect_exit, Case, Kind, MovingPoint, MovingPolygon, Params};
+/// use polyguard::{Separation, Vect2};
+///
+/// let fence = MovingPolygon::new(
+///     vec![[0.0, 0.0].into(), [4.0, 0.0].into(), [4.0, 4.0].into(), [0.0, 4.0].into()],
+///     None,
+/// )?;
+/// // From the centre, east at 0.5: within D = 1 of the east edge from t = 2.
+/// let point = MovingPoint::new_2d(Vect2::new(2.0, 2.0), Vect2::new(0.5, 0.0))?;
+/// let case = Case::new(10.0, point, fence.clone(), Params::new(0.01)?)?;
+/// let exit = detect_exit(&case, Separation::new(1.0, 0.0)?);
+/// assert!(exit.detected && exit.kind == Kind::Exact);
+/// let case = Case::new(1.5, point, fence, Params::new(0.01)?)?;
+/// assert!(!detect_exit(&case, Separation::new(1.0, 0.0)?).detected);
+/// # Ok::<(), polyguard::error::CaseError>(())
+/// ```
+pub fn detect_exit(case: &Case, sep: Separation) -> Detection {
+    let tri = crate::fence::detect_exit_tri(
+        case.lookahead,
+        case.point.pos,
+        case.point.vel,
+        &case.polygon.vertices,
+        &case.polygon.velocities,
+        heights(case),
+        sep,
+    );
+    detection(case, tri)
 }
 
 /// The plain f64 transcription's answer (feature `plain`), for comparison only: it

@@ -101,6 +101,8 @@ pub mod detect;
 #[cfg(feature = "std")]
 pub mod entry;
 pub mod error;
+pub mod fence;
+pub mod intervals;
 mod motion;
 #[cfg(feature = "plain")]
 pub mod plain;
@@ -122,6 +124,7 @@ pub use detect::{
     detect_same_2d_tri, dispatch, dot_nn, dot_nn_lin, edge_detect, edge_detect_simp, Interval,
     Method, Sign,
 };
+pub use intervals::{End, Relation, Separation, Span};
 pub use proximity::segments_close;
 pub use quad::{quad_min_box_le_d, quad_min_le_d};
 pub use vect2::Vect2;

@@ -158,6 +158,7 @@ impl Edge {
     }
 
     /// g(m) = (x − a) × (b − a) at the float time m.
+    #[cfg(feature = "std")]
     pub(crate) fn g_at(&self, m: f64) -> Ball {
         let (q, e, _) = self.at(m);
         q.cross(e)
@@ -210,6 +211,7 @@ impl Edge {
 
     /// The ranges of g, h₁, h₂ over |t − m| ≤ h.
     #[inline]
+    #[cfg(feature = "std")]
     pub(crate) fn ranges(&self, m: f64, h: f64) -> [Ball; 3] {
         let (q, e, w) = self.at(m);
         let [g, h1, h2] = self.taylor3(q, e, w);
@@ -223,6 +225,7 @@ impl Edge {
     /// g has the same sign at a and b, so no contact on [a, b]. `Some(Some((t1, t2)))`:
     /// a ≤ t1 < t2 ≤ b, no contact on [a, t1] (g monotone with one sign at a and t1), and
     /// a contact in (t1, t2) (g changes sign there with h₁, h₂ > 0).
+    #[cfg(feature = "std")]
     pub(crate) fn lone_crossing(
         &self,
         a: f64,
@@ -255,6 +258,7 @@ impl Edge {
     /// Can the point be on this edge at some time of |t − m| ≤ h? `false` is certain.
     /// A NaN range compares false both ways, so it is "may touch".
     #[inline]
+    #[cfg(feature = "std")]
     pub(crate) fn may_touch(&self, m: f64, h: f64) -> bool {
         let [g, h1, h2] = self.ranges(m, h);
         touch_possible(g, h1, h2)
@@ -262,6 +266,7 @@ impl Edge {
 
     /// Certainly on the edge's interior at some time of [a, b] (m, h its centre and
     /// half width): g changes sign between a and b while h₁ > 0 and h₂ > 0 throughout.
+    #[cfg(feature = "std")]
     pub(crate) fn surely_crossed(&self, a: f64, b: f64, m: f64, h: f64) -> bool {
         let [_, h1, h2] = self.ranges(m, h);
         if !(h1.lo() > 0.0 && h2.lo() > 0.0) {
@@ -420,7 +425,11 @@ impl Frame {
         if k == 0 {
             return frame;
         }
-        let exact = |x: f64| libm::scalbn(libm::scalbn(x, k), -k) == x;
+        // x scales exactly when scaling back gives x again. With 2^k and 2^−k both
+        // normal floats, x·2^k and y·2^−k are the correctly rounded scalbn(x, k) and
+        // scalbn(y, −k): the same test, by two multiplications.
+        let back = Frame::of(-k);
+        let exact = |x: f64| back.len(frame.len(x)) == x;
         let pt = |a: &Vect2| exact(a.x) && exact(a.y);
         let all = pt(&s)
             && pt(&v)

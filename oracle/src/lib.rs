@@ -47,6 +47,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod algebraic;
 pub mod case;
 pub mod contain;
 pub mod convert;

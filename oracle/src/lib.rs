@@ -33,26 +33,32 @@
 //! Each module uses only the modules before it in this order, so that there is no
 //! import circle (scripts/check-structure.py checks it):
 //! 1. numbers: [`field`] (the exact field, [`V2`]), then [`qfield`] (quadratic
-//!    irrationals) and [`time`] (an answer's exact time);
+//!    irrationals), [`time`] (an answer's exact time) and [`algebraic`] (real
+//!    algebraic numbers: the ends of the sets of times);
 //! 2. input: [`error`] (what the oracle refuses), then [`convert`] (floats and text
 //!    made exact);
 //! 3. [`kernel`]: the exact and the interval kernel, and how a paper function's calls
-//!    run in them;
+//!    run in them (with the float isolation of polynomial roots);
 //! 4. paper A, in the paper's order: [`quad`] (§I) → [`contain`] (§II.B–E) →
 //!    [`proximity`] (§II.G) → [`detect`] (§II.F, §II.H, §II.I, §III) →
 //!    [`well_formed`](mod@well_formed) (§II.J) → [`ring`] (§II's simple polygon);
 //! 5. [`case`]: a validated case and paper A's answer for it;
-//! 6. [`truth`](mod@truth): the exact ground truth of a case.
+//! 6. [`truth`](mod@truth): the exact ground truth of a case;
+//! 7. [`intervals`](mod@intervals): the exact sets of times a point is inside, near or
+//!    breaching the polygon, then [`fence`]: keep-in exit detection.
 
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod algebraic;
 pub mod case;
 pub mod contain;
 pub mod convert;
 pub mod detect;
 pub mod error;
+pub mod fence;
 pub mod field;
+pub mod intervals;
 pub mod kernel;
 pub mod proximity;
 pub mod qfield;
@@ -62,6 +68,7 @@ pub mod time;
 pub mod truth;
 pub mod well_formed;
 
+pub use algebraic::{Poly, RealAlg};
 pub use case::{
     paper_detect, paper_detect_unfiltered, paper_detect_with, CaseInput, ExactCase, PaperAnswer,
     Vertical,
@@ -69,9 +76,13 @@ pub use case::{
 pub use convert::Input;
 pub use detect::{Method, Sign};
 pub use error::OracleError;
+pub use fence::{detect_exit, detect_exit_of};
 #[cfg(feature = "rug")]
 pub use field::R;
 pub use field::{Arith, ExactField, Q, V2};
+pub use intervals::{
+    intervals, intervals_of, Components, Heights, Relation, Separation, Undefined,
+};
 pub use kernel::{Decided, Exact, Kernel};
 pub use time::ExactTime;
 pub use truth::{truth, truth_unfiltered, truth_with, Truth};

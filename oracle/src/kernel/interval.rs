@@ -19,6 +19,7 @@ use std::borrow::Cow;
 use num_traits::ToPrimitive;
 
 use super::Kernel;
+use crate::algebraic::RealAlg;
 use crate::convert::f64_to_exact;
 use crate::field::{Arith, ExactField, V2};
 
@@ -693,6 +694,490 @@ pub(crate) fn near_pairs<F: ExactField>(
                 visit(i.min(j), i.max(j));
             }
         }
+    }
+}
+
+// ------------------------------------------- polynomials and their real roots
+
+/// Small float helpers the exact layers need without naming a float type: points,
+/// scaling by powers of two, a float between two enclosures.
+impl Iv {
+    /// Whether the enclosure is one float (the exact number is that float).
+    #[inline]
+    pub fn is_point(self) -> bool {
+        self.lo == self.hi
+    }
+
+    /// Whether both ends are finite.
+    #[inline]
+    pub fn is_finite(self) -> bool {
+        self.finite()
+    }
+
+    /// The exact value of the lower end (`None` when it is infinite).
+    pub fn lo_exact<F: ExactField>(self) -> Option<F> {
+        f64_to_exact(self.lo)
+    }
+
+    /// The exact value of the upper end (`None` when it is infinite).
+    pub fn hi_exact<F: ExactField>(self) -> Option<F> {
+        f64_to_exact(self.hi)
+    }
+
+    /// self · 2^k, exactly when the ends stay normal floats, else outward rounded.
+    pub fn scaled_pow2(self, k: i32) -> Iv {
+        let k = k.clamp(-2000, 2000);
+        let (mut lo, mut hi) = (self.lo, self.hi);
+        // In steps whose factor is a normal float; each step exact unless the result
+        // leaves the normal range, when it is widened by an ulp.
+        let mut left = k;
+        while left != 0 {
+            let step = left.clamp(-1000, 1000);
+            let f = f64::from_bits(((1023 + step) as u64) << 52);
+            let exact = |x: f64| {
+                let y = x * f;
+                y == 0.0 && x == 0.0 || (y.is_finite() && y.abs() >= f64::MIN_POSITIVE)
+            };
+            lo = if exact(lo) { lo * f } else { mul_dn(lo, f) };
+            hi = if exact(hi) { hi * f } else { mul_up(hi, f) };
+            left -= step;
+        }
+        Iv::raw(lo, hi)
+    }
+
+    /// A float strictly above `a` and strictly below `b`, as a point, near their
+    /// midpoint; `None` when there is none (the enclosures meet or touch).
+    pub fn point_between(a: Iv, b: Iv) -> Option<Iv> {
+        let (x, y) = (a.hi, b.lo);
+        // NaN never occurs in an Iv; infinite ends have no float beyond them.
+        if x >= y || !x.is_finite() || !y.is_finite() {
+            return None;
+        }
+        let m = x / 2.0 + y / 2.0;
+        let m = if m > x && m < y { m } else { next_up(x) };
+        (m > x && m < y).then(|| Iv::point(m))
+    }
+
+    /// The hull of two enclosures.
+    #[inline]
+    pub fn hull(self, o: Iv) -> Iv {
+        Iv::raw(self.lo.min(o.lo), self.hi.max(o.hi))
+    }
+}
+
+/// The exponent k for which 2^k · max|x| over the enclosures lies in [1/2, 1) (0
+/// when they are all 0 or one is not finite): the exact scaling that keeps a
+/// computation's products inside the float range.
+pub fn balancing_exponent(xs: impl IntoIterator<Item = Iv>) -> i32 {
+    let mut m = 0.0f64;
+    for x in xs {
+        if !x.finite() {
+            return 0;
+        }
+        m = m.max(x.lo.abs()).max(x.hi.abs());
+    }
+    if m == 0.0 || !m.is_finite() {
+        return 0;
+    }
+    // m = f·2^e with f ∈ [1/2, 1): k = −e (a normal float's exponent field; the
+    // subnormals are first brought up by 2^64).
+    let (m, extra) = if m < f64::MIN_POSITIVE {
+        (m * 18446744073709551616.0, 64)
+    } else {
+        (m, 0)
+    };
+    let e = ((m.to_bits() >> 52) & 0x7ff) as i32 - 1022;
+    extra - e
+}
+
+/// Σ c[k]·t^k by Horner's rule, enclosed (c lowest degree first).
+pub fn poly_eval(c: &[Iv], t: Iv) -> Iv {
+    c.iter().rev().fold(Iv::ZERO, |acc, &x| acc.mul(t).add(x))
+}
+
+/// Enclosures of an integer polynomial's coefficients, all divided by one power of two
+/// (a positive factor: the same roots and signs) so that the largest is about 2^900
+/// at most.
+pub fn enclose_poly(p: &crate::algebraic::Poly) -> Vec<Iv> {
+    use num_bigint::BigInt;
+    use num_rational::BigRational;
+    let bits = p.coeffs().iter().map(|c| c.bits()).max().unwrap_or(0);
+    let shift = bits.saturating_sub(900);
+    let den = BigInt::from(1u8) << shift;
+    p.coeffs()
+        .iter()
+        .map(|c| enclose(&BigRational::new(c.clone(), den.clone())))
+        .collect()
+}
+
+/// One stretch of a window after [`isolate_roots`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum RootPiece {
+    /// Exactly one root, a simple one, strictly between `at.lo` and `at.hi`: the
+    /// polynomial's signs there are certified, nonzero and opposite; `rising` when it
+    /// is negative at `at.lo`.
+    Root {
+        /// The isolating interval (float ends, lo < hi).
+        at: Iv,
+        /// Negative at at.lo, positive at at.hi.
+        rising: bool,
+    },
+    /// A stretch where floats cannot tell how many roots there are (a multiple root,
+    /// roots closer than the enclosures, or no certified sign): exact arithmetic must.
+    Unsure(Iv),
+}
+
+/// The most Bernstein subdivisions one isolation spends before it leaves the rest to
+/// exact arithmetic.
+const SPLIT_BUDGET: usize = 64;
+
+/// The deepest a Bernstein subdivision goes (a piece 2⁻⁴⁰ of the window).
+const MAX_DEPTH: u32 = 40;
+
+/// The real roots of a polynomial in a window, isolated in floats: `p` (lowest degree
+/// first) encloses the coefficients of a positive multiple of an exact polynomial;
+/// every root of it in `window` lies in exactly one returned piece, and none lies in
+/// the window outside them (a piece may reach a little beyond the window). Sorted.
+/// A polynomial that may be identically 0 gives one `Unsure` window.
+///
+/// Degree 1 and 2 (leading coefficient certified nonzero) by the closed forms, the
+/// others by subdivision in the Bernstein basis on the window: Bernstein coefficients
+/// of one strict sign exclude a root, exactly one sign change isolates one (Descartes'
+/// rule for the Bernstein basis). Root brackets are then narrowed to a few ulps.
+/// (The roots of paper A §II.C's and §II.I's edge polynomials, certified in floats.)
+pub fn isolate_roots(p: &[Iv], window: Iv) -> Vec<RootPiece> {
+    let mut n = p.len();
+    while n > 0 && p[n - 1].is_zero() {
+        n -= 1;
+    }
+    let p = &p[..n];
+    if !window.finite() || window.lo > window.hi || p.iter().any(|c| !c.finite()) {
+        return vec![RootPiece::Unsure(window)];
+    }
+    let certain_sign = |x: Iv| matches!(x.sign(), Ok(Ordering::Less | Ordering::Greater));
+    if n == 0 {
+        return vec![RootPiece::Unsure(window)];
+    }
+    if window.lo == window.hi {
+        return if certain_sign(poly_eval(p, window)) {
+            Vec::new()
+        } else {
+            vec![RootPiece::Unsure(window)]
+        };
+    }
+    let pieces = match n {
+        1 if certain_sign(p[0]) => Vec::new(),
+        2 if certain_sign(p[1]) => {
+            let r = p[0].neg().div(p[1]);
+            vec![bracket_or_unsure(p, r)]
+        }
+        3 if certain_sign(p[2]) => quadratic_pieces(p),
+        _ => bernstein_pieces(p, window),
+    };
+    pieces
+        .into_iter()
+        .filter(|piece| {
+            let at = match *piece {
+                RootPiece::Root { at, .. } | RootPiece::Unsure(at) => at,
+            };
+            at.hi >= window.lo && at.lo <= window.hi
+        })
+        .map(|piece| match piece {
+            RootPiece::Root { at, rising } => RootPiece::Root {
+                at: tighten(p, at, rising),
+                rising,
+            },
+            other => other,
+        })
+        .collect()
+}
+
+/// The certified sign of p at the float x (`None` when not certified nonzero).
+fn sign_at(p: &[Iv], x: f64) -> Option<Ordering> {
+    match poly_eval(p, Iv::point(x)).sign() {
+        Ok(Ordering::Equal) | Err(_) => None,
+        Ok(s) => Some(s),
+    }
+}
+
+/// A root piece for a root known to lie in the enclosure r (a root of a polynomial of
+/// degree ≤ 2 whose other root is elsewhere): r itself, widened by a few ulps if its
+/// ends' signs are not certified opposite, else `Unsure`.
+fn bracket_or_unsure(p: &[Iv], r: Iv) -> RootPiece {
+    if !r.finite() {
+        return RootPiece::Unsure(r);
+    }
+    let (mut l, mut h) = (r.lo, r.hi);
+    for _ in 0..4 {
+        if l == h {
+            l = next_down(l);
+            h = next_up(h);
+        }
+        if let (Some(sl), Some(sh)) = (sign_at(p, l), sign_at(p, h)) {
+            if sl != sh {
+                return RootPiece::Root {
+                    at: Iv::raw(l, h),
+                    rising: sl == Ordering::Less,
+                };
+            }
+            break;
+        }
+        l = next_down(next_down(l));
+        h = next_up(next_up(h));
+    }
+    RootPiece::Unsure(Iv::raw(l, h))
+}
+
+/// The pieces of a quadratic c + b·t + a·t² with a certified nonzero: no real root
+/// (discriminant certified negative), two enclosed roots (certified positive, by the
+/// cancellation-free formulas q = −(b ± √disc)/2, roots q/a and c/q), or one stretch
+/// that holds every real root when the discriminant may be 0.
+fn quadratic_pieces(p: &[Iv]) -> Vec<RootPiece> {
+    let (c, b, a) = (p[0], p[1], p[2]);
+    let disc = b.sq().sub(Iv::from_i64(4).mul(a).mul(c));
+    if disc.hi < 0.0 {
+        return Vec::new();
+    }
+    let two_a = a.twice();
+    if disc.lo <= 0.0 {
+        // Every real root is −b/(2a) ± √disc/(2|a|) with disc ∈ [0, disc.hi].
+        let centre = b.neg().div(two_a);
+        let radius = Iv::point(disc.hi).sqrt().div(two_a.abs());
+        let lo = centre.sub(radius).lo;
+        let hi = centre.add(radius).hi;
+        return vec![RootPiece::Unsure(Iv::raw(lo, hi))];
+    }
+    let sq = disc.sqrt();
+    let (r1, r2) = if b.lo >= 0.0 {
+        let q = b.add(sq).half().neg();
+        (q.div(a), c.div(q))
+    } else if b.hi <= 0.0 {
+        let q = sq.sub(b).half();
+        (q.div(a), c.div(q))
+    } else {
+        (b.neg().sub(sq).div(two_a), b.neg().add(sq).div(two_a))
+    };
+    let (r1, r2) = if r1.lo <= r2.lo { (r1, r2) } else { (r2, r1) };
+    if r1.hi >= r2.lo {
+        return vec![RootPiece::Unsure(r1.hull(r2))];
+    }
+    vec![bracket_or_unsure(p, r1), bracket_or_unsure(p, r2)]
+}
+
+/// The Bernstein coefficients on [l, h] of the polynomial p (enclosed): those of
+/// p(l + (h − l)·u) on u ∈ [0, 1] (a Taylor shift, a scaling, the basis change
+/// b_i = Σ_{j ≤ i} C(i, j)/C(n, j) · q_j).
+fn bernstein(p: &[Iv], l: f64, h: f64) -> Vec<Iv> {
+    let n = p.len() - 1;
+    let mut q = p.to_vec();
+    let li = Iv::point(l);
+    for i in 0..n {
+        for j in (i..n).rev() {
+            q[j] = q[j].add(li.mul(q[j + 1]));
+        }
+    }
+    let w = Iv::point(h).sub(li);
+    let mut wp = Iv::ONE;
+    for x in q.iter_mut().skip(1) {
+        wp = wp.mul(w);
+        *x = x.mul(wp);
+    }
+    let binom = |n: usize, k: usize| -> f64 {
+        (0..k).fold(1.0, |acc, i| acc * (n - i) as f64 / (i + 1) as f64)
+    };
+    (0..=n)
+        .map(|i| {
+            (0..=i).fold(Iv::ZERO, |acc, j| {
+                let f = Iv::point(binom(i, j)).div(Iv::point(binom(n, j)));
+                acc.add(f.mul(q[j]))
+            })
+        })
+        .collect()
+}
+
+/// Subdivision in the Bernstein basis (see [`isolate_roots`]): pieces of the window
+/// with one strict sign are dropped, pieces with exactly one sign change are roots,
+/// the rest are halved until the budget or the depth runs out.
+fn bernstein_pieces(p: &[Iv], window: Iv) -> Vec<RootPiece> {
+    let mut out = Vec::new();
+    let mut stack = vec![(window.lo, window.hi, 0u32)];
+    let mut splits = 0usize;
+    while let Some((l, h, depth)) = stack.pop() {
+        let b = bernstein(p, l, h);
+        let signs: Vec<Option<Ordering>> = b.iter().map(|x| x.sign().ok()).collect();
+        let known = signs.iter().all(Option::is_some);
+        let nonzero: Vec<Ordering> = signs
+            .iter()
+            .flatten()
+            .copied()
+            .filter(|&s| s != Ordering::Equal)
+            .collect();
+        let ends_nonzero = matches!(signs.first(), Some(Some(s)) if *s != Ordering::Equal)
+            && matches!(signs.last(), Some(Some(s)) if *s != Ordering::Equal);
+        if known && ends_nonzero {
+            let changes = nonzero.windows(2).filter(|w| w[0] != w[1]).count();
+            if changes == 0 {
+                continue;
+            }
+            if changes == 1 {
+                out.push(RootPiece::Root {
+                    at: Iv::raw(l, h),
+                    rising: nonzero[0] == Ordering::Less,
+                });
+                continue;
+            }
+        }
+        let m = Iv::point_between(Iv::point(l), Iv::point(h));
+        match m {
+            Some(m) if depth < MAX_DEPTH && splits < SPLIT_BUDGET => {
+                splits += 1;
+                // Right half first onto the stack, so that the left one comes out first.
+                stack.push((m.lo, h, depth + 1));
+                stack.push((l, m.lo, depth + 1));
+            }
+            _ => out.push(RootPiece::Unsure(Iv::raw(l, h))),
+        }
+    }
+    // Adjacent unsure pieces are one stretch.
+    let mut merged: Vec<RootPiece> = Vec::with_capacity(out.len());
+    for piece in out {
+        if let (Some(RootPiece::Unsure(last)), RootPiece::Unsure(x)) = (merged.last_mut(), piece) {
+            if last.hi >= x.lo {
+                *last = last.hull(x);
+                continue;
+            }
+        }
+        merged.push(piece);
+    }
+    merged
+}
+
+/// The midpoints of the coefficients' enclosures: the plain polynomial whose root a
+/// float search approximates (only ever a guess; certification is by enclosures).
+fn midpoints(p: &[Iv]) -> Vec<f64> {
+    p.iter().map(|c| c.lo / 2.0 + c.hi / 2.0).collect()
+}
+
+/// An approximate root in (l, h) of the plain polynomial c that is negative at l when
+/// `rising` (positive otherwise), by float bisection.
+fn approx_root(c: &[f64], l: f64, h: f64, rising: bool) -> f64 {
+    let eval = |t: f64| c.iter().rev().fold(0.0, |acc, &x| acc * t + x);
+    let (mut a, mut b) = (l, h);
+    for _ in 0..80 {
+        let m = a / 2.0 + b / 2.0;
+        if !(m > a && m < b) {
+            break;
+        }
+        let v = eval(m);
+        if v == 0.0 || !v.is_finite() {
+            return m;
+        }
+        if (v < 0.0) == rising {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    a / 2.0 + b / 2.0
+}
+
+/// A bracket [g − δ, g + δ] inside (l, h), with certified opposite signs, around the
+/// float guess g: δ from an ulp of g up, fourfold each try. `None` when none
+/// certifies.
+fn certify_near(p: &[Iv], g: f64, l: f64, h: f64, rising: bool) -> Option<Iv> {
+    let want_lo = if rising {
+        Ordering::Less
+    } else {
+        Ordering::Greater
+    };
+    let mut delta = (g.abs() * f64::EPSILON).max(f64::MIN_POSITIVE);
+    for _ in 0..14 {
+        let (a, b) = (g - delta, g + delta);
+        if a > l && b < h && a < b {
+            if let (Some(sa), Some(sb)) = (sign_at(p, a), sign_at(p, b)) {
+                if sa == want_lo && sb == want_lo.reverse() {
+                    return Some(Iv::raw(a, b));
+                }
+            }
+        }
+        delta *= 4.0;
+    }
+    None
+}
+
+/// A root bracket narrowed to a few ulps where the enclosures allow it (else as it
+/// was): the signs at its new ends are certified, so it still isolates the root.
+fn tighten(p: &[Iv], at: Iv, rising: bool) -> Iv {
+    let g = approx_root(&midpoints(p), at.lo, at.hi, rising);
+    certify_near(p, g, at.lo, at.hi, rising).unwrap_or(at)
+}
+
+/// Whether an enclosure is at most four ulps wide.
+fn is_tight(x: Iv) -> bool {
+    if !x.finite() {
+        return false;
+    }
+    let mut e = x.lo;
+    for _ in 0..4 {
+        e = next_up(e);
+    }
+    x.hi <= e
+}
+
+/// A rigorous enclosure of a real algebraic number, as tight as a few float steps
+/// make it; the number's isolating interval is narrowed to the certified float
+/// bracket on the way (so later exact work starts from it). A rational is enclosed
+/// directly. (The float side of paper A §II.C/§II.I's exact roots.)
+pub fn tighten_alg(x: &mut RealAlg) -> Iv {
+    if let Some(q) = x.as_rational() {
+        return enclose(q);
+    }
+    let (lo, hi) = x.bounds();
+    let (elo, ehi) = (enclose(lo), enclose(hi));
+    let outer = Iv::raw(elo.lo, ehi.hi);
+    if is_tight(outer) {
+        return outer;
+    }
+    let rising = x.lo_sign() == Some(Ordering::Less);
+    let c = enclose_poly(&x.poly());
+    // Floats inside [lo, hi]: between them the root can be bracketed in floats.
+    let (a, b) = (elo.hi, ehi.lo);
+    if a < b && c.iter().all(|v| v.finite()) {
+        let g = approx_root(&midpoints(&c), a, b, rising);
+        if let Some(br) = certify_near(&c, g, a, b, rising) {
+            if let (Some(l), Some(h)) = (br.lo_exact(), br.hi_exact()) {
+                x.narrow_to(l, h);
+                return br;
+            }
+        }
+    }
+    // Exact bisection, a bounded number of steps.
+    for _ in 0..64 {
+        x.refine();
+        if let Some(q) = x.as_rational() {
+            return enclose(q);
+        }
+        let (lo, hi) = x.bounds();
+        let e = Iv::raw(enclose(lo).lo, enclose(hi).hi);
+        if is_tight(e) {
+            return e;
+        }
+    }
+    let (lo, hi) = x.bounds();
+    Iv::raw(enclose(lo).lo, enclose(hi).hi)
+}
+
+/// A rigorous enclosure of a real algebraic number ([`tighten_alg`] on a copy).
+pub fn enclose_alg(x: &RealAlg) -> Iv {
+    tighten_alg(&mut x.clone())
+}
+
+impl RealAlg {
+    /// Floats lo ≤ x ≤ hi, rounded outward (rigorous), a few ulps apart where the float
+    /// range allows (±∞ beyond it).
+    pub fn to_f64_bounds(&self) -> (f64, f64) {
+        let e = enclose_alg(self);
+        (e.lo, e.hi)
     }
 }
 

@@ -1,0 +1,261 @@
+//! The horizontal part of the relations over a time window: the set B where the point
+//! is within D of the polygon's boundary (paper A §II.C's distance to an edge, made a
+//! set of times; §II.I for warping edges), the winding number on the gaps of B
+//! (§II.D's ray crossings, exact and signed), and what makes the answer undefined
+//! (the truth's rules: an edge shrinking to a point, an even non-zero winding number).
+
+use core::cmp::Ordering;
+
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::Zero;
+
+use super::scene::{Kind, Scene};
+use super::set::{roots_in, sign_at_end, sign_set, End, Lazy, Sample, Set, Window};
+use super::{Relation, Undefined};
+use crate::field::{ExactField, V2};
+use crate::kernel::interval::Iv;
+use crate::kernel::{Decided, Exact, Intervals};
+use crate::truth::winding_number;
+
+/// Per edge, whether it is one repeated vertex throughout the window (it is then that
+/// vertex, which its neighbours' edges cover, as in the truth). Undefined when an edge
+/// shrinks to a point at one time of the window, or when every edge is a point.
+/// (Paper A §II's premise: edges of positive length.)
+pub(crate) fn point_edges<F: ExactField>(
+    sc: &Scene<'_, F>,
+    w: &Window,
+) -> Result<Vec<bool>, Undefined> {
+    let n = sc.len();
+    let mut out = vec![false; n];
+    for (i, point) in out.iter_mut().enumerate() {
+        let j = (i + 1) % n;
+        let (a, b) = (&sc.fl.p[i], &sc.fl.p[j]);
+        // e = b − a is linear in t: one coordinate of one strict sign at both ends of
+        // the window keeps it away from 0 throughout.
+        let at = |tau: Iv, k: usize| b.c0[k].sub(a.c0[k]).add(b.c1[k].sub(a.c1[k]).mul(tau));
+        let strict = |x: Iv, y: Iv| {
+            matches!(
+                (x.sign(), y.sign()),
+                (Ok(Ordering::Less), Ok(Ordering::Less))
+                    | (Ok(Ordering::Greater), Ok(Ordering::Greater))
+            )
+        };
+        if (0..2).any(|k| strict(at(w.lo_end.iv, k), at(w.hi_end.iv, k))) {
+            continue;
+        }
+        let e = sc.exact();
+        let d0: Vec<BigInt> = (0..2).map(|k| &e.p[j].c0[k] - &e.p[i].c0[k]).collect();
+        let d1: Vec<BigInt> = (0..2).map(|k| &e.p[j].c1[k] - &e.p[i].c1[k]).collect();
+        let Some(k) = (0..2).find(|&k| !d1[k].is_zero()) else {
+            *point = d0.iter().all(Zero::is_zero);
+            continue;
+        };
+        let tc = BigRational::new(-d0[k].clone(), d1[k].clone());
+        let zero_at = (0..2).all(|m| {
+            (BigRational::from_integer(d0[m].clone())
+                + BigRational::from_integer(d1[m].clone()) * &tc)
+                .is_zero()
+        });
+        if zero_at && tc >= w.lo && tc <= w.hi {
+            return Err(Undefined {
+                reason: format!(
+                    "edge {i}-{j} shrinks to a point at t = {} (the polygon is not simple then)",
+                    crate::algebraic::RealAlg::rational(tc).to_decimal_string(9)
+                ),
+            });
+        }
+    }
+    if out.iter().all(|&p| p) {
+        return Err(Undefined {
+            reason: "every vertex is the same point".into(),
+        });
+    }
+    Ok(out)
+}
+
+/// Which vertices and edges can come within D of the point during the window: their
+/// boxes over the window (positions at the window's enclosure, which hold every
+/// position in it) against the point's, D apart at most on both axes. (A cheap
+/// exclusion in front of paper A §II.C's quadratics.)
+fn reachable<F: ExactField>(sc: &Scene<'_, F>, w: &Window) -> (Vec<bool>, Vec<bool>) {
+    let tau = w.iv();
+    let (x, ps) = sc.fl.at(&tau);
+    let d = sc.d_fl.hi;
+    let near = |b: &[Iv; 2]| {
+        (0..2).all(|k| {
+            let diff = x[k].sub(b[k]);
+            !(diff.lo > d || diff.hi < -d)
+        })
+    };
+    let vertex: Vec<bool> = ps.iter().map(near).collect();
+    let n = ps.len();
+    let edge = (0..n)
+        .map(|i| {
+            let (a, b) = (&ps[i], &ps[(i + 1) % n]);
+            near(&[a[0].hull(b[0]), a[1].hull(b[1])])
+        })
+        .collect();
+    (vertex, edge)
+}
+
+/// B over the window: the times at which the point is within D of the boundary,
+/// a union of per-vertex and per-edge sets (see the module doc of
+/// [`crate::intervals`]). With `early`, it stops at the first nonempty part (enough to
+/// know whether B is empty).
+/// (Paper A §II.C: near_edge's two tests, its end points and its quadratic, as sets of
+/// times; with D = 0 the contacts of the truth.)
+pub(crate) fn near_boundary<F: ExactField>(
+    sc: &Scene<'_, F>,
+    w: &Window,
+    point_edge: &[bool],
+    early: bool,
+) -> Set {
+    let n = sc.len();
+    let (vertex_ok, edge_ok) = reachable(sc, w);
+    let d_zero = sc.d_is_zero();
+    let mut parts: Vec<(End, End)> = Vec::new();
+    if !d_zero {
+        for i in (0..n).filter(|&i| vertex_ok[i]) {
+            let s = sign_set(sc, &Lazy::new(sc, Kind::Vertex(i)), w, Ordering::Less);
+            parts.extend(s.comps);
+            if early && !parts.is_empty() {
+                return Set::union_of(sc, parts);
+            }
+        }
+    }
+    for i in (0..n).filter(|&i| edge_ok[i] && !point_edge[i]) {
+        let strip = if d_zero {
+            contacts(sc, w, i)
+        } else {
+            band(sc, w, i)
+        };
+        parts.extend(strip.comps);
+        if early && !parts.is_empty() {
+            break;
+        }
+    }
+    Set::union_of(sc, parts)
+}
+
+/// {h1 ≥ 0} ∩ {h2 ≥ 0} ∩ {g² ≤ D²·|e|²} for edge i: where the foot of the
+/// perpendicular from the point falls on the edge and the point is within D of the
+/// edge's line (paper A §II.C's quadratic in r has its minimum inside [0, 1] and
+/// below BUFF², as times).
+fn band<F: ExactField>(sc: &Scene<'_, F>, w: &Window, i: usize) -> Set {
+    let k = sign_set(sc, &Lazy::new(sc, Kind::Band(i)), w, Ordering::Less);
+    if k.is_empty() {
+        return k;
+    }
+    let a = sign_set(sc, &Lazy::new(sc, Kind::Ahead(i)), w, Ordering::Greater);
+    let r = k.intersect(sc, &a);
+    if r.is_empty() {
+        return r;
+    }
+    let b = sign_set(sc, &Lazy::new(sc, Kind::Behind(i)), w, Ordering::Greater);
+    r.intersect(sc, &b)
+}
+
+/// The times at which the point lies on edge i: the roots of g with h1, h2 ≥ 0 there
+/// (signs at the roots in floats first, exactly when they cannot tell), or where the
+/// point slides along the edge's line (g ≡ 0), {h1 ≥ 0} ∩ {h2 ≥ 0}.
+/// (Paper A §II.C with BUFF = 0, the truth's contact test, as a set of times.)
+fn contacts<F: ExactField>(sc: &Scene<'_, F>, w: &Window, i: usize) -> Set {
+    let g = Lazy::new(sc, Kind::Cross(i));
+    let ahead = Lazy::new(sc, Kind::Ahead(i));
+    let behind = Lazy::new(sc, Kind::Behind(i));
+    match roots_in(sc, &g, w) {
+        None => {
+            let a = sign_set(sc, &ahead, w, Ordering::Greater);
+            a.intersect(sc, &sign_set(sc, &behind, w, Ordering::Greater))
+        }
+        Some(roots) => {
+            let on = |r: &End| {
+                sign_at_end(sc, &ahead, r) != Ordering::Less
+                    && sign_at_end(sc, &behind, r) != Ordering::Less
+            };
+            let comps = roots
+                .into_iter()
+                .filter(on)
+                .map(|r| (r.clone(), r))
+                .collect();
+            Set { comps }
+        }
+    }
+}
+
+/// The winding number of P around the point at the sample time (not on the boundary):
+/// in floats when they certify it, else exactly. `None` if the point is on an edge.
+/// (Paper A §II.D's ray crossings, exact and signed, at one time.)
+pub(crate) fn winding_at<F: ExactField>(sc: &Scene<'_, F>, at: &Sample) -> Option<i64> {
+    let (x, ps) = sc.fl.at(&at.iv);
+    let v2 = |c: [Iv; 2]| V2::new(c[0], c[1]);
+    let poly: Vec<V2<Iv>> = ps.into_iter().map(v2).collect();
+    if let Ok(w) = winding_number(&Intervals, &poly, &v2(x)) {
+        if w.is_some() {
+            return w;
+        }
+    }
+    let (x, ps) = sc.exact_at(at.exact());
+    winding_number(&Exact, &ps, &x).decided()
+}
+
+/// The horizontal relation over the window: B, and each gap of B whose winding number
+/// puts it in the relation (odd: inside; 0: outside); `Undefined` for an even, non-zero
+/// winding number or a degenerate edge (see [`point_edges`]).
+/// (The method of [`crate::intervals`], steps 1–3.)
+pub(crate) fn horizontal<F: ExactField>(
+    sc: &Scene<'_, F>,
+    w: &Window,
+    relation: Relation,
+) -> Result<Set, Undefined> {
+    let point_edge = point_edges(sc, w)?;
+    let b = near_boundary(sc, w, &point_edge, false);
+    let mut parts = b.comps.clone();
+    for (lo, hi, at) in b.gaps(sc, w) {
+        let inside = match winding_at(sc, &at) {
+            None => true,
+            Some(k) if k % 2 != 0 => true,
+            Some(0) => false,
+            Some(k) => {
+                return Err(Undefined {
+                    reason: format!(
+                        "at t ≈ {} the point's winding number is {k}: inside by the nonzero rule, outside by the even-odd rule (the polygon is not simple)",
+                        at.exact_text()
+                    ),
+                })
+            }
+        };
+        let wanted = match relation {
+            Relation::Inside | Relation::Near => inside,
+            Relation::Breach => !inside,
+        };
+        if wanted {
+            parts.push((lo, hi));
+        }
+    }
+    Ok(Set::union_of(sc, parts))
+}
+
+/// The one gap of an empty B (the whole window): whether the point is outside there.
+/// (Paper A §II.D at one time of the window: the keep-in fence's side.)
+pub(crate) fn outside_throughout<F: ExactField>(
+    sc: &Scene<'_, F>,
+    w: &Window,
+) -> Result<bool, Undefined> {
+    let at = if w.is_point() {
+        Sample::rational(w.lo.clone())
+    } else {
+        Sample::between(sc, &w.lo_end, &w.hi_end)
+    };
+    match winding_at(sc, &at) {
+        Some(0) => Ok(true),
+        None => Ok(false),
+        Some(k) if k % 2 != 0 => Ok(false),
+        Some(k) => Err(Undefined {
+            reason: format!(
+                "the point's winding number is {k}: inside by the nonzero rule, outside by the even-odd rule (the polygon is not simple)"
+            ),
+        }),
+    }
+}

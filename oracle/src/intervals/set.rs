@@ -1,0 +1,462 @@
+//! Closed sets of times with real algebraic ends, and the sets where one of the scene's
+//! polynomials has a sign (paper A §II.C's edge quadratics, §II.I's warping edges,
+//! §III's slab lines): sorted lists of disjoint closed components.
+//!
+//! Every end carries a rigorous float enclosure next to its exact value, which is built
+//! only when needed: comparisons whose enclosures are apart are decided in floats, the
+//! others exactly ([`RealAlg`]'s order). A root isolated in floats
+//! ([`isolate_roots`]) becomes a [`RealAlg`] without further work: the exact polynomial
+//! and the float bracket, whose certified opposite signs prove it isolating.
+
+use core::cell::OnceCell;
+use core::cmp::Ordering;
+use std::rc::Rc;
+
+use num_bigint::BigInt;
+use num_rational::BigRational;
+
+use super::scene::{Kind, Scene};
+use crate::algebraic::{Poly, RealAlg};
+use crate::field::ExactField;
+use crate::kernel::interval::{enclose, isolate_roots, poly_eval, tighten_alg, Iv, RootPiece};
+
+/// A polynomial of the scene: its float enclosure now, its exact form on demand.
+#[derive(Debug)]
+pub(crate) struct Lazy {
+    kind: Kind,
+    /// Enclosures of the coefficients of a positive multiple (lowest degree first).
+    pub fl: Vec<Iv>,
+    exact: OnceCell<Poly>,
+}
+
+impl Lazy {
+    /// The polynomial `kind` of the scene.
+    pub fn new<F: ExactField>(sc: &Scene<'_, F>, kind: Kind) -> Rc<Self> {
+        Rc::new(Lazy {
+            kind,
+            fl: sc.fl.poly(kind),
+            exact: OnceCell::new(),
+        })
+    }
+
+    /// The exact polynomial (a positive multiple of the same one).
+    pub fn exact<F: ExactField>(&self, sc: &Scene<'_, F>) -> &Poly {
+        self.exact.get_or_init(|| sc.exact_poly(self.kind))
+    }
+}
+
+/// How an end's exact value is known.
+#[derive(Clone, Debug)]
+enum Value {
+    /// Exactly.
+    Known(RealAlg),
+    /// As the one root of `poly` in (at.lo, at.hi), certified in floats (negative at
+    /// at.lo when `rising`); the exact number is built on first use.
+    Float {
+        poly: Rc<Lazy>,
+        at: Iv,
+        rising: bool,
+        alg: OnceCell<RealAlg>,
+    },
+}
+
+/// An end of a component: a real algebraic time, with a rigorous float enclosure.
+#[derive(Clone, Debug)]
+pub(crate) struct End {
+    /// Encloses the exact value (a point only when the value is that float).
+    pub iv: Iv,
+    value: Value,
+}
+
+impl End {
+    /// The exact number x, with its enclosure.
+    pub fn known(mut x: RealAlg) -> End {
+        let iv = tighten_alg(&mut x);
+        End {
+            iv,
+            value: Value::Known(x),
+        }
+    }
+
+    /// The rational x.
+    pub fn rational(x: BigRational) -> End {
+        End {
+            iv: enclose(&x),
+            value: Value::Known(RealAlg::rational(x)),
+        }
+    }
+
+    /// The root of `poly` certified in floats in (at.lo, at.hi).
+    fn float(poly: &Rc<Lazy>, at: Iv, rising: bool) -> End {
+        End {
+            iv: at,
+            value: Value::Float {
+                poly: Rc::clone(poly),
+                at,
+                rising,
+                alg: OnceCell::new(),
+            },
+        }
+    }
+
+    /// The exact value (built on first use).
+    pub fn alg<F: ExactField>(&self, sc: &Scene<'_, F>) -> &RealAlg {
+        match &self.value {
+            Value::Known(x) => x,
+            Value::Float {
+                poly,
+                at,
+                rising,
+                alg,
+            } => alg.get_or_init(|| {
+                let p = poly.exact(sc).clone();
+                // A root bracket's ends are finite floats (isolate_roots works in a
+                // finite window only).
+                let lo = at.lo_exact().expect("a root bracket has finite ends");
+                let hi = at.hi_exact().expect("a root bracket has finite ends");
+                let s = if *rising {
+                    Ordering::Less
+                } else {
+                    Ordering::Greater
+                };
+                RealAlg::certified(p, lo, hi, s)
+            }),
+        }
+    }
+
+    /// The exact value, owned.
+    pub fn into_alg<F: ExactField>(self, sc: &Scene<'_, F>) -> RealAlg {
+        match self.value {
+            Value::Known(x) => x,
+            Value::Float { .. } => self.alg(sc).clone(),
+        }
+    }
+
+    /// Whether both are the same root of the same polynomial (then equal).
+    fn same_root(&self, o: &End) -> bool {
+        match (&self.value, &o.value) {
+            (Value::Float { poly: a, at: x, .. }, Value::Float { poly: b, at: y, .. }) => {
+                Rc::ptr_eq(a, b) && x == y
+            }
+            _ => false,
+        }
+    }
+}
+
+/// The exact order of two ends: by their enclosures when they are apart, else exactly.
+pub(crate) fn cmp_end<F: ExactField>(sc: &Scene<'_, F>, a: &End, b: &End) -> Ordering {
+    if a.iv.hi < b.iv.lo {
+        return Ordering::Less;
+    }
+    if b.iv.hi < a.iv.lo {
+        return Ordering::Greater;
+    }
+    if (a.iv.is_point() && a.iv == b.iv) || a.same_root(b) {
+        return Ordering::Equal;
+    }
+    a.alg(sc).cmp(b.alg(sc))
+}
+
+/// A time window [lo, hi] with rational ends (lo ≤ hi).
+#[derive(Clone, Debug)]
+pub(crate) struct Window {
+    /// Its start, exactly.
+    pub lo: BigRational,
+    /// Its end, exactly.
+    pub hi: BigRational,
+    /// Its start as an end.
+    pub lo_end: End,
+    /// Its end as an end.
+    pub hi_end: End,
+}
+
+impl Window {
+    /// [lo, hi] (lo ≤ hi).
+    pub fn new(lo: BigRational, hi: BigRational) -> Self {
+        Window {
+            lo_end: End::rational(lo.clone()),
+            hi_end: End::rational(hi.clone()),
+            lo,
+            hi,
+        }
+    }
+
+    /// The float hull of the window.
+    pub fn iv(&self) -> Iv {
+        self.lo_end.iv.hull(self.hi_end.iv)
+    }
+
+    /// Whether the window is a single time.
+    pub fn is_point(&self) -> bool {
+        self.lo == self.hi
+    }
+}
+
+/// A point of time where a sign is taken: a float (as a point enclosure) or, when no
+/// float fits, a rational.
+pub(crate) struct Sample {
+    /// Its enclosure.
+    pub iv: Iv,
+    /// Its exact value (built on first use for a float).
+    exact: OnceCell<BigRational>,
+}
+
+impl Sample {
+    /// The exact value.
+    pub fn exact(&self) -> &BigRational {
+        self.exact
+            .get_or_init(|| self.iv.lo_exact().expect("a float sample is finite"))
+    }
+
+    /// A time strictly between the ends a < b: a float between their enclosures, or the
+    /// midpoint of their isolating intervals refined apart.
+    pub fn between<F: ExactField>(sc: &Scene<'_, F>, a: &End, b: &End) -> Sample {
+        if let Some(m) = Iv::point_between(a.iv, b.iv) {
+            return Sample {
+                iv: m,
+                exact: OnceCell::new(),
+            };
+        }
+        let (mut x, mut y) = (a.alg(sc).clone(), b.alg(sc).clone());
+        while x.bounds().1 >= y.bounds().0 {
+            x.refine();
+            y.refine();
+        }
+        let m = (x.bounds().1 + y.bounds().0) / BigRational::from_integer(BigInt::from(2));
+        Sample::rational(m)
+    }
+
+    /// The time in decimal (9 digits, toward −∞), for messages.
+    pub fn exact_text(&self) -> String {
+        RealAlg::rational(self.exact().clone()).to_decimal_string(9)
+    }
+
+    /// The rational time m.
+    pub fn rational(m: BigRational) -> Sample {
+        Sample {
+            iv: enclose(&m),
+            exact: OnceCell::from(m),
+        }
+    }
+}
+
+/// The exact sign of a scene polynomial at a sample (floats first).
+pub(crate) fn sign_at_sample<F: ExactField>(
+    sc: &Scene<'_, F>,
+    poly: &Lazy,
+    at: &Sample,
+) -> Ordering {
+    match poly_eval(&poly.fl, at.iv).sign() {
+        Ok(s) => s,
+        Err(_) => poly.exact(sc).sign_at(at.exact()),
+    }
+}
+
+/// The exact sign of a scene polynomial at an end (floats first, over the enclosure).
+pub(crate) fn sign_at_end<F: ExactField>(sc: &Scene<'_, F>, poly: &Lazy, at: &End) -> Ordering {
+    match poly_eval(&poly.fl, at.iv).sign() {
+        Ok(s) => s,
+        Err(_) => at.alg(sc).sign_of(poly.exact(sc)),
+    }
+}
+
+/// The distinct roots of a scene polynomial in the closed window, increasing; `None`
+/// when the polynomial is identically 0. Roots certified in floats strictly inside the
+/// window cost no exact work; the rest (a root bracket over a window end, a stretch the
+/// floats could not settle) is done exactly.
+pub(crate) fn roots_in<F: ExactField>(
+    sc: &Scene<'_, F>,
+    poly: &Rc<Lazy>,
+    w: &Window,
+) -> Option<Vec<End>> {
+    let mut out = Vec::new();
+    for piece in isolate_roots(&poly.fl, w.iv()) {
+        match piece {
+            RootPiece::Root { at, rising } => {
+                let e = End::float(poly, at, rising);
+                let inside = at.lo >= w.lo_end.iv.hi && at.hi <= w.hi_end.iv.lo;
+                if inside
+                    || (cmp_end(sc, &e, &w.lo_end) != Ordering::Less
+                        && cmp_end(sc, &e, &w.hi_end) != Ordering::Greater)
+                {
+                    out.push(e);
+                }
+            }
+            RootPiece::Unsure(at) => {
+                let p = poly.exact(sc);
+                if p.is_zero() {
+                    return None;
+                }
+                let lo = match at.lo_exact::<BigRational>() {
+                    Some(l) if l > w.lo => l,
+                    _ => w.lo.clone(),
+                };
+                let hi = match at.hi_exact::<BigRational>() {
+                    Some(h) if h < w.hi => h,
+                    _ => w.hi.clone(),
+                };
+                out.extend(p.roots_in(&lo, &hi).into_iter().map(End::known));
+            }
+        }
+    }
+    Some(out)
+}
+
+/// A closed set of times: sorted, disjoint closed components [a, b] (a ≤ b).
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Set {
+    /// The components.
+    pub comps: Vec<(End, End)>,
+}
+
+impl Set {
+    /// The empty set.
+    pub fn empty() -> Set {
+        Set { comps: Vec::new() }
+    }
+
+    /// The whole window.
+    pub fn all(w: &Window) -> Set {
+        Set {
+            comps: vec![(w.lo_end.clone(), w.hi_end.clone())],
+        }
+    }
+
+    /// Whether it has no point.
+    pub fn is_empty(&self) -> bool {
+        self.comps.is_empty()
+    }
+
+    /// The union of closed intervals, in any order: sorted by start, and merged where
+    /// one starts at or before the other's end (closed sets that touch are one
+    /// component).
+    pub fn union_of<F: ExactField>(sc: &Scene<'_, F>, mut parts: Vec<(End, End)>) -> Set {
+        parts.sort_by(|a, b| cmp_end(sc, &a.0, &b.0));
+        let mut comps: Vec<(End, End)> = Vec::with_capacity(parts.len());
+        for (a, b) in parts {
+            if let Some(last) = comps.last_mut() {
+                if cmp_end(sc, &a, &last.1) != Ordering::Greater {
+                    if cmp_end(sc, &b, &last.1) == Ordering::Greater {
+                        last.1 = b;
+                    }
+                    continue;
+                }
+            }
+            comps.push((a, b));
+        }
+        Set { comps }
+    }
+
+    /// self ∩ o.
+    pub fn intersect<F: ExactField>(&self, sc: &Scene<'_, F>, o: &Set) -> Set {
+        let mut comps = Vec::new();
+        let (mut i, mut j) = (0, 0);
+        while i < self.comps.len() && j < o.comps.len() {
+            let (a, b) = (&self.comps[i], &o.comps[j]);
+            let lo = if cmp_end(sc, &a.0, &b.0) == Ordering::Less {
+                &b.0
+            } else {
+                &a.0
+            };
+            let a_first = cmp_end(sc, &a.1, &b.1) == Ordering::Less;
+            let hi = if a_first { &a.1 } else { &b.1 };
+            if cmp_end(sc, lo, hi) != Ordering::Greater {
+                comps.push((lo.clone(), hi.clone()));
+            }
+            if a_first {
+                i += 1;
+            } else {
+                j += 1;
+            }
+        }
+        Set { comps }
+    }
+
+    /// The stretches of the window outside the set, each with a time strictly inside it
+    /// (or the window's one time): the relatively open gaps [w0, a1), (b_k, a_k+1),
+    /// (b_m, w1] around the components.
+    pub fn gaps<F: ExactField>(&self, sc: &Scene<'_, F>, w: &Window) -> Vec<(End, End, Sample)> {
+        let mut out = Vec::new();
+        let (Some(first), Some(last)) = (self.comps.first(), self.comps.last()) else {
+            let s = if w.is_point() {
+                Sample::rational(w.lo.clone())
+            } else {
+                Sample::between(sc, &w.lo_end, &w.hi_end)
+            };
+            out.push((w.lo_end.clone(), w.hi_end.clone(), s));
+            return out;
+        };
+        if cmp_end(sc, &w.lo_end, &first.0) == Ordering::Less {
+            let s = Sample::between(sc, &w.lo_end, &first.0);
+            out.push((w.lo_end.clone(), first.0.clone(), s));
+        }
+        for k in 1..self.comps.len() {
+            let (a, b) = (&self.comps[k - 1].1, &self.comps[k].0);
+            out.push((a.clone(), b.clone(), Sample::between(sc, a, b)));
+        }
+        if cmp_end(sc, &last.1, &w.hi_end) == Ordering::Less {
+            let s = Sample::between(sc, &last.1, &w.hi_end);
+            out.push((last.1.clone(), w.hi_end.clone(), s));
+        }
+        out
+    }
+}
+
+/// {t ∈ W : P(t) ≤ 0} (`want` Less) or {P(t) ≥ 0} (`want` Greater) for a scene
+/// polynomial P: its roots in W, and P's sign on each stretch between them taken at a
+/// sample (a root always belongs to the set; a stretch when P has the wanted sign).
+pub(crate) fn sign_set<F: ExactField>(
+    sc: &Scene<'_, F>,
+    poly: &Rc<Lazy>,
+    w: &Window,
+    want: Ordering,
+) -> Set {
+    if w.is_point() {
+        let s = sign_at_sample(sc, poly, &Sample::rational(w.lo.clone()));
+        return if s == want || s == Ordering::Equal {
+            Set::all(w)
+        } else {
+            Set::empty()
+        };
+    }
+    let Some(roots) = roots_in(sc, poly, w) else {
+        return Set::all(w);
+    };
+    // The stretches between the window's ends and the roots, in order, each with its
+    // ends; a root at a window end leaves no stretch there.
+    let mut pieces: Vec<(End, End, bool)> = Vec::with_capacity(2 * roots.len() + 1);
+    let mut from = w.lo_end.clone();
+    for r in roots {
+        if cmp_end(sc, &from, &r) == Ordering::Less {
+            let s = Sample::between(sc, &from, &r);
+            let keep = sign_at_sample(sc, poly, &s) == want;
+            pieces.push((from, r.clone(), keep));
+        }
+        pieces.push((r.clone(), r.clone(), true));
+        from = r;
+    }
+    if cmp_end(sc, &from, &w.hi_end) == Ordering::Less {
+        let s = Sample::between(sc, &from, &w.hi_end);
+        let keep = sign_at_sample(sc, poly, &s) == want;
+        pieces.push((from, w.hi_end.clone(), keep));
+    }
+    // Runs of kept pieces are components (a kept stretch's ends are roots or window
+    // ends, which belong to the closed set).
+    let mut comps: Vec<(End, End)> = Vec::new();
+    let mut open = false;
+    for (a, b, keep) in pieces {
+        if !keep {
+            open = false;
+            continue;
+        }
+        if open {
+            if let Some(last) = comps.last_mut() {
+                last.1 = b;
+            }
+        } else {
+            comps.push((a, b));
+            open = true;
+        }
+    }
+    Set { comps }
+}

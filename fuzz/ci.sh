@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 secs="${1:-20}"
-targets=(diff_same_2d diff_diff_2d diff_3d parse_jsonl parse_scenario api_arbitrary paper_b)
+targets=(diff_same_2d diff_diff_2d diff_3d parse_jsonl parse_scenario api_arbitrary paper_b intervals)
 
 # cargo-fuzz needs a nightly compiler (-Zsanitizer). Use the nightly toolchain when the
 # machine has one; otherwise let the stable compiler accept the nightly flags.

@@ -23,9 +23,10 @@ fuzz_target!(|data: &[u8]| {
                 Err(e) => panic!("a valid case, written back, does not parse: {e}"),
             }
             let ask = Ask {
-                engine: Engine::F64,
                 time: true,
-            };
+                ..Ask::of(Engine::F64)
+            }
+            .for_line(&parsed.options);
             let mut out = Map::new();
             if let Err(e) = answer(&case, ask, &mut out) {
                 panic!("the f64 engine gave no answer to a valid case: {e}");

@@ -171,8 +171,13 @@ pub struct EarthAnswer {
     /// `Exact` when every comparison behind the answer was certified, `Conservative` for
     /// a yes taken on an undecided one (the engine's [`Kind`]).
     pub kind: Kind,
-    /// The piece `[t_a, t_b]` (hours) of the first yes.
+    /// The first of `separation_windows_h`: when the aircraft may first be within BUFF.
     pub alarm_window_h: Option<[f64; 2]>,
+    /// Certified windows of loss of separation (hours, sorted, disjoint): at every time
+    /// at which the aircraft is within BUFF of the cell it is in one of them. Each is the
+    /// hull of the engine's near spans (docs/cases.md) of a piece's stand-in case, whose
+    /// grown buffer makes it a little wider than the exact interval on the Earth.
+    pub separation_windows_h: Vec<[f64; 2]>,
     /// How many pieces `[0, T]` was cut into.
     pub pieces: usize,
     /// The largest buffer handed to the engine (Mercator radians).
@@ -692,6 +697,7 @@ pub fn detect_earth_with(case: &EarthCase, opts: Options) -> Result<EarthAnswer,
         detected: false,
         kind: Kind::Exact,
         alarm_window_h: None,
+        separation_windows_h: Vec::new(),
         pieces: n,
         buff_merc_max: 0.0,
         effective_buff_nm: 0.0,
@@ -840,6 +846,12 @@ fn decide_pieces(
         };
         answer.buff_merc_max = answer.buff_merc_max.max(piece.buff_merc);
         answer.effective_buff_nm = answer.effective_buff_nm.max(piece.effective_nm);
+        add_windows(
+            &pcase,
+            ta,
+            piece.buff_merc,
+            &mut answer.separation_windows_h,
+        );
         if answer.detected {
             continue;
         }
@@ -851,10 +863,48 @@ fn decide_pieces(
             } else {
                 Kind::Exact
             };
-            answer.alarm_window_h = Some([ta, tb]);
         }
     }
+    answer.alarm_window_h = answer.separation_windows_h.first().copied();
     Ok(())
+}
+
+/// The next f64 below a time x ≥ 0 (0 stays 0).
+fn below(x: f64) -> f64 {
+    if x > 0.0 && x.is_finite() {
+        f64::from_bits(x.to_bits() - 1)
+    } else {
+        x.max(0.0)
+    }
+}
+
+/// The next f64 above a finite time x ≥ 0.
+fn above(x: f64) -> f64 {
+    if x.is_finite() && x >= 0.0 {
+        f64::from_bits(x.to_bits() + 1)
+    } else {
+        x
+    }
+}
+
+/// The windows of loss of separation of one piece starting at `ta` (hours): the hulls
+/// [start.lo, end.hi] of the engine's near spans (docs/cases.md) of the stand-in case
+/// with D = its grown buffer, moved to the piece's start with outward rounding and merged
+/// into `windows`. Certified: an aircraft within BUFF of the cell at t puts the stand-in
+/// point within the buffer of the stand-in cell at τ = t − t_a (module doc), and the
+/// spans miss no time of that set.
+fn add_windows(pcase: &api::Case, ta: f64, buff_merc: f64, windows: &mut Vec<[f64; 2]>) {
+    let sep = polyguard::Separation {
+        d: buff_merc,
+        h: 0.0,
+    };
+    for s in api::intervals(pcase, polyguard::Relation::Near, sep) {
+        let w = [below(ta + s.start.lo), above(ta + s.end.hi)];
+        match windows.last_mut() {
+            Some(last) if w[0] <= last[1] => last[1] = last[1].max(w[1]),
+            _ => windows.push(w),
+        }
+    }
 }
 
 /// [`Pieces::Auto`]: from the whole lookahead's deviation terms (quadratic in the piece's

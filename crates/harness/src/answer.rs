@@ -6,7 +6,11 @@ use serde_json::{Map, Value};
 
 use polyguard::api::{self, Case};
 
-use crate::case::RawCase;
+use polyguard::intervals::{Relation, Separation, Span};
+use polyguard_oracle::algebraic::RealAlg;
+use polyguard_oracle::intervals::Relation as ORelation;
+
+use crate::case::{CaseOptions, Fence, RawCase};
 use crate::classify::Exact;
 
 /// Which implementation answers.
@@ -23,13 +27,189 @@ pub enum Engine {
     Truth,
 }
 
-/// The engine asked for, and whether the f64 entry-time enclosure was (`detect --time`).
+/// The engine asked for, and what more than paper A's detection: the f64 entry-time
+/// enclosure (`detect --time`), the intervals (`--intervals`), the keep-in exit
+/// (`fence: "keep_in"`), with the separations they use.
 #[derive(Clone, Copy, Debug)]
 pub struct Ask {
     /// The engine.
     pub engine: Engine,
     /// Add `entry`, `entry_lo` and `entry_hi` (the f64 engine only).
     pub time: bool,
+    /// Add `intervals`: the spans of inside, near_D and breach_D (docs/cases.md).
+    pub intervals: bool,
+    /// D ≥ 0, the horizontal separation of near_D and fence_D.
+    pub sep: f64,
+    /// H ≥ 0, the vertical separation (3D).
+    pub sep_v: f64,
+    /// Keep-in: add `fence`, `exits` (and `exit_kind` for f64).
+    pub fence: Fence,
+}
+
+impl Ask {
+    /// Paper A's detection by `engine`, nothing more.
+    pub fn of(engine: Engine) -> Ask {
+        Ask {
+            engine,
+            time: false,
+            intervals: false,
+            sep: 0.0,
+            sep_v: 0.0,
+            fence: Fence::KeepOut,
+        }
+    }
+
+    /// This ask for a line with its own `sep`, `sep_v` and `fence` (the line's fields win
+    /// over the command line's).
+    pub fn for_line(self, o: &CaseOptions) -> Ask {
+        Ask {
+            sep: o.sep.unwrap_or(self.sep),
+            sep_v: o.sep_v.unwrap_or(self.sep_v),
+            fence: o.fence.unwrap_or(self.fence),
+            ..self
+        }
+    }
+}
+
+/// One span as the answer writes it (f64 engine).
+fn span_json(s: &Span) -> Value {
+    serde_json::json!({
+        "start": [s.start.lo, s.start.hi],
+        "end": [s.end.lo, s.end.hi],
+        "certain": s.certain,
+    })
+}
+
+/// The f64 engine's `intervals` object: D, H, the spans of each relation, and the
+/// enclosure of the time of loss of separation (near_D's first start; null if none).
+fn engine_intervals(case: &Case, sep: Separation) -> Value {
+    let mut m = Map::new();
+    m.insert("sep".into(), sep.d.into());
+    m.insert("sep_v".into(), sep.h.into());
+    let mut loss = Value::Null;
+    for r in [Relation::Inside, Relation::Near, Relation::Breach] {
+        let spans = api::intervals(case, r, sep);
+        if r == Relation::Near {
+            if let Some(s) = spans.first() {
+                loss = serde_json::json!([s.start.lo, s.start.hi]);
+            }
+        }
+        m.insert(
+            r.name().into(),
+            Value::Array(spans.iter().map(span_json).collect()),
+        );
+    }
+    m.insert("loss_of_separation".into(), loss);
+    Value::Object(m)
+}
+
+/// An f64 next to the algebraic number a: its isolating interval halved until it is
+/// narrower than 2⁻⁶⁰ of its ends' magnitude (or 400 times), then the midpoint rounded
+/// (a display value; the exact form says the number).
+fn near_f64(a: &RealAlg) -> f64 {
+    use num_traits::{Signed, ToPrimitive};
+    let mut x = a.clone();
+    for _ in 0..400 {
+        let (lo, hi) = x.bounds();
+        let w = hi - lo;
+        let m = if lo.abs() > hi.abs() {
+            lo.abs()
+        } else {
+            hi.abs()
+        };
+        if w * num_rational::BigRational::from_integer(num_bigint::BigInt::from(1u64 << 60)) <= m {
+            break;
+        }
+        x.refine();
+    }
+    let (lo, hi) = x.bounds();
+    let mid = (lo + hi) / num_rational::BigRational::from_integer(2.into());
+    mid.to_f64().unwrap_or(f64::NAN)
+}
+
+/// One exact end as the answer writes it: the nearest f64 and the exact form.
+fn end_json(out: &mut Map<String, Value>, key: &str, a: &RealAlg) {
+    out.insert(key.into(), near_f64(a).into());
+    out.insert(format!("{key}_exact"), a.exact_text().into());
+}
+
+/// The truth engine's `intervals` object: the exact components of each relation, every
+/// end as the nearest f64 and exactly, and the exact time of loss of separation.
+fn truth_intervals(case: &Case, sep: Separation) -> Result<Value, String> {
+    let (exact, lengths) = RawCase::from_api(case)
+        .exact_with_lengths::<Exact>(&[sep.d, sep.h])
+        .map_err(|e| e.to_string())?;
+    let [d, h]: [Exact; 2] = lengths
+        .try_into()
+        .map_err(|_| "sep: two lengths expected".to_string())?;
+    let osep = polyguard_oracle::intervals::Separation { d, h };
+    let mut m = Map::new();
+    m.insert("sep".into(), sep.d.into());
+    m.insert("sep_v".into(), sep.h.into());
+    let mut loss = Value::Null;
+    for (r, o) in [
+        (Relation::Inside, ORelation::Inside),
+        (Relation::Near, ORelation::Near),
+        (Relation::Breach, ORelation::Breach),
+    ] {
+        let comps = polyguard_oracle::intervals::intervals_of(&exact, o, &osep)
+            .map_err(|e| format!("truth undefined: {e}"))?;
+        let list: Vec<Value> = comps
+            .iter()
+            .map(|(a, b)| {
+                let mut c = Map::new();
+                end_json(&mut c, "start", a);
+                end_json(&mut c, "end", b);
+                Value::Object(c)
+            })
+            .collect();
+        if r == Relation::Near {
+            if let Some((a, _)) = comps.first() {
+                let mut c = Map::new();
+                end_json(&mut c, "time", a);
+                loss = Value::Object(c);
+            }
+        }
+        m.insert(r.name().into(), Value::Array(list));
+    }
+    m.insert("loss_of_separation".into(), loss);
+    Ok(Value::Object(m))
+}
+
+/// `fence`, `exits` and (f64) `exit_kind`: does the point leave the keep-in fence?
+fn exit_fields(out: &mut Map<String, Value>, case: &Case, ask: Ask) -> Result<(), String> {
+    out.insert("fence".into(), ask.fence.name().into());
+    let sep = Separation {
+        d: ask.sep,
+        h: ask.sep_v,
+    };
+    match ask.engine {
+        Engine::F64 => {
+            let d = api::detect_exit(case, sep);
+            out.insert("exits".into(), d.detected.into());
+            out.insert("exit_kind".into(), d.kind.name().into());
+        }
+        Engine::Truth => {
+            let (exact, lengths) = RawCase::from_api(case)
+                .exact_with_lengths::<Exact>(&[sep.d, sep.h])
+                .map_err(|e| e.to_string())?;
+            let [d, h]: [Exact; 2] = lengths
+                .try_into()
+                .map_err(|_| "sep: two lengths expected".to_string())?;
+            let osep = polyguard_oracle::intervals::Separation { d, h };
+            let comps =
+                polyguard_oracle::intervals::intervals_of(&exact, ORelation::Breach, &osep)
+                    .map_err(|e| format!("truth undefined: {e}"))?;
+            out.insert("exits".into(), (!comps.is_empty()).into());
+        }
+        Engine::Plain | Engine::Exact => {
+            return Err(
+                "fence: keep_in is answered by the f64 and truth engines (paper A has no exit detection)"
+                    .into(),
+            )
+        }
+    }
+    Ok(())
 }
 
 /// The exact case the oracle reads: the rationals the f64 inputs denote.
@@ -119,6 +299,27 @@ pub fn answer(case: &Case, ask: Ask, out: &mut Map<String, Value>) -> Result<(),
             out.insert("decided_by".into(), "truth".into());
             well_formed_fields(out, exact_well_formed(case, &exact)?);
         }
+    }
+    let sep = Separation {
+        d: ask.sep,
+        h: ask.sep_v,
+    };
+    if ask.intervals {
+        match ask.engine {
+            Engine::F64 => {
+                out.insert("intervals".into(), engine_intervals(case, sep));
+            }
+            Engine::Truth => {
+                out.insert("intervals".into(), truth_intervals(case, sep)?);
+            }
+            Engine::Plain | Engine::Exact => return Err(
+                "--intervals is answered by the f64 and truth engines (paper A has no intervals)"
+                    .into(),
+            ),
+        }
+    }
+    if ask.fence == Fence::KeepIn {
+        exit_fields(out, case, ask)?;
     }
     Ok(())
 }

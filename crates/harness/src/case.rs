@@ -14,6 +14,95 @@ pub struct ParsedLine {
     pub id: Value,
     /// The engine's validated case, or the first thing wrong with the line.
     pub case: Result<Case, CaseError>,
+    /// The line's separation and fence fields (their defaults when the line has none, or
+    /// when it could not be read: then `case` says why).
+    pub options: CaseOptions,
+}
+
+/// What kind of area the polygon is (the case format's `fence`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Fence {
+    /// Keep out (the default): the question is whether the point comes in.
+    #[default]
+    KeepOut,
+    /// Keep in: the question is whether the point leaves (breach_D, docs/cases.md).
+    KeepIn,
+}
+
+impl Fence {
+    /// The format's name: "keep_out" or "keep_in".
+    pub fn name(self) -> &'static str {
+        match self {
+            Fence::KeepOut => "keep_out",
+            Fence::KeepIn => "keep_in",
+        }
+    }
+
+    /// The fence of a name ("keep_in", "keep_out"; the command line's "keep-in" too).
+    pub fn from_name(name: &str) -> Option<Fence> {
+        match name {
+            "keep_out" | "keep-out" => Some(Fence::KeepOut),
+            "keep_in" | "keep-in" => Some(Fence::KeepIn),
+            _ => None,
+        }
+    }
+}
+
+/// The case format's optional fields for intervals and fences (docs/cases.md,
+/// "Separation and fences"): the horizontal separation D (`sep`), the vertical
+/// separation H (`sep_v`), and the fence kind. `None` where the line gives none, so that
+/// a command-line default can apply.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct CaseOptions {
+    /// D ≥ 0, in the case's length unit.
+    pub sep: Option<f64>,
+    /// H ≥ 0, in the case's height unit (3D cases).
+    pub sep_v: Option<f64>,
+    /// `fence`, when given.
+    pub fence: Option<Fence>,
+}
+
+/// A separation field: finite and ≥ 0 (the definitions of near_D and fence_D).
+fn separation(v: &Value, field: &'static str) -> Result<f64, CaseError> {
+    let x = number(v, field)?;
+    if x >= 0.0 {
+        Ok(x)
+    } else {
+        Err(CaseError::OutOfRange {
+            field,
+            value: x,
+            range: "[0, ∞) (a distance)",
+        })
+    }
+}
+
+/// The case format's `sep`, `sep_v` and `fence` of a case object (docs/cases.md).
+pub fn case_options(obj: &Map<String, Value>) -> Result<CaseOptions, CaseError> {
+    let present = |k: &str| obj.get(k).filter(|v| !v.is_null());
+    let sep = present("sep").map(|v| separation(v, "sep")).transpose()?;
+    let sep_v = present("sep_v")
+        .map(|v| separation(v, "sep_v"))
+        .transpose()?;
+    let fence = match present("fence") {
+        None => None,
+        Some(Value::String(s)) => Some(match s.as_str() {
+            "keep_in" => Fence::KeepIn,
+            "keep_out" => Fence::KeepOut,
+            _ => {
+                return Err(CaseError::WrongType {
+                    field: "fence".into(),
+                    expected: "\"keep_in\" or \"keep_out\"",
+                })
+            }
+        }),
+        Some(_) => {
+            return Err(CaseError::WrongType {
+                field: "fence".into(),
+                expected: "\"keep_in\" or \"keep_out\"",
+            })
+        }
+    };
+    Ok(CaseOptions { sep, sep_v, fence })
 }
 
 /// The case format (not a paper function): a JSON value read strictly: an object that gives a key twice is an error naming the
@@ -107,6 +196,7 @@ pub fn parse_line_with(line: &str, line_no: usize, default_kappa_deg: f64) -> Pa
             return ParsedLine {
                 id,
                 case: Err(error),
+                options: CaseOptions::default(),
             };
         }
     };
@@ -116,16 +206,19 @@ pub fn parse_line_with(line: &str, line_no: usize, default_kappa_deg: f64) -> Pa
             case: Err(CaseError::Syntax {
                 message: "the line is JSON but not an object".into(),
             }),
+            options: CaseOptions::default(),
         };
     };
     let id = obj
         .get("id")
         .cloned()
         .unwrap_or_else(|| Value::from(line_no));
-    ParsedLine {
-        id,
-        case: case_from_object_with(&obj, default_kappa_deg),
-    }
+    let case = case_from_object_with(&obj, default_kappa_deg);
+    let (case, options) = match (case, case_options(&obj)) {
+        (Ok(c), Ok(o)) => (Ok(c), o),
+        (Err(e), _) | (Ok(_), Err(e)) => (Err(e), CaseOptions::default()),
+    };
+    ParsedLine { id, case, options }
 }
 
 /// The case format (not a paper function): the error of a line that strict JSON reading
@@ -394,8 +487,11 @@ fn points(v: &Value, field: &str) -> Result<Vec<[f64; 2]>, CaseError> {
 /// The keys each level of a case line may have (docs: the case format). `meta` holds
 /// annotations for people and tools (a kept counterexample's class, why a regression
 /// case is there); detection never reads it.
-const TOP_KEYS: [&str; 8] = [
+const TOP_KEYS: [&str; 11] = [
     "id",
+    "sep",
+    "sep_v",
+    "fence",
     "lookahead",
     "buff",
     "fac",
@@ -608,6 +704,50 @@ impl RawCase {
     /// when it is near unit scale already (|s| ≤ 64) or some number would not move
     /// exactly (it would round, overflow or underflow).
     fn at_unit_scale(&self) -> Option<RawCase> {
+        self.unit_scale_exponent().map(|s| self.times_pow2(s))
+    }
+
+    /// The exact case of [`Self::exact`] and the exact values of `lengths` (separations
+    /// in the case's units) moved by the same power of two, so that they keep their
+    /// meaning in the moved case. A length that would not move exactly is refused with
+    /// the case (as `exact` refuses nothing: then the case is taken as it is).
+    pub fn exact_with_lengths<F: polyguard_oracle::ExactField>(
+        &self,
+        lengths: &[f64],
+    ) -> Result<(polyguard_oracle::ExactCase<F>, Vec<F>), polyguard_oracle::OracleError> {
+        let s = self
+            .unit_scale_exponent()
+            .filter(|&s| {
+                lengths.iter().all(|&x| {
+                    let m = x * 2f64.powi(s / 2) * 2f64.powi(s - s / 2);
+                    m * 2f64.powi(-s / 2) * 2f64.powi(-s - (-s / 2)) == x
+                })
+            })
+            .unwrap_or(0);
+        let moved = if s == 0 {
+            self.clone()
+        } else {
+            self.times_pow2(s)
+        };
+        let case = moved.exact_as_is()?;
+        let exact = lengths
+            .iter()
+            .map(|&x| {
+                let m = x * 2f64.powi(s / 2) * 2f64.powi(s - s / 2);
+                polyguard_oracle::convert::f64_to_exact::<F>(m).ok_or(
+                    polyguard_oracle::OracleError {
+                        field: "sep",
+                        message: "not a finite number".into(),
+                    },
+                )
+            })
+            .collect::<Result<Vec<F>, _>>()?;
+        Ok((case, exact))
+    }
+
+    /// The power of two 2^s that moves the case to unit scale (see
+    /// [`Self::at_unit_scale`]).
+    fn unit_scale_exponent(&self) -> Option<i32> {
         let mut all = self
             .pos
             .iter()
@@ -626,7 +766,7 @@ impl RawCase {
         }
         let c = self.times_pow2(s);
         // a round trip checks that every number moved exactly
-        (c.times_pow2(-s) == *self).then_some(c)
+        (c.times_pow2(-s) == *self).then_some(s)
     }
 
     /// The case with its lengths, heights and velocities multiplied by 2^s (T and F as

@@ -489,7 +489,7 @@ fn polygon<S: Source>(
 
 /// Is the case's polygon simple at every time of [0, T], decided exactly? (A case the
 /// oracle cannot read counts as not.)
-fn simple_throughout(raw: &RawCase) -> bool {
+pub(crate) fn simple_throughout(raw: &RawCase) -> bool {
     raw.exact::<super::classify::Exact>()
         .is_ok_and(|c| polyguard_oracle::truth::simple_on_window(&c).is_ok())
 }

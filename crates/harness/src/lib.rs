@@ -21,6 +21,7 @@ pub mod batch;
 pub mod case;
 pub mod classify;
 pub mod gen;
+pub mod intervals;
 pub mod minimise;
 pub mod paper_b;
 pub mod report;

@@ -74,6 +74,12 @@ pub struct AssureArgs {
     /// are refused (paper A's).
     #[arg(long, value_enum, default_value_t = PaperArg::A)]
     pub paper: PaperArg,
+    /// Hunt the certified intervals (inside, near_D, breach_D: docs/cases.md) and keep-in
+    /// exit detection against the oracle's exact algebraic truth instead of paper A's
+    /// detection (docs/assurance.md, "Intervals"). `--engine` is then `f64` or one of the
+    /// canaries `shifted-end`, `drop-second`, `flat-exit`.
+    #[arg(long, conflicts_with = "contract")]
+    pub intervals: bool,
 }
 
 /// `--paper` of `polyguard assure`.
@@ -140,12 +146,26 @@ pub enum EngineArg {
     /// enclosure moved right by two resolution steps (T·2⁻³⁶ each), so that a crossing's
     /// exact entry time falls before it (class `time_outside`).
     ShiftedTime,
+    /// The canary of `--intervals`' end check: every span's end enclosure moved right
+    /// past itself (class `end_outside`).
+    ShiftedEnd,
+    /// The canary of `--intervals`' coverage check: the second span of every relation
+    /// dropped (class `interval_missed`).
+    DropSecond,
+    /// The canary of `--intervals`' exit check: exit detection blind to the slab (class
+    /// `exit_missed` on fences left through the floor or ceiling).
+    FlatExit,
 }
 
 impl From<EngineArg> for Hunted {
     fn from(e: EngineArg) -> Hunted {
         match e {
-            EngineArg::F64 | EngineArg::Pipeline | EngineArg::Sampled => Hunted::Certified,
+            EngineArg::F64
+            | EngineArg::Pipeline
+            | EngineArg::Sampled
+            | EngineArg::ShiftedEnd
+            | EngineArg::DropSecond
+            | EngineArg::FlatExit => Hunted::Certified,
             EngineArg::Plain => Hunted::Plain,
             EngineArg::ShiftedTime => Hunted::ShiftedTime,
         }
@@ -357,6 +377,9 @@ pub fn run(args: &AssureArgs) -> ExitCode {
     if args.paper == PaperArg::B {
         return run_paper_b(args);
     }
+    if args.intervals {
+        return run_intervals(args);
+    }
     let hunted = match paper_a_engine(args) {
         Ok(h) => h,
         Err(code) => return code,
@@ -405,6 +428,13 @@ fn paper_a_engine(args: &AssureArgs) -> Result<Hunted, ExitCode> {
             "polyguard assure: --engine {} is paper B's: add --paper b (paper A's engines are f64, plain and shifted-time)",
             if args.engine == EngineArg::Pipeline { "pipeline" } else { "sampled" }
         );
+        return Err(ExitCode::from(2));
+    }
+    if matches!(
+        args.engine,
+        EngineArg::ShiftedEnd | EngineArg::DropSecond | EngineArg::FlatExit
+    ) {
+        eprintln!("polyguard assure: --engine shifted-end, drop-second and flat-exit are canaries of --intervals: add --intervals");
         return Err(ExitCode::from(2));
     }
     let hunted = Hunted::from(args.engine);
@@ -506,14 +536,45 @@ fn one_case(c: &Campaign, k: u64, local: &mut Report, interesting: &Mutex<Vec<Fo
     })
 }
 
+/// `assure --intervals`.
+fn run_intervals(args: &AssureArgs) -> ExitCode {
+    use polyguard_harness::intervals::judge::IntervalEngine;
+    let engine = match args.engine {
+        EngineArg::F64 => IntervalEngine::Certified,
+        EngineArg::ShiftedEnd => IntervalEngine::ShiftedEnd,
+        EngineArg::DropSecond => IntervalEngine::DropSecond,
+        EngineArg::FlatExit => IntervalEngine::FlatExit,
+        other => {
+            eprintln!(
+                "polyguard assure: --intervals judges --engine f64, shifted-end, drop-second or flat-exit, not {other:?}"
+            );
+            return ExitCode::from(2);
+        }
+    };
+    let campaign = super::assure_intervals::IntervalCampaign {
+        seed: args.seed,
+        shard: args.shard.unwrap_or((0, 1)),
+        cases: args.cases,
+        space: args.aim.unwrap_or_default(),
+        engine,
+        threads: threads(args),
+        quiet: args.quiet,
+    };
+    super::assure_intervals::run(&campaign, &args.out)
+}
+
 /// `assure --paper b`.
 fn run_paper_b(args: &AssureArgs) -> ExitCode {
     use super::assure_b::{self, EngineB};
     let engine = match args.engine {
         EngineArg::F64 | EngineArg::Pipeline => EngineB::Pipeline,
         EngineArg::Sampled => EngineB::Sampled,
-        EngineArg::Plain | EngineArg::ShiftedTime => {
-            eprintln!("polyguard assure: --engine plain and shifted-time are paper A's canaries; paper B's is --engine sampled");
+        EngineArg::Plain
+        | EngineArg::ShiftedTime
+        | EngineArg::ShiftedEnd
+        | EngineArg::DropSecond
+        | EngineArg::FlatExit => {
+            eprintln!("polyguard assure: --engine plain, shifted-time, shifted-end, drop-second and flat-exit are paper A's canaries; paper B's is --engine sampled");
             return ExitCode::from(2);
         }
     };
@@ -633,6 +694,21 @@ fn merge(paths: &[PathBuf], out: &Path, partial: bool) -> ExitCode {
             .ok()
             .is_some_and(|v| v.get("paper").and_then(|p| p.as_str()) == Some("b"))
     };
+    let is_intervals = |t: &str| {
+        serde_json::from_str::<serde_json::Value>(t)
+            .ok()
+            .is_some_and(|v| v.get("hunt").and_then(|p| p.as_str()) == Some("intervals"))
+    };
+    let iv = texts.iter().filter(|t| is_intervals(t)).count();
+    if iv == texts.len() {
+        return super::assure_intervals::merge(paths, &texts, out, partial);
+    }
+    if iv > 0 {
+        return fail(format!(
+            "{iv} of the {} reports are interval hunts and the rest are not: merge each hunt apart",
+            texts.len()
+        ));
+    }
     let b = texts.iter().filter(|t| is_b(t)).count();
     if b == texts.len() {
         return super::assure_b::merge(paths, &texts, out, partial);

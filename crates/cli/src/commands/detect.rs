@@ -12,7 +12,7 @@ use serde_json::{json, Map, Value};
 
 use polyguard::api::{self, Case};
 use polyguard_harness::answer::{answer, Ask, Engine};
-use polyguard_harness::case::parse_line_with;
+use polyguard_harness::case::{parse_line_with, Fence};
 
 /// Which implementation answers (the command line's names for [`Engine`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -67,6 +67,37 @@ pub struct DetectArgs {
     /// engine only: the truth engine gives `entry_time` exactly without it).
     #[arg(long)]
     pub time: bool,
+    /// Also answer every interval of [0, T] in which the point is inside the polygon, near
+    /// it (within --sep, and --sep-v of the slab), and breaching it as a keep-in fence, each
+    /// end as a certified enclosure (f64) or exactly (truth): `intervals` (docs/cases.md,
+    /// "Separation and fences").
+    #[arg(long)]
+    pub intervals: bool,
+    /// D ≥ 0, the horizontal separation of near and breach, for cases without `sep`.
+    #[arg(long, default_value_t = 0.0, value_parser = parse_separation)]
+    pub sep: f64,
+    /// H ≥ 0, the vertical separation (3D), for cases without `sep_v`.
+    #[arg(long, default_value_t = 0.0, value_parser = parse_separation)]
+    pub sep_v: f64,
+    /// keep-in: also answer whether the point leaves the polygon as a keep-in fence (comes
+    /// within --sep of its edges, or --sep-v of its floor or ceiling): `fence`, `exits`,
+    /// `exit_kind`. For cases without `fence`.
+    #[arg(long, value_parser = parse_fence)]
+    pub fence: Option<Fence>,
+}
+
+/// `--sep`, `--sep-v`: a finite distance ≥ 0.
+fn parse_separation(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(x) if x.is_finite() && x >= 0.0 => Ok(x),
+        Ok(x) => Err(format!("{x} is not a distance ≥ 0")),
+        Err(e) => Err(format!("{s}: {e}")),
+    }
+}
+
+/// `--fence keep-in | keep-out`.
+fn parse_fence(s: &str) -> Result<Fence, String> {
+    Fence::from_name(s).ok_or_else(|| format!("{s:?}: expected keep-in or keep-out"))
 }
 
 /// `--case-timeout`: a positive, finite number of seconds.
@@ -167,6 +198,12 @@ fn open(file: &Option<PathBuf>) -> io::Result<Box<dyn BufRead>> {
 
 /// Runs `polyguard detect`: one answer line per non-blank input line, in order.
 pub fn run(args: &DetectArgs) -> ExitCode {
+    if (args.intervals || args.fence == Some(Fence::KeepIn))
+        && matches!(args.engine, EngineArg::Plain | EngineArg::Exact)
+    {
+        eprintln!("polyguard detect: --intervals and --fence keep-in are answered by the f64 and truth engines (paper A has neither)");
+        return ExitCode::from(2);
+    }
     if args.time && args.engine != EngineArg::F64 {
         eprintln!("polyguard detect: --time is answered by the f64 engine only (the truth engine gives entry_time without it)");
         return ExitCode::from(2);
@@ -224,8 +261,12 @@ pub fn process<R: BufRead, W: Write>(
     let mut groups: BTreeMap<GroupKey, Group> = BTreeMap::new();
     let mut worker: Option<Worker> = None;
     let ask = Ask {
-        engine: args.engine.into(),
         time: args.time,
+        intervals: args.intervals,
+        sep: args.sep,
+        sep_v: args.sep_v,
+        fence: args.fence.unwrap_or_default(),
+        ..Ask::of(args.engine.into())
     };
     loop {
         buf.clear();
@@ -246,6 +287,7 @@ pub fn process<R: BufRead, W: Write>(
             continue;
         }
         let parsed = parse_line_with(text, line_no, args.kappa);
+        let ask = ask.for_line(&parsed.options);
         let mut obj = Map::new();
         obj.insert("id".into(), parsed.id);
         let result = match (parsed.case, args.case_timeout) {

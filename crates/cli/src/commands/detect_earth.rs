@@ -193,6 +193,7 @@ pub fn answer_line(
         if let Some(w) = a.alarm_window_h {
             out.insert("alarm_window_h".into(), json!(w));
         }
+        out.insert("separation_windows_h".into(), json!(a.separation_windows_h));
         out.insert("pieces".into(), a.pieces.into());
         out.insert("effective_buff_nm".into(), a.effective_buff_nm.into());
         out.insert("geodesy".into(), geo.name().into());

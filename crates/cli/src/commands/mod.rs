@@ -2,6 +2,7 @@
 pub mod assure;
 pub mod assure_b;
 pub mod assure_common;
+pub mod assure_intervals;
 pub mod conflicts;
 pub mod detect;
 pub mod detect_batch;

@@ -1,0 +1,240 @@
+//! `polyguard assure --intervals`: a seeded hunt of the engine's certified intervals
+//! (inside, near_D, breach_D) and keep-in exit detection against the oracle's exact
+//! algebraic truth (docs/assurance.md, "Intervals").
+
+use std::fs;
+use std::path::Path;
+use std::process::ExitCode;
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::Mutex;
+use std::time::Instant;
+
+use polyguard_harness::gen::{Space, SplitMix};
+use polyguard_harness::intervals::gen::{interval_case, IntervalCase};
+use polyguard_harness::intervals::judge::{judge, IntervalEngine, IntervalVerdict};
+use polyguard_harness::intervals::report::{IntervalReport, KeptInterval};
+
+use super::assure_common::{keep_lowest, write_report, CampaignProgress};
+
+/// How many cases of each failing class a run keeps.
+pub const KEEP_PER_CLASS: usize = 5;
+
+/// What one interval hunt draws and judges.
+pub struct IntervalCampaign {
+    /// The seed.
+    pub seed: u64,
+    /// Shard i of N.
+    pub shard: (u64, u64),
+    /// The campaign's size (all shards).
+    pub cases: u64,
+    /// The threshold half's scale space.
+    pub space: Space,
+    /// The engine judged.
+    pub engine: IntervalEngine,
+    /// Worker threads.
+    pub threads: usize,
+    /// No progress lines.
+    pub quiet: bool,
+}
+
+/// Case k of an interval campaign.
+pub fn campaign_interval_case(seed: u64, k: u64, space: &Space) -> IntervalCase {
+    let mut m = SplitMix(seed ^ k.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ 0x1A7E_5EED);
+    let s = polyguard_harness::gen::Source::next_u64(&mut m);
+    interval_case(&mut SplitMix(s), space)
+}
+
+/// A kept failing case: index, verdict, case.
+type Found = (u64, IntervalVerdict, IntervalCase);
+
+/// Runs the campaign into `out` (report.json, summary.txt, counterexamples/).
+pub fn run(c: &IntervalCampaign, out: &Path) -> ExitCode {
+    if let Err(e) = fs::create_dir_all(out) {
+        eprintln!("polyguard assure: cannot create {}: {e}", out.display());
+        return ExitCode::from(2);
+    }
+    let (shard_i, shard_n) = c.shard;
+    let mine = polyguard_harness::report::shard_size(c.cases, shard_i, shard_n);
+    let progress = CampaignProgress::new(mine, c.quiet);
+    let start = Instant::now();
+    let next = AtomicU64::new(0);
+    let report = Mutex::new(IntervalReport::new(
+        c.seed,
+        c.engine.name(),
+        c.space.label(),
+    ));
+    let found: Mutex<Vec<Found>> = Mutex::new(Vec::new());
+    std::thread::scope(|scope| {
+        for _ in 0..c.threads {
+            scope.spawn(|| {
+                let mut local = IntervalReport::default();
+                loop {
+                    let j = next.fetch_add(1, Ordering::Relaxed);
+                    if j >= mine {
+                        break;
+                    }
+                    let k = j * shard_n + shard_i;
+                    let ic = campaign_interval_case(c.seed, k, &c.space);
+                    let failed = match judge(&ic, c.engine) {
+                        Ok(v) => {
+                            local.add(&v, ic.mode);
+                            let failed = v.class.is_failure();
+                            if failed {
+                                if let Ok(mut g) = found.lock() {
+                                    keep_lowest(
+                                        &mut g,
+                                        (k, v, ic),
+                                        KEEP_PER_CLASS,
+                                        |f| f.0,
+                                        |f| f.1.class,
+                                    );
+                                }
+                            }
+                            failed
+                        }
+                        Err(e) => {
+                            eprintln!("polyguard assure: case {k} rejected: {e:?}");
+                            local.rejected += 1;
+                            false
+                        }
+                    };
+                    progress.inc(failed);
+                }
+                if let Ok(mut r) = report.lock() {
+                    r.absorb(&local);
+                }
+            });
+        }
+    });
+    progress.finish();
+    let mut report = report.into_inner().unwrap_or_default();
+    report.shards = vec![format!("{shard_i}/{shard_n}")];
+    report.campaign_cases = c.cases;
+    report.wall_seconds = start.elapsed().as_secs_f64();
+    let mut found = found.into_inner().unwrap_or_default();
+    found.sort_by_key(|f| f.0);
+    report.kept.clear();
+    for (k, v, ic) in &found {
+        match write_kept(out, *k, v, ic) {
+            Ok(kept) => report.kept.push(kept),
+            Err(e) => eprintln!("polyguard assure: cannot write counterexample {k}: {e}"),
+        }
+    }
+    finish(&report, out)
+}
+
+/// The spans of a verdict as JSON (the meta of a kept case).
+fn spans_json(v: &IntervalVerdict) -> serde_json::Value {
+    let mut m = serde_json::Map::new();
+    for r in &v.relations {
+        let spans: Vec<serde_json::Value> = r
+            .spans
+            .iter()
+            .map(|s| {
+                serde_json::json!({
+                    "start": [s.start.lo, s.start.hi],
+                    "end": [s.end.lo, s.end.hi],
+                    "certain": s.certain,
+                })
+            })
+            .collect();
+        m.insert(r.relation.name().into(), spans.into());
+        if let Some(why) = &r.why {
+            m.insert(format!("{}_why", r.relation.name()), why.clone().into());
+        }
+    }
+    serde_json::Value::Object(m)
+}
+
+/// Writes a kept case's file (the case, its separations, and in `meta` its class, mode,
+/// the engine's spans and why it failed).
+fn write_kept(
+    out: &Path,
+    k: u64,
+    v: &IntervalVerdict,
+    ic: &IntervalCase,
+) -> std::io::Result<KeptInterval> {
+    let stem = format!("{}-{k}", v.class.name());
+    let case_file = format!("counterexamples/{stem}.jsonl");
+    fs::create_dir_all(out.join("counterexamples"))?;
+    let extra = [
+        ("class", serde_json::Value::from(v.class.name())),
+        ("mode", ic.mode.into()),
+        ("spans", spans_json(v)),
+        (
+            "exit",
+            serde_json::json!({
+                "truth": v.exit_truth,
+                "engine": format!("{:?}", v.exit_engine),
+            }),
+        ),
+    ];
+    fs::write(out.join(&case_file), ic.to_json_line(&stem, &extra) + "\n")?;
+    Ok(KeptInterval {
+        index: k,
+        class: v.class,
+        mode: ic.mode.into(),
+        case_file,
+    })
+}
+
+/// Writes report.json and summary.txt and prints the summary; exit 1 on a failure.
+pub fn finish(report: &IntervalReport, out: &Path) -> ExitCode {
+    if let Err(code) = write_report(report, out) {
+        return code;
+    }
+    let mut text = report.summary();
+    if report.rejected > 0 {
+        text += &format!(
+            "{} generated cases were rejected by the engine or the oracle\n",
+            report.rejected
+        );
+    }
+    for k in &report.kept {
+        text += &format!("kept {} ({}): {}\n", k.class.name(), k.mode, k.case_file);
+    }
+    text += &format!("report: {}\n", out.join("report.json").display());
+    let _ = fs::write(out.join("summary.txt"), &text);
+    print!("{text}");
+    if report.failures() > 0 || report.rejected > 0 {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    }
+}
+
+/// `assure merge` of interval reports: joins the shards and copies their kept cases.
+pub fn merge(
+    paths: &[std::path::PathBuf],
+    texts: &[String],
+    out: &Path,
+    partial: bool,
+) -> ExitCode {
+    let fail = |msg: String| {
+        eprintln!("polyguard assure merge: {msg}");
+        ExitCode::from(2)
+    };
+    let mut reports = Vec::with_capacity(texts.len());
+    for (p, t) in paths.iter().zip(texts) {
+        match IntervalReport::from_json(t) {
+            Ok(r) => reports.push(r),
+            Err(e) => return fail(format!("{} is not an interval report: {e}", p.display())),
+        }
+    }
+    let merged = match IntervalReport::merge_campaign(&reports, partial) {
+        Ok(m) => m,
+        Err(e) => return fail(e),
+    };
+    if let Err(e) = fs::create_dir_all(out.join("counterexamples")) {
+        return fail(format!("cannot create {}: {e}", out.display()));
+    }
+    for (p, r) in paths.iter().zip(&reports) {
+        let dir = p.parent().unwrap_or_else(|| Path::new("."));
+        for k in &r.kept {
+            if let Err(e) = fs::copy(dir.join(&k.case_file), out.join(&k.case_file)) {
+                return fail(format!("cannot copy {}: {e}", k.case_file));
+            }
+        }
+    }
+    finish(&merged, out)
+}

@@ -26,7 +26,10 @@ fn json_lines(s: &str) -> Vec<Value> {
 
 /// The hand-computed ends of docs/intervals.md, per example and relation, as the exact
 /// rationals the truth prints and their values.
-const HAND: [(&str, &str, &[(&str, f64, &str, f64)]); 5] = [
+/// One exact component: its start and end, each as the truth's text and its value.
+type Component = (&'static str, f64, &'static str, f64);
+
+const HAND: [(&str, &str, &[Component]); 5] = [
     (
         "cell-entered-twice",
         "inside",

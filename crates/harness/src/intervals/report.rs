@@ -121,6 +121,8 @@ pub struct IntervalReport {
     pub relations: BTreeMap<String, RelationCounts>,
     /// Per generator mode, cases per class.
     pub modes: BTreeMap<String, BTreeMap<IntervalClass, u64>>,
+    /// Per generator mode, the time in the engine's intervals and in the truth (ns).
+    pub mode_nanos: BTreeMap<String, [u64; 2]>,
     /// Exit answers: "truth/engine" (truth yes|no|undefined, engine yes|no|unsure) → count.
     pub exits: BTreeMap<String, u64>,
     /// Time in the engine's intervals, the oracle's, the exit detection and detect_time
@@ -168,6 +170,9 @@ impl IntervalReport {
             .or_default()
             .entry(v.class)
             .or_default() += 1;
+        let mn = self.mode_nanos.entry(mode.into()).or_default();
+        mn[0] += v.nanos[0];
+        mn[1] += v.nanos[1];
         let t = v.lookahead;
         for r in &v.relations {
             let c = self.relations.entry(r.relation.name().into()).or_default();
@@ -222,6 +227,11 @@ impl IntervalReport {
             for (k, n) in classes {
                 *mine.entry(*k).or_default() += n;
             }
+        }
+        for (m, ns) in &o.mode_nanos {
+            let mine = self.mode_nanos.entry(m.clone()).or_default();
+            mine[0] += ns[0];
+            mine[1] += ns[1];
         }
         for (k, n) in &o.exits {
             *self.exits.entry(k.clone()).or_default() += n;
@@ -370,6 +380,22 @@ impl IntervalReport {
                 per(1),
                 per(2),
                 per(3)
+            ));
+        }
+        s.push_str("\nper mode: cases, engine µs and truth µs per case, failures\n");
+        for (m, classes) in &self.modes {
+            let n: u64 = classes.values().sum();
+            let f: u64 = classes
+                .iter()
+                .filter(|(c, _)| c.is_failure())
+                .map(|(_, k)| k)
+                .sum();
+            let ns = self.mode_nanos.get(m).copied().unwrap_or_default();
+            let per = |x: u64| x as f64 / n.max(1) as f64 / 1e3;
+            s.push_str(&format!(
+                "  {m:<28} {n:>9} {:>10.1} {:>10.1} {f:>6}\n",
+                per(ns[0]),
+                per(ns[1])
             ));
         }
         s.push_str("\nclasses:\n");

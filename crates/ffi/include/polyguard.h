@@ -9,6 +9,11 @@
  * The contract: if paper A computed without rounding says the point comes within BUFF
  * of the polygon, pg_detect says detected (and so does pg_detect_batch for that pair).
  *
+ * Beyond paper A (docs/cases.md, "Separation and fences"): pg_intervals encloses every
+ * time the point is inside the polygon, within a separation of it (loss of separation),
+ * or breaching a keep-in fence; pg_detect_exit says whether it leaves a keep-in fence,
+ * never "no" when it does.
+ *
  * Rules of every function:
  *  - It returns an int status: PG_OK (0) or a negative PG_ERR_* code, and keeps a
  *    message naming the field ("polygon.vertices: clockwise order ...") that
@@ -18,12 +23,13 @@
  *    PG_ERR_PANIC. (Memory exhaustion aborts the process, as in Rust.)
  *  - Ownership: the caller owns every array. The library reads them during the call
  *    only, keeps no pointer, and never returns memory the caller must free: results are
- *    written through the caller's out-pointers (pg_detect_batch into a caller-allocated
- *    array of capacity cap, see there). Array pointers may be NULL only when their
- *    length is 0, or where a NULL is documented (velocities: at rest; slabs: 2D).
- *  - On an error, pg_detect and pg_detect_time still write the most conservative answer
- *    (detected; entry possible at any time), so that an unchecked status never reads
- *    as "no".
+ *    written through the caller's out-pointers (pg_detect_batch and pg_intervals into
+ *    a caller-allocated array of capacity cap, see there). Array pointers may be NULL
+ *    only when their length is 0, or where a NULL is documented (velocities: at rest;
+ *    slabs: 2D).
+ *  - On an error, pg_detect, pg_detect_time, pg_detect_exit and pg_intervals still
+ *    write the most conservative answer (detected; entry possible at any time; one
+ *    possible span over all time), so that an unchecked status never reads as "no".
  *  - Functions are reentrant and may be called from several threads at once;
  *    pg_detect_batch uses a pool of worker threads of its own.
  *
@@ -69,7 +75,8 @@
 #define PG_ERR_DIMENSION_MISMATCH -8
 
 // A parameter outside its domain: lookahead or buff not > 0, fac outside (0, 1),
-// kappa_deg outside (0, 180).
+// kappa_deg outside (0, 180), a separation below 0, a relation that is not a
+// `PG_RELATION_*`.
 #define PG_ERR_BAD_PARAMETER -9
 
 // A slab's bottom lies above its top (paper A §III).
@@ -85,6 +92,10 @@
 
 // Any other invalid input: a pointer not aligned for its type (the message names it).
 #define PG_ERR_INVALID -13
+
+// `pg_intervals`: the answer has more spans than `cap`; the first `cap` are written and
+// `*n_out` is the number of spans of the whole answer.
+#define PG_ERR_BUFFER_TOO_SMALL -14
 
 // `pg_detection.kind` and `pg_hit.kind`: every comparison behind the answer was
 // certified; paper A computed without rounding answers the same.
@@ -115,6 +126,18 @@
 // Not certified either way: no entry before lo; if the point enters, it is first at a
 // time in [lo, hi] (hi is then T).
 #define PG_ENTRY_POSSIBLE 2
+
+// `pg_intervals`' relation inside(t): the point is in the closed polygon P(t) (and, in
+// 3D, in the closed slab). Definitions: docs/cases.md, "Separation and fences".
+#define PG_RELATION_INSIDE 0
+
+// near_D(t): the point is within D horizontally of the closed P(t) (and, in 3D, within
+// H of the slab): the first span's start is the time of loss of separation.
+#define PG_RELATION_NEAR 1
+
+// breach_D(t), for a keep-in fence: the point is not inside P(t) at a distance > D from
+// its boundary (or, in 3D, not more than H inside the slab's bottom and top).
+#define PG_RELATION_BREACH 2
 
 // The case's parameters: the lookahead T (> 0), BUFF (> 0, paper A §II.A), F (in
 // (0, 1), §II.I) and the corner angle κ in degrees (in (0, 180), §II.J).
@@ -243,6 +266,31 @@ typedef struct pg_hit {
   int method;
 } pg_hit;
 
+// The separations of near_D and breach_D (docs/cases.md, "Separation and fences"):
+// D horizontally, H vertically (3D only); each finite and ≥ 0.
+typedef struct pg_separation {
+  // D ≥ 0, a length (the case format's `sep`).
+  double d;
+  // H ≥ 0, a height (the case format's `sep_v`; ignored in 2D).
+  double h;
+} pg_separation;
+
+// One span of `pg_intervals`: the relation starts in [start_lo, start_hi] and stops in
+// [end_lo, end_hi] (start_lo ≤ start_hi ≤ end_lo ≤ end_hi, all in [0, T]).
+typedef struct pg_span {
+  // The start enclosure's lower end.
+  double start_lo;
+  // The start enclosure's upper end.
+  double start_hi;
+  // The end enclosure's lower end.
+  double end_lo;
+  // The end enclosure's upper end.
+  double end_hi;
+  // 1: the relation holds throughout [start_hi, end_lo]; 0 (possible): f64 could not
+  // settle the stretch, the relation may hold there or not.
+  int certain;
+} pg_span;
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -326,6 +374,70 @@ int pg_detect_batch(const struct pg_params *params,
                     struct pg_hit *hits,
                     size_t cap,
                     size_t *n_hits);
+
+// Every time during [0, T] that the relation holds, as certified spans: inside(t)
+// (`PG_RELATION_INSIDE`), near_D(t) (`PG_RELATION_NEAR`) or breach_D(t)
+// (`PG_RELATION_BREACH`), with D = `sep->d` and H = `sep->h` (docs/cases.md,
+// "Separation and fences"; paper A §II–§III's motion, timed). The spans are the
+// engine's (`polyguard::api::intervals`), bit for bit those of `polyguard detect
+// --intervals`. For the exact set S of times:
+//
+// - the spans are sorted: start_lo ≤ start_hi ≤ end_lo ≤ end_hi, all in [0, T], and
+//   each span's end_hi ≤ the next one's start_lo;
+// - nothing is missed: S lies in the union of the spans' [start_lo, end_hi];
+// - every end of a component of S (0 and T included) lies in some span's start or end
+//   enclosure;
+// - `certain == 1`: S holds throughout [start_hi, end_lo]; `certain == 0` (possible):
+//   f64 could not settle the stretch (a tangency, say), S may hold there or not.
+//
+// The first span of near_D starts at the time of loss of separation. BUFF, F and κ play
+// no part, but `params` is validated as for `pg_detect`.
+//
+// The buffer: at most `cap` spans are written to `out` (NULL allowed when `cap` is 0)
+// and the number of spans of the answer to `*n_out`. When it exceeds `cap`, the first
+// `cap` spans are written and the status is `PG_ERR_BUFFER_TOO_SMALL`: call again with
+// `cap >= *n_out` (`cap = 0` asks for the count alone). A truncated answer is never
+// `PG_OK`.
+//
+// Returns `PG_OK`, `PG_ERR_BUFFER_TOO_SMALL`, or another `PG_ERR_*` code with a message
+// naming the field (`sep.d: …`, `relation: …`, `polygon.vertices: …`); on those
+// `*n_out` is 1 and `out[0]` (when `cap` ≥ 1 and `out` is valid) is the possible span
+// [0, +∞], [0, +∞], so that an unchecked status never reads "never".
+//
+// # Safety
+// As `pg_detect`; `sep` is NULL or valid, `out` is NULL or has room for `cap` spans,
+// `n_out` is NULL or valid. Nothing is kept.
+int pg_intervals(const struct pg_params *params,
+                 const struct pg_point *point,
+                 const struct pg_polygon *polygon,
+                 int relation,
+                 const struct pg_separation *sep,
+                 struct pg_span *out,
+                 size_t cap,
+                 size_t *n_out);
+
+// Keep-in exit detection: does the point leave the fence, that is, does breach_D hold
+// at some t in [0, T] (docs/cases.md, "Separation and fences"; paper A §II–§III's motion
+// and slab, for a polygon the point must stay in)? D = `sep->d` from the polygon's
+// boundary, H = `sep->h` from the slab's bottom and top (3D).
+//
+// `out->detected` is 1 when the point leaves, never 0 when it does: the engine's
+// `polyguard::api::detect_exit`, the `exits` of `polyguard detect --fence keep-in`.
+// `kind` is `PG_KIND_EXACT` when certified, `PG_KIND_CONSERVATIVE` for a 1 f64 could
+// not certify; `method` and the well-formedness fields are those of `pg_detect`. BUFF
+// and F play no part, but `params` is validated as for `pg_detect`.
+//
+// Returns `PG_OK`, or a `PG_ERR_*` code with a message naming the field (`sep.h: …`);
+// on an error `*out` (when `out` is not NULL) holds the conservative answer, as
+// `pg_detect`'s: detected 1, kind conservative, method `PG_METHOD_NONE`.
+//
+// # Safety
+// As `pg_detect`; `sep` is NULL or valid. Nothing is kept.
+int pg_detect_exit(const struct pg_params *params,
+                   const struct pg_point *point,
+                   const struct pg_polygon *polygon,
+                   const struct pg_separation *sep,
+                   struct pg_detection *out);
 
 // Copies this thread's message about its last failed call (empty after a successful
 // one) into `buf` as a NUL-terminated UTF-8 string: the field first, as in the case

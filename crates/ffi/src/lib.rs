@@ -1,5 +1,7 @@
 //! The C interface of polyguard: paper A's detection (Narkawicz & Hagen, §II.H, §II.I,
-//! §III), its entry time and the batch over plain C arrays.
+//! §III), its entry time, the batch, and the certified intervals of inside, near_D and
+//! breach_D with keep-in exit detection (docs/cases.md, "Separation and fences"), over
+//! plain C arrays.
 //!
 //! The header is `include/polyguard.h`, generated from this file by cbindgen
 //! (`cbindgen.toml`; `tests/header.rs` fails when the checked-in header is stale and
@@ -14,23 +16,23 @@
 //! - It never unwinds into C: its body runs under `std::panic::catch_unwind`, and a
 //!   panic becomes `PG_ERR_PANIC`.
 //! - It reads the caller's arrays only during the call and never keeps a pointer; it
-//!   never allocates memory the caller must free (the batch writes into the caller's
-//!   array and says how many hits there were).
+//!   never allocates memory the caller must free (the batch and `pg_intervals` write
+//!   into the caller's array and say how many items the answer has).
 //! - On an error, the answer written for a single case is the most conservative one
-//!   (detected; entry possible at any time), so that a caller who forgets the status
-//!   still does not read "no".
+//!   (detected; entry possible at any time; one possible span over all time), so that a
+//!   caller who forgets the status still does not read "no".
 #![deny(missing_docs)]
 
 use std::cell::RefCell;
 use std::os::raw::{c_char, c_int};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
-use polyguard::api::{self, Case, Kind, MovingPoint, MovingPolygon, Params};
+use polyguard::api::{self, Case, Detection, Kind, MovingPoint, MovingPolygon, Params};
 use polyguard::batch;
 use polyguard::entry::EntryTime;
 use polyguard::error::CaseError;
 use polyguard::well_formed::Fault;
-use polyguard::{Method, Vect2};
+use polyguard::{Method, Relation, Separation, Span, Vect2};
 
 /// Success.
 pub const PG_OK: c_int = 0;
@@ -54,7 +56,8 @@ pub const PG_ERR_ZERO_AREA: c_int = -7;
 /// the reverse (paper A §III).
 pub const PG_ERR_DIMENSION_MISMATCH: c_int = -8;
 /// A parameter outside its domain: lookahead or buff not > 0, fac outside (0, 1),
-/// kappa_deg outside (0, 180).
+/// kappa_deg outside (0, 180), a separation below 0, a relation that is not a
+/// `PG_RELATION_*`.
 pub const PG_ERR_BAD_PARAMETER: c_int = -9;
 /// A slab's bottom lies above its top (paper A §III).
 pub const PG_ERR_SLAB_INVERTED: c_int = -10;
@@ -66,6 +69,9 @@ pub const PG_ERR_CAPACITY: c_int = -11;
 pub const PG_ERR_PANIC: c_int = -12;
 /// Any other invalid input: a pointer not aligned for its type (the message names it).
 pub const PG_ERR_INVALID: c_int = -13;
+/// `pg_intervals`: the answer has more spans than `cap`; the first `cap` are written and
+/// `*n_out` is the number of spans of the whole answer.
+pub const PG_ERR_BUFFER_TOO_SMALL: c_int = -14;
 
 /// `pg_detection.kind` and `pg_hit.kind`: every comparison behind the answer was
 /// certified; paper A computed without rounding answers the same.
@@ -90,6 +96,16 @@ pub const PG_ENTRY_ENTERS: c_int = 1;
 /// Not certified either way: no entry before lo; if the point enters, it is first at a
 /// time in [lo, hi] (hi is then T).
 pub const PG_ENTRY_POSSIBLE: c_int = 2;
+
+/// `pg_intervals`' relation inside(t): the point is in the closed polygon P(t) (and, in
+/// 3D, in the closed slab). Definitions: docs/cases.md, "Separation and fences".
+pub const PG_RELATION_INSIDE: c_int = 0;
+/// near_D(t): the point is within D horizontally of the closed P(t) (and, in 3D, within
+/// H of the slab): the first span's start is the time of loss of separation.
+pub const PG_RELATION_NEAR: c_int = 1;
+/// breach_D(t), for a keep-in fence: the point is not inside P(t) at a distance > D from
+/// its boundary (or, in 3D, not more than H inside the slab's bottom and top).
+pub const PG_RELATION_BREACH: c_int = 2;
 
 /// A 2D vector or point (paper A §I); the same layout as two `double`s.
 #[repr(C)]
@@ -236,6 +252,48 @@ pub struct PgHit {
     pub method: c_int,
 }
 
+/// The separations of near_D and breach_D (docs/cases.md, "Separation and fences"):
+/// D horizontally, H vertically (3D only); each finite and ≥ 0.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct PgSeparation {
+    /// D ≥ 0, a length (the case format's `sep`).
+    pub d: f64,
+    /// H ≥ 0, a height (the case format's `sep_v`; ignored in 2D).
+    pub h: f64,
+}
+
+/// One span of `pg_intervals`: the relation starts in [start_lo, start_hi] and stops in
+/// [end_lo, end_hi] (start_lo ≤ start_hi ≤ end_lo ≤ end_hi, all in [0, T]).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct PgSpan {
+    /// The start enclosure's lower end.
+    pub start_lo: f64,
+    /// The start enclosure's upper end.
+    pub start_hi: f64,
+    /// The end enclosure's lower end.
+    pub end_lo: f64,
+    /// The end enclosure's upper end.
+    pub end_hi: f64,
+    /// 1: the relation holds throughout [start_hi, end_lo]; 0 (possible): f64 could not
+    /// settle the stretch, the relation may hold there or not.
+    pub certain: c_int,
+}
+
+impl From<&Span> for PgSpan {
+    /// The engine's span (src/intervals.rs, G1–G3), field for field.
+    fn from(s: &Span) -> Self {
+        PgSpan {
+            start_lo: s.start.lo,
+            start_hi: s.start.hi,
+            end_lo: s.end.lo,
+            end_hi: s.end.hi,
+            certain: c_int::from(s.certain),
+        }
+    }
+}
+
 /// A failed call: its status and its message.
 struct Failure {
     code: c_int,
@@ -243,14 +301,17 @@ struct Failure {
 }
 
 impl Failure {
+    /// A failure with its status and message.
     fn new(code: c_int, message: String) -> Self {
         Failure { code, message }
     }
 
+    /// `field` is NULL where a pointer is required.
     fn null(field: &str) -> Self {
         Failure::new(PG_ERR_NULL_POINTER, format!("{field}: NULL pointer"))
     }
 
+    /// `field` is not aligned for its type.
     fn misaligned(field: &str) -> Self {
         Failure::new(
             PG_ERR_INVALID,
@@ -295,6 +356,7 @@ thread_local! {
     static LAST_ERROR: RefCell<String> = const { RefCell::new(String::new()) };
 }
 
+/// Keeps `message` as this thread's last error (for `pg_last_error_message`).
 fn set_last_error(message: String) {
     LAST_ERROR.with(|m| *m.borrow_mut() = message);
 }
@@ -361,6 +423,7 @@ unsafe fn deref<'a, T>(ptr: *const T, field: &str) -> Result<&'a T, Failure> {
     unsafe { ptr.as_ref() }.ok_or_else(|| Failure::null(field))
 }
 
+/// The engine's vectors from C's (paper A §I's points and velocities).
 fn vects(v: &[PgVec2]) -> Vec<Vect2> {
     v.iter().map(|p| Vect2::new(p.x, p.y)).collect()
 }
@@ -423,6 +486,40 @@ unsafe fn case_of(
     Case::new(params.lookahead, pt, poly, p).map_err(|e| Failure::case(e, None))
 }
 
+/// The answer written on an error by `pg_detect` and `pg_detect_exit`: detected,
+/// conservative, no method, not well formed (so an unchecked status never reads "no").
+const CONSERVATIVE_DETECTION: PgDetection = PgDetection {
+    detected: 1,
+    kind: PG_KIND_CONSERVATIVE,
+    method: PG_METHOD_NONE,
+    well_formed: 0,
+    well_formed_rule: 0,
+    well_formed_a: 0,
+    well_formed_b: 0,
+};
+
+/// The engine's answer (`api::detect` or `api::detect_exit`) for C: the §II.J fault as
+/// its rule number (1 to 4, paper A's order) and the vertices it names.
+fn detection_of(d: &Detection) -> PgDetection {
+    let (rule, a, b) = match d.well_formed_fault {
+        None => (0, 0, 0),
+        Some(Fault::CloseVertices(i, j)) => (1, i, j),
+        Some(Fault::CloseEdges(i, k)) => (2, i, k),
+        Some(Fault::SharpCorner(j)) => (3, j, j),
+        Some(Fault::TurnsRight(m)) => (4, m, m),
+    };
+    PgDetection {
+        detected: c_int::from(d.detected),
+        kind: kind_code(d.kind),
+        method: method_code(d.method),
+        well_formed: c_int::from(d.well_formed),
+        well_formed_rule: rule,
+        well_formed_a: a,
+        well_formed_b: b,
+    }
+}
+
+/// `PG_KIND_*` of the engine's kind of answer (exact, or a conservative yes).
 fn kind_code(k: Kind) -> c_int {
     match k {
         Kind::Exact => PG_KIND_EXACT,
@@ -430,6 +527,7 @@ fn kind_code(k: Kind) -> c_int {
     }
 }
 
+/// `PG_METHOD_*` of the paper function that decided (paper A §II.F's dispatch, §III).
 fn method_code(m: Method) -> c_int {
     match m {
         Method::DetectSame2d => PG_METHOD_SAME_2D,
@@ -495,35 +593,11 @@ pub unsafe extern "C" fn pg_detect(
         Some(o) => o,
         None => return guard(|| Err(Failure::null("out"))),
     };
-    *out = PgDetection {
-        detected: 1,
-        kind: PG_KIND_CONSERVATIVE,
-        method: PG_METHOD_NONE,
-        well_formed: 0,
-        well_formed_rule: 0,
-        well_formed_a: 0,
-        well_formed_b: 0,
-    };
+    *out = CONSERVATIVE_DETECTION;
     guard(|| {
         // SAFETY: the caller's promise.
         let case = unsafe { case_of(params, point, polygon) }?;
-        let d = api::detect(&case);
-        let (rule, a, b) = match d.well_formed_fault {
-            None => (0, 0, 0),
-            Some(Fault::CloseVertices(i, j)) => (1, i, j),
-            Some(Fault::CloseEdges(i, k)) => (2, i, k),
-            Some(Fault::SharpCorner(j)) => (3, j, j),
-            Some(Fault::TurnsRight(m)) => (4, m, m),
-        };
-        *out = PgDetection {
-            detected: c_int::from(d.detected),
-            kind: kind_code(d.kind),
-            method: method_code(d.method),
-            well_formed: c_int::from(d.well_formed),
-            well_formed_rule: rule,
-            well_formed_a: a,
-            well_formed_b: b,
-        };
+        *out = detection_of(&api::detect(&case));
         Ok(())
     })
 }
@@ -720,6 +794,183 @@ pub unsafe extern "C" fn pg_detect_batch(
     })
 }
 
+/// `pg_intervals`' relation from its `PG_RELATION_*` code (docs/cases.md's
+/// definitions of inside, near_D and breach_D).
+fn relation_of(code: c_int) -> Result<Relation, Failure> {
+    match code {
+        PG_RELATION_INSIDE => Ok(Relation::Inside),
+        PG_RELATION_NEAR => Ok(Relation::Near),
+        PG_RELATION_BREACH => Ok(Relation::Breach),
+        other => Err(Failure::new(
+            PG_ERR_BAD_PARAMETER,
+            format!(
+                "relation: {other} is not PG_RELATION_INSIDE (0), PG_RELATION_NEAR (1) \
+                 or PG_RELATION_BREACH (2)"
+            ),
+        )),
+    }
+}
+
+/// The engine's separation from the caller's (D and H of near_D and fence_D), validated
+/// by `Separation::new`: its message names the C field, `sep.d` or `sep.h`.
+///
+/// # Safety
+/// `sep` is NULL or points to a valid `pg_separation`.
+unsafe fn separation_of(sep: *const PgSeparation) -> Result<Separation, Failure> {
+    // SAFETY: the caller's promise.
+    let s = unsafe { deref(sep, "sep") }?;
+    Separation::new(s.d, s.h).map_err(|e| {
+        let rename = match &*e.field() {
+            "sep" => Some(("sep", "sep.d".to_string())),
+            "sep_v" => Some(("sep_v", "sep.h".to_string())),
+            _ => None,
+        };
+        Failure::case(e, rename)
+    })
+}
+
+/// The span `pg_intervals` writes first on an error: possible, from 0 to +∞ (the
+/// relation may hold at any time), so that an unchecked status never reads "never".
+const POSSIBLE_ALWAYS: PgSpan = PgSpan {
+    start_lo: 0.0,
+    start_hi: f64::INFINITY,
+    end_lo: 0.0,
+    end_hi: f64::INFINITY,
+    certain: 0,
+};
+
+/// Every time during [0, T] that the relation holds, as certified spans: inside(t)
+/// (`PG_RELATION_INSIDE`), near_D(t) (`PG_RELATION_NEAR`) or breach_D(t)
+/// (`PG_RELATION_BREACH`), with D = `sep->d` and H = `sep->h` (docs/cases.md,
+/// "Separation and fences"; paper A §II–§III's motion, timed). The spans are the
+/// engine's (`polyguard::api::intervals`), bit for bit those of `polyguard detect
+/// --intervals`. For the exact set S of times:
+///
+/// - the spans are sorted: start_lo ≤ start_hi ≤ end_lo ≤ end_hi, all in [0, T], and
+///   each span's end_hi ≤ the next one's start_lo;
+/// - nothing is missed: S lies in the union of the spans' [start_lo, end_hi];
+/// - every end of a component of S (0 and T included) lies in some span's start or end
+///   enclosure;
+/// - `certain == 1`: S holds throughout [start_hi, end_lo]; `certain == 0` (possible):
+///   f64 could not settle the stretch (a tangency, say), S may hold there or not.
+///
+/// The first span of near_D starts at the time of loss of separation. BUFF, F and κ play
+/// no part, but `params` is validated as for `pg_detect`.
+///
+/// The buffer: at most `cap` spans are written to `out` (NULL allowed when `cap` is 0)
+/// and the number of spans of the answer to `*n_out`. When it exceeds `cap`, the first
+/// `cap` spans are written and the status is `PG_ERR_BUFFER_TOO_SMALL`: call again with
+/// `cap >= *n_out` (`cap = 0` asks for the count alone). A truncated answer is never
+/// `PG_OK`.
+///
+/// Returns `PG_OK`, `PG_ERR_BUFFER_TOO_SMALL`, or another `PG_ERR_*` code with a message
+/// naming the field (`sep.d: …`, `relation: …`, `polygon.vertices: …`); on those
+/// `*n_out` is 1 and `out[0]` (when `cap` ≥ 1 and `out` is valid) is the possible span
+/// [0, +∞], [0, +∞], so that an unchecked status never reads "never".
+///
+/// # Safety
+/// As `pg_detect`; `sep` is NULL or valid, `out` is NULL or has room for `cap` spans,
+/// `n_out` is NULL or valid. Nothing is kept.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn pg_intervals(
+    params: *const PgParams,
+    point: *const PgPoint,
+    polygon: *const PgPolygon,
+    relation: c_int,
+    sep: *const PgSeparation,
+    out: *mut PgSpan,
+    cap: usize,
+    n_out: *mut usize,
+) -> c_int {
+    if !n_out.is_aligned() {
+        return guard(|| Err(Failure::misaligned("n_out")));
+    }
+    // SAFETY: aligned, and the caller's promise.
+    let n_out = match unsafe { n_out.as_mut() } {
+        Some(n) => n,
+        None => return guard(|| Err(Failure::null("n_out"))),
+    };
+    *n_out = 1;
+    guard(|| {
+        if cap > 0 && out.is_null() {
+            return Err(Failure::null("out"));
+        }
+        if cap > 0 && !out.is_aligned() {
+            return Err(Failure::misaligned("out"));
+        }
+        if cap > 0 {
+            // SAFETY: non-NULL, aligned, room for cap ≥ 1 spans (the caller's promise).
+            unsafe { out.write(POSSIBLE_ALWAYS) };
+        }
+        // SAFETY (both): the caller's promise.
+        let case = unsafe { case_of(params, point, polygon) }?;
+        let relation = relation_of(relation)?;
+        let sep = unsafe { separation_of(sep) }?;
+        let spans = api::intervals(&case, relation, sep);
+        for (k, s) in spans.iter().take(cap).enumerate() {
+            // SAFETY: k < cap, and `out` holds `cap` spans (non-NULL as cap > 0).
+            unsafe { out.add(k).write(PgSpan::from(s)) };
+        }
+        *n_out = spans.len();
+        if spans.len() > cap {
+            return Err(Failure::new(
+                PG_ERR_BUFFER_TOO_SMALL,
+                format!(
+                    "out: {} spans, room for {cap}; the first {cap} are written, call again \
+                     with cap >= {}",
+                    spans.len(),
+                    spans.len()
+                ),
+            ));
+        }
+        Ok(())
+    })
+}
+
+/// Keep-in exit detection: does the point leave the fence, that is, does breach_D hold
+/// at some t in [0, T] (docs/cases.md, "Separation and fences"; paper A §II–§III's motion
+/// and slab, for a polygon the point must stay in)? D = `sep->d` from the polygon's
+/// boundary, H = `sep->h` from the slab's bottom and top (3D).
+///
+/// `out->detected` is 1 when the point leaves, never 0 when it does: the engine's
+/// `polyguard::api::detect_exit`, the `exits` of `polyguard detect --fence keep-in`.
+/// `kind` is `PG_KIND_EXACT` when certified, `PG_KIND_CONSERVATIVE` for a 1 f64 could
+/// not certify; `method` and the well-formedness fields are those of `pg_detect`. BUFF
+/// and F play no part, but `params` is validated as for `pg_detect`.
+///
+/// Returns `PG_OK`, or a `PG_ERR_*` code with a message naming the field (`sep.h: …`);
+/// on an error `*out` (when `out` is not NULL) holds the conservative answer, as
+/// `pg_detect`'s: detected 1, kind conservative, method `PG_METHOD_NONE`.
+///
+/// # Safety
+/// As `pg_detect`; `sep` is NULL or valid. Nothing is kept.
+#[no_mangle]
+pub unsafe extern "C" fn pg_detect_exit(
+    params: *const PgParams,
+    point: *const PgPoint,
+    polygon: *const PgPolygon,
+    sep: *const PgSeparation,
+    out: *mut PgDetection,
+) -> c_int {
+    if !out.is_aligned() {
+        return guard(|| Err(Failure::misaligned("out")));
+    }
+    // SAFETY: aligned, and the caller's promise.
+    let out = match unsafe { out.as_mut() } {
+        Some(o) => o,
+        None => return guard(|| Err(Failure::null("out"))),
+    };
+    *out = CONSERVATIVE_DETECTION;
+    guard(|| {
+        // SAFETY (both): the caller's promise.
+        let case = unsafe { case_of(params, point, polygon) }?;
+        let sep = unsafe { separation_of(sep) }?;
+        *out = detection_of(&api::detect_exit(&case, sep));
+        Ok(())
+    })
+}
+
 /// Copies this thread's message about its last failed call (empty after a successful
 /// one) into `buf` as a NUL-terminated UTF-8 string: the field first, as in the case
 /// format of docs/cases.md (`polygon.vertices: clockwise order …`). (Extends the
@@ -782,6 +1033,7 @@ pub extern "C" fn pg_status_name(status: c_int) -> *const c_char {
         PG_ERR_CAPACITY => b"PG_ERR_CAPACITY\0",
         PG_ERR_PANIC => b"PG_ERR_PANIC\0",
         PG_ERR_INVALID => b"PG_ERR_INVALID\0",
+        PG_ERR_BUFFER_TOO_SMALL => b"PG_ERR_BUFFER_TOO_SMALL\0",
         _ => b"unknown\0",
     };
     s.as_ptr().cast()
@@ -880,6 +1132,7 @@ mod tests {
             PG_ERR_CAPACITY,
             PG_ERR_PANIC,
             PG_ERR_INVALID,
+            PG_ERR_BUFFER_TOO_SMALL,
         ];
         let names: std::collections::HashSet<String> = codes
             .iter()

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Builds crates/ffi/tests/c/test_polyguard.c with cc against libpolyguard_ffi.a and
 # against libpolyguard_ffi.so (-Wall -Wextra -Werror -std=c99 -pedantic), runs both (the
-# examples also compared with `polyguard detect --time examples/cases.jsonl`), and
-# compiles the header as C++. With PG_SANITIZE=1, once more under
+# examples also compared with `polyguard detect --time examples/cases.jsonl`), compiles
+# and runs every C example of docs/ffi.md, and compiles the header as C++. With PG_SANITIZE=1, once more under
 # -fsanitize=address,undefined, and under valgrind when it is installed.
 #
 # Environment: CC, CXX (default cc, c++); CARGO_TARGET_DIR; PG_LIB_DIR (where the
@@ -50,6 +50,21 @@ if [[ $linked != *libpolyguard_ffi.so* ]]; then
   exit 1
 fi
 LD_LIBRARY_PATH="$lib" "$out/test_shared" "${args[@]}"
+
+echo "== C, the examples of docs/ffi.md (each compiled and run)"
+rm -f "$out"/doc-example-*
+awk -v dir="$out" '/^```c$/ {n++; on=1; next} /^```$/ {on=0; next} on {print > (dir "/doc-example-" n ".c")}' docs/ffi.md
+examples=0
+for example in "$out"/doc-example-*.c; do
+  [ -e "$example" ] || continue
+  "$cc" "${flags[@]}" "$example" "$lib/libpolyguard_ffi.a" "${static_libs[@]}" -o "${example%.c}"
+  "${example%.c}"
+  examples=$((examples + 1))
+done
+if [ "$examples" -eq 0 ]; then
+  echo "docs/ffi.md has no C example to check" >&2
+  exit 1
+fi
 
 echo "== C++, the header"
 "$cxx" -fsyntax-only -x c++ -std=c++11 -Wall -Wextra -Werror -pedantic "$inc/polyguard.h"

@@ -8,7 +8,7 @@
 use numpy::{PyArrayDyn, PyArrayMethods};
 use polyguard::api::{Case, Params};
 use polyguard::error::CaseError;
-use polyguard_harness::case::RawCase;
+use polyguard_harness::case::{CaseOptions, RawCase};
 use pyo3::prelude::*;
 use pyo3::types::{PyFloat, PyList, PyString, PyTuple};
 
@@ -221,6 +221,12 @@ impl CaseArgs<'_, '_> {
 /// field). A dict is written as JSON by Python's `json.dumps` first (NaN and infinities
 /// as the literals the reader reports).
 pub fn case_from_object(py: Python<'_>, case: &Bound<'_, PyAny>) -> PyResult<Case> {
+    case_and_options(py, case).map(|(case, _)| case)
+}
+
+/// [`case_from_object`] with the case's own `sep`, `sep_v` and `fence` (docs/cases.md,
+/// "Separation and fences"), read and checked by the same reader.
+pub fn case_and_options(py: Python<'_>, case: &Bound<'_, PyAny>) -> PyResult<(Case, CaseOptions)> {
     let text: String = if let Ok(s) = case.cast::<PyString>() {
         s.to_str()?.to_owned()
     } else {
@@ -229,7 +235,8 @@ pub fn case_from_object(py: Python<'_>, case: &Bound<'_, PyAny>) -> PyResult<Cas
             .extract()?
     };
     let parsed = polyguard_harness::case::parse_line(&text, 1);
-    parsed
+    let case = parsed
         .case
-        .map_err(|e| crate::engine_error(py, &e, str::to_owned))
+        .map_err(|e| crate::engine_error(py, &e, str::to_owned))?;
+    Ok((case, parsed.options))
 }

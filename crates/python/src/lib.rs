@@ -5,6 +5,9 @@
 //! - [`single`]: `detect`, `detect_time`, `truth` on one case, given as arguments or as a
 //!   case object of docs/cases.md.
 //! - [`batch`]: `detect_batch` on numpy arrays.
+//! - [`intervals`]: `intervals` (the certified spans of inside, near_D and breach_D) and
+//!   `detect_exit` (keep-in exits) on a case object (docs/cases.md, "Separation and
+//!   fences").
 //! - [`earth`]: `conflicts` on a scenario GeoJSON (docs/scenario.md).
 //!
 //! Bad input raises `polyguard.CaseError` (or `polyguard.ScenarioError`), a `ValueError`
@@ -18,6 +21,7 @@ use pyo3::prelude::*;
 pub mod args;
 pub mod batch;
 pub mod earth;
+pub mod intervals;
 pub mod single;
 
 create_exception!(
@@ -42,6 +46,15 @@ create_exception!(
     "A scenario GeoJSON (paper B) that cannot be read at all: `field` names the member, \
      `line` the 1-based line when known (None otherwise)."
 );
+
+/// `polyguard.Error` (a ValueError) whose `field` is `field`, for bad input that is not
+/// a field of a case (an option such as `relation`); `message` starts with the field.
+pub fn error(py: Python<'_>, field: &str, message: &str) -> PyErr {
+    let err = Error::new_err(message.to_string());
+    // As in `case_error`: setting the attribute cannot fail but for memory.
+    let _ = err.value(py).setattr("field", field);
+    err
+}
 
 /// The Python exception for an engine error (paper A's input rules, docs/cases.md): a
 /// [`CaseError`] whose `field` is `field` and whose message is `message` (which starts
@@ -89,6 +102,8 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(single::detect_time_case, m)?)?;
     m.add_function(wrap_pyfunction!(single::truth, m)?)?;
     m.add_function(wrap_pyfunction!(single::truth_case, m)?)?;
+    m.add_function(wrap_pyfunction!(intervals::intervals, m)?)?;
+    m.add_function(wrap_pyfunction!(intervals::detect_exit, m)?)?;
     m.add_function(wrap_pyfunction!(batch::detect_batch, m)?)?;
     m.add_function(wrap_pyfunction!(earth::conflicts, m)?)?;
     Ok(())

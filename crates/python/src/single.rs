@@ -179,7 +179,7 @@ pub const GIL_FREE_VERTICES: usize = 64;
 
 /// `answer(case)` (paper A's detection or entry time), without the GIL for a polygon of
 /// [`GIL_FREE_VERTICES`] or more.
-fn detect_large_without_gil<T: Send>(
+pub(crate) fn detect_large_without_gil<T: Send>(
     py: Python<'_>,
     case: &Case,
     answer: impl Fn(&Case) -> T + Send + Sync,

@@ -11,6 +11,9 @@
  *    written on an error, message truncation.
  * 3. pg_detect_batch against pg_detect on every pair, the capacity protocol, errors
  *    naming the element.
+ * 4. pg_intervals and pg_detect_exit on cases worked out by hand (a square crossed, and
+ *    the two cases of examples/intervals.jsonl: a cell entered twice, a drone leaving its
+ *    keep-in box through the ceiling), the buffer protocol, errors naming the field.
  *
  * Exit status 0 when every check passes; each failure is printed.
  */
@@ -490,6 +493,188 @@ static void test_batch(void) {
     }
 }
 
+/* ---- 4. intervals and keep-in exits ------------------------------------------- */
+
+/* The spans of one relation: the count first (cap 0, out NULL), then exactly that many
+   into `out` (room for `room`). Returns the count, or -1 after a failed check. */
+static long spans_of(const pg_params *p, const pg_point *pt, const pg_polygon *poly,
+                     int relation, pg_separation sep, pg_span *out, size_t room) {
+    size_t n = 12345, m = 0, k;
+    int rc = pg_intervals(p, pt, poly, relation, &sep, NULL, 0, &n);
+    CHECK((rc == PG_OK && n == 0) || (rc == PG_ERR_BUFFER_TOO_SMALL && n > 0),
+          "relation %d: the count: %s, %u", relation, pg_status_name(rc), (unsigned)n);
+    if (n > room) {
+        CHECK(0, "relation %d: %u spans, room for %u", relation, (unsigned)n, (unsigned)room);
+        return -1;
+    }
+    rc = pg_intervals(p, pt, poly, relation, &sep, out, n, &m);
+    CHECK(rc == PG_OK && m == n, "relation %d: %s (%s), %u spans", relation,
+          pg_status_name(rc), last_message(), (unsigned)m);
+    for (k = 0; k < n; k++) {
+        CHECK(0.0 <= out[k].start_lo && out[k].start_lo <= out[k].start_hi &&
+                  out[k].start_hi <= out[k].end_lo && out[k].end_lo <= out[k].end_hi &&
+                  out[k].end_hi <= p->lookahead,
+              "relation %d: span %u is not ordered in [0, T]", relation, (unsigned)k);
+        if (k > 0)
+            CHECK(out[k - 1].end_hi <= out[k].start_lo, "relation %d: spans %u, %u overlap",
+                  relation, (unsigned)k - 1, (unsigned)k);
+    }
+    return (long)n;
+}
+
+/* A certain span whose start encloses a and end encloses b, each at most 1e-9 T wide. */
+static void check_span(const char *what, const pg_span *s, double a, double b, double t) {
+    CHECK(s->certain == 1, "%s: not certain", what);
+    CHECK(s->start_lo <= a && a <= s->start_hi && s->start_hi - s->start_lo <= 1e-9 * t,
+          "%s: start [%.17g, %.17g] does not enclose %.17g narrowly", what, s->start_lo,
+          s->start_hi, a);
+    CHECK(s->end_lo <= b && b <= s->end_hi && s->end_hi - s->end_lo <= 1e-9 * t,
+          "%s: end [%.17g, %.17g] does not enclose %.17g narrowly", what, s->end_lo, s->end_hi,
+          b);
+}
+
+static void test_intervals(void) {
+    pg_span out[8];
+    pg_detection d;
+    size_t n;
+    int rc;
+
+    /* (1, -2) moving north at 1 across the 2x2 square at rest: inside on [2, 4]; within
+       D = 0.5 on [1.5, 4.5]; more than 0.5 inside (x = 1 is 1 from the sides) only for
+       y = -2 + t in (0.5, 1.5), so breach_0.5 is [0, 2.5] and [3.5, 10]. */
+    {
+        pg_params p = params_for(10.0, 0.01, 0.0001);
+        pg_point pt = P2(1.0, -2.0, 0.0, 1.0);
+        pg_polygon sq = POLY(SQUARE, NULL, 4);
+        pg_separation none = {0.0, 0.0}, half = {0.5, 0.0};
+        if (spans_of(&p, &pt, &sq, PG_RELATION_INSIDE, none, out, 8) == 1)
+            check_span("square, inside", &out[0], 2.0, 4.0, 10.0);
+        if (spans_of(&p, &pt, &sq, PG_RELATION_NEAR, half, out, 8) == 1)
+            check_span("square, near 0.5", &out[0], 1.5, 4.5, 10.0);
+        if (spans_of(&p, &pt, &sq, PG_RELATION_BREACH, half, out, 8) == 2) {
+            check_span("square, breach 0.5 (1)", &out[0], 0.0, 2.5, 10.0);
+            check_span("square, breach 0.5 (2)", &out[1], 3.5, 10.0, 10.0);
+            CHECK(out[0].start_lo == 0.0 && out[0].start_hi == 0.0 && out[1].end_lo == 10.0 &&
+                      out[1].end_hi == 10.0,
+                  "square, breach: the ends at 0 and T are exact");
+        }
+        rc = pg_detect_exit(&p, &pt, &sq, &half, &d);
+        CHECK(rc == PG_OK && d.detected == 1 && d.kind == PG_KIND_EXACT,
+              "square: the point starts outside, so it exits: %s, %d", pg_status_name(rc),
+              d.detected);
+
+        /* the buffer protocol: room for 1 of the 2 breach spans */
+        rc = pg_intervals(&p, &pt, &sq, PG_RELATION_BREACH, &half, out, 1, &n);
+        CHECK(rc == PG_ERR_BUFFER_TOO_SMALL && n == 2, "cap 1: %s, %u", pg_status_name(rc),
+              (unsigned)n);
+        CHECK(out[0].start_lo == 0.0 && out[0].end_lo <= 2.5 && 2.5 <= out[0].end_hi,
+              "cap 1: the first span is written");
+        CHECK(starts_with(last_message(), "out: 2 spans, room for 1"), "cap 1: %s",
+              last_message());
+        CHECK(strcmp(pg_status_name(PG_ERR_BUFFER_TOO_SMALL), "PG_ERR_BUFFER_TOO_SMALL") == 0,
+              "status name");
+
+        /* errors name the field; the answer left is one possible span over all time */
+        {
+            pg_separation neg = {-1.0, 0.0}, nan_h = {1.0, 0.0};
+            nan_h.h = nan("");
+            rc = pg_intervals(&p, &pt, &sq, PG_RELATION_NEAR, &neg, out, 8, &n);
+            expect_error(rc, PG_ERR_BAD_PARAMETER, "sep.d: ", "negative D");
+            CHECK(n == 1 && out[0].certain == 0 && out[0].start_lo == 0.0 &&
+                      isinf(out[0].end_hi),
+                  "an error leaves one possible span over [0, inf]");
+            expect_error(pg_intervals(&p, &pt, &sq, PG_RELATION_NEAR, &nan_h, out, 8, &n),
+                         PG_ERR_NOT_FINITE, "sep.h: not a finite number", "NaN H");
+            expect_error(pg_intervals(&p, &pt, &sq, 3, &half, out, 8, &n), PG_ERR_BAD_PARAMETER,
+                         "relation: 3 is not", "relation 3");
+            expect_error(pg_intervals(&p, &pt, &sq, PG_RELATION_NEAR, NULL, out, 8, &n),
+                         PG_ERR_NULL_POINTER, "sep: NULL pointer", "NULL sep");
+            expect_error(pg_intervals(&p, &pt, &sq, PG_RELATION_NEAR, &half, NULL, 8, &n),
+                         PG_ERR_NULL_POINTER, "out: NULL pointer", "NULL out, cap 8");
+            CHECK(pg_intervals(&p, &pt, &sq, PG_RELATION_NEAR, &half, out, 8, NULL) ==
+                      PG_ERR_NULL_POINTER,
+                  "NULL n_out");
+            rc = pg_detect_exit(&p, &pt, &sq, &neg, &d);
+            expect_error(rc, PG_ERR_BAD_PARAMETER, "sep.d: ", "exit, negative D");
+            CHECK(d.detected == 1 && d.kind == PG_KIND_CONSERVATIVE,
+                  "an exit error still says detected");
+        }
+    }
+
+    /* examples/intervals.jsonl, "cell-entered-twice": the U-shaped cell drifts west at 60,
+       the point flies east at 480 along y = 30, so the relative x is 540 t. At y = 30 the
+       walls are x in [40, 55] and [85, 100]: inside on [40, 55]/540 and [85, 100]/540;
+       within D = 5 on [35, 60]/540 and [80, 105]/540; more than 5 inside (the slot's floor
+       y = 20 is 10 away) only for x in (45, 50) and (90, 95): breach_5 is [0, 45]/540,
+       [50, 90]/540 and [95/540, 0.25]. */
+    {
+        static const pg_vec2 CELL[8] = {{40.0, 0.0},  {100.0, 0.0}, {100.0, 50.0},
+                                        {85.0, 50.0}, {85.0, 20.0}, {55.0, 20.0},
+                                        {55.0, 50.0}, {40.0, 50.0}};
+        static const pg_vec2 WEST[8] = {{-60.0, 0.0}, {-60.0, 0.0}, {-60.0, 0.0},
+                                        {-60.0, 0.0}, {-60.0, 0.0}, {-60.0, 0.0},
+                                        {-60.0, 0.0}, {-60.0, 0.0}};
+        pg_params p = params_for(0.25, 0.5, 0.0001);
+        pg_point pt = P2(0.0, 30.0, 480.0, 0.0);
+        pg_polygon cell = POLY(CELL, WEST, 8);
+        pg_separation five = {5.0, 0.0};
+        if (spans_of(&p, &pt, &cell, PG_RELATION_INSIDE, five, out, 8) == 2) {
+            check_span("cell, inside (1)", &out[0], 40.0 / 540, 55.0 / 540, 0.25);
+            check_span("cell, inside (2)", &out[1], 85.0 / 540, 100.0 / 540, 0.25);
+        } else {
+            CHECK(0, "cell: inside is two spans");
+        }
+        if (spans_of(&p, &pt, &cell, PG_RELATION_NEAR, five, out, 8) == 2) {
+            check_span("cell, near 5 (1)", &out[0], 35.0 / 540, 60.0 / 540, 0.25);
+            check_span("cell, near 5 (2)", &out[1], 80.0 / 540, 105.0 / 540, 0.25);
+        } else {
+            CHECK(0, "cell: near is two spans");
+        }
+        if (spans_of(&p, &pt, &cell, PG_RELATION_BREACH, five, out, 8) == 3) {
+            check_span("cell, breach 5 (1)", &out[0], 0.0, 45.0 / 540, 0.25);
+            check_span("cell, breach 5 (2)", &out[1], 50.0 / 540, 90.0 / 540, 0.25);
+            check_span("cell, breach 5 (3)", &out[2], 95.0 / 540, 0.25, 0.25);
+        } else {
+            CHECK(0, "cell: breach is three spans");
+        }
+    }
+
+    /* examples/intervals.jsonl, "drone-leaves-through-ceiling": the 100 x 100 box from
+       z = 0 to 120 at rest, the drone at (50, 50, 100) moving (1, 0, 2), D = H = 10. Its
+       height reaches the ceiling 120 at t = 10 (inside [0, 10]), 130 at t = 15 (near
+       [0, 15]) and 110 = ceiling - H at t = 5, while x = 50 + t stays more than 10 from
+       the walls until t = 40 (breach [5, 60]): it exits. Until T = 4 it does not. */
+    {
+        static const pg_vec2 BOX[4] = {{0.0, 0.0}, {100.0, 0.0}, {100.0, 100.0}, {0.0, 100.0}};
+        pg_params p = params_for(60.0, 1.0, 0.0001);
+        pg_point pt = P3(50.0, 50.0, 100.0, 1.0, 0.0, 2.0);
+        pg_polygon box = POLY3(BOX, NULL, 4, 0.0, 120.0, 0.0);
+        pg_separation ten = {10.0, 10.0};
+        if (spans_of(&p, &pt, &box, PG_RELATION_INSIDE, ten, out, 8) == 1)
+            check_span("drone, inside", &out[0], 0.0, 10.0, 60.0);
+        else
+            CHECK(0, "drone: inside is one span");
+        if (spans_of(&p, &pt, &box, PG_RELATION_NEAR, ten, out, 8) == 1)
+            check_span("drone, near 10", &out[0], 0.0, 15.0, 60.0);
+        else
+            CHECK(0, "drone: near is one span");
+        if (spans_of(&p, &pt, &box, PG_RELATION_BREACH, ten, out, 8) == 1)
+            check_span("drone, breach 10", &out[0], 5.0, 60.0, 60.0);
+        else
+            CHECK(0, "drone: breach is one span");
+        rc = pg_detect_exit(&p, &pt, &box, &ten, &d);
+        CHECK(rc == PG_OK && d.detected == 1 && d.kind == PG_KIND_EXACT &&
+                  d.method == PG_METHOD_3D,
+              "drone: exits (%s, %d, kind %d)", pg_status_name(rc), d.detected, d.kind);
+        p.lookahead = 4.0;
+        rc = pg_detect_exit(&p, &pt, &box, &ten, &d);
+        CHECK(rc == PG_OK && d.detected == 0 && d.kind == PG_KIND_EXACT,
+              "drone until T = 4: no exit (%s, %d)", pg_status_name(rc), d.detected);
+        CHECK(spans_of(&p, &pt, &box, PG_RELATION_BREACH, ten, out, 8) == 0,
+              "drone until T = 4: no breach");
+    }
+}
+
 int main(int argc, char **argv) {
     FILE *cli = NULL;
     if (argc == 3 && strcmp(argv[1], "--cli") == 0) {
@@ -508,6 +693,7 @@ int main(int argc, char **argv) {
         fclose(cli);
     test_bad_input();
     test_batch();
+    test_intervals();
     printf("%d checks, %d failed%s\n", checks, failures,
            cli != NULL ? " (examples also compared with the CLI)" : "");
     return failures == 0 ? 0 : 1;

@@ -6,6 +6,9 @@
   comparison is certified: a "no" is always paper A's exact "no". ``detect_time`` encloses
   the first entry time; ``truth`` computes it exactly (rational arithmetic);
   ``detect_batch`` checks N points against M polygons from numpy arrays.
+- Beyond paper A (docs/cases.md, "Separation and fences"): ``intervals`` encloses every
+  time the point is inside, within a separation of (loss of separation) or breaching a
+  keep-in polygon; ``detect_exit`` says whether it leaves a keep-in fence.
 - Paper B (A. Bienkowski, D. Sidoti and K. R. Pattipati, IEEE Access 9, 2021):
   ``conflicts`` runs the four-stage interference identification (§IV) on a scenario
   GeoJSON.
@@ -28,8 +31,10 @@ from ._native import (
     detect,
     detect_batch,
     detect_case,
+    detect_exit,
     detect_time,
     detect_time_case,
+    intervals,
     truth,
     truth_case,
 )
@@ -48,8 +53,10 @@ __all__ = [
     "detect",
     "detect_batch",
     "detect_case",
+    "detect_exit",
     "detect_time",
     "detect_time_case",
+    "intervals",
     "truth",
     "truth_case",
 ]

@@ -6,7 +6,19 @@ Paper B: A. Bienkowski, D. Sidoti and K. R. Pattipati, Interference Identificati
 Time-Varying Polyhedra, IEEE Access 9 (2021).
 """
 
-from typing import Any, Iterator, Literal, Mapping, Optional, Sequence, Tuple, Union, final
+from typing import (
+    Any,
+    Iterator,
+    Literal,
+    Mapping,
+    Optional,
+    Sequence,
+    Tuple,
+    TypedDict,
+    Union,
+    final,
+    overload,
+)
 
 import numpy as np
 import numpy.typing as npt
@@ -25,8 +37,10 @@ __all__ = [
     "detect",
     "detect_batch",
     "detect_case",
+    "detect_exit",
     "detect_time",
     "detect_time_case",
+    "intervals",
     "truth",
     "truth_case",
 ]
@@ -42,6 +56,30 @@ _Number = Union[float, int, np.floating[Any], np.integer[Any]]
 _Vector = Union[Sequence[_Number], npt.NDArray[np.floating[Any]]]
 _Points = Union[Sequence[Sequence[_Number]], npt.NDArray[np.floating[Any]]]
 _Array = Union[npt.ArrayLike, npt.NDArray[Any]]
+_Case = Union[Mapping[str, Any], str]
+
+class _Span(TypedDict):
+    """One span of ``intervals``: where the relation starts and stops, each enclosed."""
+
+    start: Tuple[float, float]
+    end: Tuple[float, float]
+    certain: bool
+
+class _Intervals(TypedDict):
+    """``intervals(case, relation=None)``: the CLI's ``intervals`` object."""
+
+    sep: float
+    sep_v: float
+    inside: list[_Span]
+    near: list[_Span]
+    breach: list[_Span]
+    loss_of_separation: Optional[Tuple[float, float]]
+
+class _Exit(TypedDict):
+    """``detect_exit``'s answer: the CLI's ``exits`` and ``exit_kind``."""
+
+    exits: bool
+    kind: Literal["exact", "conservative"]
 
 class Error(ValueError):
     """Bad input to polyguard: ``field`` names what is wrong, the message says why."""
@@ -161,6 +199,43 @@ def detect_time(
 
 def detect_time_case(case: Union[Mapping[str, Any], str]) -> EntryTime:
     """``detect_time`` on a case object of docs/cases.md."""
+
+@overload
+def intervals(
+    case: _Case,
+    relation: Literal["inside", "near", "breach"] = "near",
+    sep: _Number = 0.0,
+    sep_v: _Number = 0.0,
+) -> list[_Span]:
+    """Every time during [0, lookahead] that the relation holds, as certified spans
+    (docs/cases.md, "Separation and fences"): "inside" the closed polygon (and slab),
+    "near" (within ``sep`` of it, and ``sep_v`` of the slab: the first start is the loss
+    of separation), or "breach" (not deeper than ``sep`` inside a keep-in fence, or than
+    ``sep_v`` inside its slab). The same numbers as ``polyguard detect --intervals``.
+
+    ``case`` is a case object of docs/cases.md; its own ``sep`` and ``sep_v`` win over
+    the arguments, as a line's do over the CLI's ``--sep`` and ``--sep-v``. Spans are
+    sorted; nothing is missed; every end of the set lies in a span's ``start`` or
+    ``end``; a ``certain`` span holds throughout [start[1], end[0]].
+
+    Raises CaseError naming the field (``sep``), or Error naming ``relation``.
+    """
+
+@overload
+def intervals(
+    case: _Case,
+    relation: None,
+    sep: _Number = 0.0,
+    sep_v: _Number = 0.0,
+) -> _Intervals:
+    """The three relations at once: the CLI's ``intervals`` object (see above)."""
+
+def detect_exit(case: _Case, sep: _Number = 0.0, sep_v: _Number = 0.0) -> _Exit:
+    """Does the point leave the polygon taken as a keep-in fence (come within ``sep`` of
+    its boundary or outside it, or within ``sep_v`` of the slab's floor or ceiling)
+    during [0, lookahead]? Never False when it does: ``polyguard detect --fence
+    keep-in``'s ``exits`` and ``exit_kind``. The case's own ``sep``, ``sep_v`` win.
+    """
 
 def truth(
     lookahead: _Number,

@@ -486,3 +486,61 @@ fn a_piped_run_prints_progress_lines_unless_quiet() {
         assert!(!err.contains("cases ("), "--quiet: {err}");
     }
 }
+
+/// The interval hunt: a small run passes; two shards merge into exactly the unsharded
+/// run's counts (kept cases with them); a shard given twice, a missing one without
+/// --partial, and an interval report beside a paper-A one are refused; the drop-second
+/// canary is caught keeping `interval_missed` cases.
+#[test]
+fn interval_hunts_pass_merge_exactly_and_catch_their_canary() {
+    let dirs: Vec<PathBuf> = ["iv-0", "iv-1", "iv-all", "iv-merged", "iv-a", "iv-drop"]
+        .iter()
+        .map(|n| out_dir(n))
+        .collect();
+    let base = ["--intervals", "--cases", "80", "--seed", "7", "--quiet"];
+    for (i, d) in dirs[..2].iter().enumerate() {
+        let shard = format!("{i}/2");
+        let (code, out, err) = assure(&[&base[..], &["--shard", &shard]].concat(), d);
+        assert_eq!(code, 0, "{out}{err}");
+    }
+    let (code, out, err) = assure(&base, &dirs[2]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(out.starts_with("PASS: 80 cases"), "{out}");
+    let (code, out, err) = merge(&[&dirs[0], &dirs[1]], &[], &dirs[3]);
+    assert_eq!(code, 0, "{out}{err}");
+    let read = |d: &PathBuf| -> serde_json::Value {
+        let text = std::fs::read_to_string(d.join("report.json")).expect("report.json");
+        serde_json::from_str(&text).expect("JSON")
+    };
+    let (whole, merged) = (read(&dirs[2]), read(&dirs[3]));
+    for key in ["cases", "classes", "relations", "modes", "exits"] {
+        assert_eq!(whole[key], merged[key], "{key}");
+    }
+    let (code, _, err) = merge(&[&dirs[0], &dirs[0]], &[], &dirs[3]);
+    assert_eq!(code, 2, "{err}");
+    let (code, _, err) = merge(&[&dirs[0]], &[], &dirs[3]);
+    assert_eq!(code, 2, "{err}");
+    let (code, _, _) = assure(&["--cases", "20", "--quiet"], &dirs[4]);
+    assert_eq!(code, 0);
+    let (code, _, err) = merge(&[&dirs[0], &dirs[4]], &[], &dirs[3]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("interval hunts"), "{err}");
+    let (code, out, err) = assure(
+        &[
+            "--intervals",
+            "--engine",
+            "drop-second",
+            "--cases",
+            "80",
+            "--seed",
+            "7",
+            "--quiet",
+        ],
+        &dirs[5],
+    );
+    assert_eq!(code, 1, "{out}{err}");
+    assert!(
+        out.lines().any(|l| l.starts_with("kept interval_missed ")),
+        "{out}"
+    );
+}

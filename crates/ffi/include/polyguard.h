@@ -82,8 +82,9 @@
 // A slab's bottom lies above its top (paper A §III).
 #define PG_ERR_SLAB_INVERTED -10
 
-// The caller's buffer is too small: the batch's hits (the count is still written) or
-// the error message (truncated, still NUL-terminated).
+// The caller's buffer is too small: the batch's hits or `pg_intervals`' spans (the first
+// `cap` are written and the count of the whole answer is still written), or the error
+// message (truncated, still NUL-terminated).
 #define PG_ERR_CAPACITY -11
 
 // The engine panicked: a bug in polyguard, caught at the boundary (please report it
@@ -92,10 +93,6 @@
 
 // Any other invalid input: a pointer not aligned for its type (the message names it).
 #define PG_ERR_INVALID -13
-
-// `pg_intervals`: the answer has more spans than `cap`; the first `cap` are written and
-// `*n_out` is the number of spans of the whole answer.
-#define PG_ERR_BUFFER_TOO_SMALL -14
 
 // `pg_detection.kind` and `pg_hit.kind`: every comparison behind the answer was
 // certified; paper A computed without rounding answers the same.
@@ -395,11 +392,11 @@ int pg_detect_batch(const struct pg_params *params,
 //
 // The buffer: at most `cap` spans are written to `out` (NULL allowed when `cap` is 0)
 // and the number of spans of the answer to `*n_out`. When it exceeds `cap`, the first
-// `cap` spans are written and the status is `PG_ERR_BUFFER_TOO_SMALL`: call again with
+// `cap` spans are written and the status is `PG_ERR_CAPACITY`: call again with
 // `cap >= *n_out` (`cap = 0` asks for the count alone). A truncated answer is never
 // `PG_OK`.
 //
-// Returns `PG_OK`, `PG_ERR_BUFFER_TOO_SMALL`, or another `PG_ERR_*` code with a message
+// Returns `PG_OK`, `PG_ERR_CAPACITY`, or another `PG_ERR_*` code with a message
 // naming the field (`sep.d: …`, `relation: …`, `polygon.vertices: …`); on those
 // `*n_out` is 1 and `out[0]` (when `cap` ≥ 1 and `out` is valid) is the possible span
 // [0, +∞], [0, +∞], so that an unchecked status never reads "never".

@@ -61,17 +61,15 @@ pub const PG_ERR_DIMENSION_MISMATCH: c_int = -8;
 pub const PG_ERR_BAD_PARAMETER: c_int = -9;
 /// A slab's bottom lies above its top (paper A §III).
 pub const PG_ERR_SLAB_INVERTED: c_int = -10;
-/// The caller's buffer is too small: the batch's hits (the count is still written) or
-/// the error message (truncated, still NUL-terminated).
+/// The caller's buffer is too small: the batch's hits or `pg_intervals`' spans (the first
+/// `cap` are written and the count of the whole answer is still written), or the error
+/// message (truncated, still NUL-terminated).
 pub const PG_ERR_CAPACITY: c_int = -11;
 /// The engine panicked: a bug in polyguard, caught at the boundary (please report it
 /// with the input).
 pub const PG_ERR_PANIC: c_int = -12;
 /// Any other invalid input: a pointer not aligned for its type (the message names it).
 pub const PG_ERR_INVALID: c_int = -13;
-/// `pg_intervals`: the answer has more spans than `cap`; the first `cap` are written and
-/// `*n_out` is the number of spans of the whole answer.
-pub const PG_ERR_BUFFER_TOO_SMALL: c_int = -14;
 
 /// `pg_detection.kind` and `pg_hit.kind`: every comparison behind the answer was
 /// certified; paper A computed without rounding answers the same.
@@ -859,11 +857,11 @@ const POSSIBLE_ALWAYS: PgSpan = PgSpan {
 ///
 /// The buffer: at most `cap` spans are written to `out` (NULL allowed when `cap` is 0)
 /// and the number of spans of the answer to `*n_out`. When it exceeds `cap`, the first
-/// `cap` spans are written and the status is `PG_ERR_BUFFER_TOO_SMALL`: call again with
+/// `cap` spans are written and the status is `PG_ERR_CAPACITY`: call again with
 /// `cap >= *n_out` (`cap = 0` asks for the count alone). A truncated answer is never
 /// `PG_OK`.
 ///
-/// Returns `PG_OK`, `PG_ERR_BUFFER_TOO_SMALL`, or another `PG_ERR_*` code with a message
+/// Returns `PG_OK`, `PG_ERR_CAPACITY`, or another `PG_ERR_*` code with a message
 /// naming the field (`sep.d: …`, `relation: …`, `polygon.vertices: …`); on those
 /// `*n_out` is 1 and `out[0]` (when `cap` ≥ 1 and `out` is valid) is the possible span
 /// [0, +∞], [0, +∞], so that an unchecked status never reads "never".
@@ -915,7 +913,7 @@ pub unsafe extern "C" fn pg_intervals(
         *n_out = spans.len();
         if spans.len() > cap {
             return Err(Failure::new(
-                PG_ERR_BUFFER_TOO_SMALL,
+                PG_ERR_CAPACITY,
                 format!(
                     "out: {} spans, room for {cap}; the first {cap} are written, call again \
                      with cap >= {}",
@@ -1033,7 +1031,6 @@ pub extern "C" fn pg_status_name(status: c_int) -> *const c_char {
         PG_ERR_CAPACITY => b"PG_ERR_CAPACITY\0",
         PG_ERR_PANIC => b"PG_ERR_PANIC\0",
         PG_ERR_INVALID => b"PG_ERR_INVALID\0",
-        PG_ERR_BUFFER_TOO_SMALL => b"PG_ERR_BUFFER_TOO_SMALL\0",
         _ => b"unknown\0",
     };
     s.as_ptr().cast()
@@ -1132,7 +1129,6 @@ mod tests {
             PG_ERR_CAPACITY,
             PG_ERR_PANIC,
             PG_ERR_INVALID,
-            PG_ERR_BUFFER_TOO_SMALL,
         ];
         let names: std::collections::HashSet<String> = codes
             .iter()

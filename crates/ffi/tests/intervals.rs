@@ -69,7 +69,7 @@ fn spans(
     // SAFETY: valid pointers; cap 0 with out NULL asks for the count.
     let rc = unsafe { pg_intervals(p, pt, poly, relation, &sep, ptr::null_mut(), 0, &mut n) };
     assert!(
-        rc == PG_OK && n == 0 || rc == PG_ERR_BUFFER_TOO_SMALL && n > 0,
+        rc == PG_OK && n == 0 || rc == PG_ERR_CAPACITY && n > 0,
         "count: status {rc}, {n} spans: {}",
         message()
     );
@@ -258,7 +258,7 @@ fn the_drone_leaves_through_its_ceiling() {
 }
 
 /// The buffer protocol: a buffer too small gets the first spans, the count and
-/// PG_ERR_BUFFER_TOO_SMALL; an exact one PG_OK; the spans written are the same either way.
+/// PG_ERR_CAPACITY; an exact one PG_OK; the spans written are the same either way.
 #[test]
 fn a_buffer_too_small_gets_the_count_and_a_prefix() {
     let p = params(10.0, 0.01);
@@ -282,7 +282,7 @@ fn a_buffer_too_small_gets_the_count_and_a_prefix() {
             &mut n,
         )
     };
-    assert_eq!(rc, PG_ERR_BUFFER_TOO_SMALL);
+    assert_eq!(rc, PG_ERR_CAPACITY);
     assert_eq!(n, 2);
     assert_eq!(one[0], all[0]);
     assert!(
@@ -291,8 +291,8 @@ fn a_buffer_too_small_gets_the_count_and_a_prefix() {
         message()
     );
     // SAFETY: a static string.
-    let name = unsafe { CStr::from_ptr(pg_status_name(PG_ERR_BUFFER_TOO_SMALL)) };
-    assert_eq!(name.to_str(), Ok("PG_ERR_BUFFER_TOO_SMALL"));
+    let name = unsafe { CStr::from_ptr(pg_status_name(PG_ERR_CAPACITY)) };
+    assert_eq!(name.to_str(), Ok("PG_ERR_CAPACITY"));
     // A larger buffer than needed: PG_OK, the rest untouched.
     let mut big = [PgSpan::default(); 4];
     // SAFETY: `big` holds 4 spans.

@@ -171,7 +171,7 @@ impl CCase {
                 &mut n,
             )
         };
-        assert!(rc == PG_OK || rc == PG_ERR_BUFFER_TOO_SMALL, "status {rc}");
+        assert!(rc == PG_OK || rc == PG_ERR_CAPACITY, "status {rc}");
         let mut out = vec![PgSpan::default(); n];
         let mut m = 0;
         // SAFETY: `out` holds n spans.

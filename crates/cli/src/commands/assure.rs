@@ -676,6 +676,45 @@ fn finish(report: &Report, out: &Path) -> ExitCode {
     }
 }
 
+/// Which hunt a set of reports is of.
+enum Hunt {
+    PaperA,
+    PaperB,
+    Intervals,
+}
+
+/// The hunt of every report in `texts`: paper B's say so (`"paper": "b"`), interval
+/// hunts too (`"hunt": "intervals"`); reports of different hunts are refused.
+fn hunt_of(texts: &[String]) -> Result<Hunt, String> {
+    let member = |t: &str, key: &str| -> Option<String> {
+        serde_json::from_str::<serde_json::Value>(t)
+            .ok()?
+            .get(key)?
+            .as_str()
+            .map(str::to_owned)
+    };
+    let n = texts.len();
+    let iv = texts
+        .iter()
+        .filter(|t| member(t, "hunt").as_deref() == Some("intervals"))
+        .count();
+    let b = texts
+        .iter()
+        .filter(|t| member(t, "paper").as_deref() == Some("b"))
+        .count();
+    match (iv, b) {
+        (iv, 0) if iv == n => Ok(Hunt::Intervals),
+        (0, b) if b == n => Ok(Hunt::PaperB),
+        (0, 0) => Ok(Hunt::PaperA),
+        (iv, 0) => Err(format!(
+            "{iv} of the {n} reports are interval hunts and the rest are not: merge each hunt apart"
+        )),
+        (_, b) => Err(format!(
+            "{b} of the {n} reports are paper B's and the rest paper A's: merge each paper's apart"
+        )),
+    }
+}
+
 fn merge(paths: &[PathBuf], out: &Path, partial: bool) -> ExitCode {
     let fail = |msg: String| {
         eprintln!("polyguard assure merge: {msg}");
@@ -688,36 +727,11 @@ fn merge(paths: &[PathBuf], out: &Path, partial: bool) -> ExitCode {
             Err(e) => return fail(format!("cannot read {}: {e}", p.display())),
         }
     }
-    // paper-B reports say so ("paper": "b"); all or none of the reports must be
-    let is_b = |t: &str| {
-        serde_json::from_str::<serde_json::Value>(t)
-            .ok()
-            .is_some_and(|v| v.get("paper").and_then(|p| p.as_str()) == Some("b"))
-    };
-    let is_intervals = |t: &str| {
-        serde_json::from_str::<serde_json::Value>(t)
-            .ok()
-            .is_some_and(|v| v.get("hunt").and_then(|p| p.as_str()) == Some("intervals"))
-    };
-    let iv = texts.iter().filter(|t| is_intervals(t)).count();
-    if iv == texts.len() {
-        return super::assure_intervals::merge(paths, &texts, out, partial);
-    }
-    if iv > 0 {
-        return fail(format!(
-            "{iv} of the {} reports are interval hunts and the rest are not: merge each hunt apart",
-            texts.len()
-        ));
-    }
-    let b = texts.iter().filter(|t| is_b(t)).count();
-    if b == texts.len() {
-        return super::assure_b::merge(paths, &texts, out, partial);
-    }
-    if b > 0 {
-        return fail(format!(
-            "{b} of the {} reports are paper B's and the rest paper A's: merge each paper's apart",
-            texts.len()
-        ));
+    match hunt_of(&texts) {
+        Err(e) => return fail(e),
+        Ok(Hunt::Intervals) => return super::assure_intervals::merge(paths, &texts, out, partial),
+        Ok(Hunt::PaperB) => return super::assure_b::merge(paths, &texts, out, partial),
+        Ok(Hunt::PaperA) => {}
     }
     let mut reports = Vec::with_capacity(paths.len());
     for (p, text) in paths.iter().zip(&texts) {

@@ -501,7 +501,7 @@ static long spans_of(const pg_params *p, const pg_point *pt, const pg_polygon *p
                      int relation, pg_separation sep, pg_span *out, size_t room) {
     size_t n = 12345, m = 0, k;
     int rc = pg_intervals(p, pt, poly, relation, &sep, NULL, 0, &n);
-    CHECK((rc == PG_OK && n == 0) || (rc == PG_ERR_BUFFER_TOO_SMALL && n > 0),
+    CHECK((rc == PG_OK && n == 0) || (rc == PG_ERR_CAPACITY && n > 0),
           "relation %d: the count: %s, %u", relation, pg_status_name(rc), (unsigned)n);
     if (n > room) {
         CHECK(0, "relation %d: %u spans, room for %u", relation, (unsigned)n, (unsigned)room);
@@ -565,13 +565,13 @@ static void test_intervals(void) {
 
         /* the buffer protocol: room for 1 of the 2 breach spans */
         rc = pg_intervals(&p, &pt, &sq, PG_RELATION_BREACH, &half, out, 1, &n);
-        CHECK(rc == PG_ERR_BUFFER_TOO_SMALL && n == 2, "cap 1: %s, %u", pg_status_name(rc),
+        CHECK(rc == PG_ERR_CAPACITY && n == 2, "cap 1: %s, %u", pg_status_name(rc),
               (unsigned)n);
         CHECK(out[0].start_lo == 0.0 && out[0].end_lo <= 2.5 && 2.5 <= out[0].end_hi,
               "cap 1: the first span is written");
         CHECK(starts_with(last_message(), "out: 2 spans, room for 1"), "cap 1: %s",
               last_message());
-        CHECK(strcmp(pg_status_name(PG_ERR_BUFFER_TOO_SMALL), "PG_ERR_BUFFER_TOO_SMALL") == 0,
+        CHECK(strcmp(pg_status_name(PG_ERR_CAPACITY), "PG_ERR_CAPACITY") == 0,
               "status name");
 
         /* errors name the field; the answer left is one possible span over all time */

@@ -64,7 +64,7 @@
 //! (t1, t2), t2 − t1 ≤ 2ε, by Newton's method and certified signs; the sub-pieces
 //! between the brackets are decided with each function's range taken as the hull of its
 //! values at their ends (exact for a monotone function), and the brackets are undecided
-//! (unless the relation holds on both sides and on the bracket too).
+//! (unless both sides are decided alike and the bracket is too).
 //!
 //! The pieces tile [0, T] from left to right. Runs of pieces that hold are *true
 //! stretches*, runs that fail *false stretches*, runs of undecided pieces *clusters*.

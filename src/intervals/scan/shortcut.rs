@@ -10,9 +10,10 @@
 //! The brackets cut [a, b] into sub-pieces on which every one of the functions is
 //! monotone, so its range there is the hull of its values at the sub-piece's ends (exact,
 //! up to rounding): each sub-piece is assessed with those ranges put in. A bracket is
-//! undecided, except where the relation holds on both sides and on the bracket itself (a
-//! change of reason, as from "within D" to "inside"). When any sub-piece stays
-//! undecided the shortcut gives up and the caller halves [a, b].
+//! undecided, unless the sub-pieces on both sides are decided alike and the bracket,
+//! assessed in the same way, is too (a change of reason, as from "within D" to
+//! "inside", or a crossing where the slab excludes the point anyway). When any
+//! sub-piece stays undecided the shortcut gives up and the caller halves [a, b].
 
 use super::{
     bracket, centre, hull, sign, signed, Ball, Cands, Class, Fun, Pieces, Scan, State, Summary, FEW,
@@ -137,14 +138,21 @@ impl Scan<'_> {
                 return None;
             }
         }
-        // A bracket holds when both sides do and it does itself (with no contact from the
-        // bracket to the next sub-piece's end, the state found there is the bracket's).
+        // A bracket joins its sides when both are decided alike and it is itself (as a
+        // change of reason, from "within D" to "inside", or a crossing above the slab).
+        // The state found on the next sub-piece is the bracket's when neither has a
+        // contact; else it is unknown there.
         for s in (1..np - 1).step_by(2) {
-            if class[s - 1] == Class::Holds && class[s + 1] == Class::Holds && !touched[s + 1] {
+            if class[s - 1] == class[s + 1] {
                 let (mid, half) = centre(at[s], at[s + 1]);
                 let (piece, _) = self.assess(mid, half, child, &over(s)[..k], false);
-                if !piece.touching && self.classify(&piece, states[s + 1]) == Class::Holds {
-                    class[s] = Class::Holds;
+                let state = if piece.touching || touched[s + 1] {
+                    State::Unknown
+                } else {
+                    states[s + 1]
+                };
+                if self.classify(&piece, state) == class[s + 1] {
+                    class[s] = class[s + 1];
                 }
             }
         }

@@ -149,15 +149,19 @@ impl Scan<'_> {
     }
 
     /// The point's winding number about P(τ) (paper A §II.B's crossing count, on
-    /// balls): see [`winding`].
+    /// balls): see [`winding`]. An even, non-zero winding number is unknown here (no
+    /// entry can be certified there).
     fn winding(&self, tau: f64) -> State {
-        winding(
+        match winding(
             self.p.len(),
             |i| (self.p[i], self.vels[i]),
             self.s,
             self.v,
             tau,
-        )
+        ) {
+            State::Undefined => State::Unknown,
+            w => w,
+        }
     }
 
     /// Visits [a, b] whose candidate edges are `cands[from..to]`; `true` stops the scan
@@ -278,7 +282,7 @@ pub fn first_entry(
     // Scale space by a power of two so that the largest magnitude is about 1: the
     // question is the same (every position and velocity times 2^k, exactly), and the
     // products of the scan neither overflow nor underflow. Only an exact scaling is used.
-    let frame = Frame::new(t, s, v, p, vels, heights, &[]);
+    let frame = Frame::new(t, s, v, p, vels, heights, &[], false);
     let (s, v, heights) = (frame.pt(s), frame.pt(v), heights.map(|z| frame.heights(z)));
     let p: Vec<Vect2> = p.iter().map(|&a| frame.pt(a)).collect();
     let vels: Vec<Vect2> = vels.iter().map(|&a| frame.pt(a)).collect();

@@ -36,7 +36,7 @@
 
 use crate::ball::{mx, nonnegative, positive, up, Ball, BallV, Tri};
 use crate::detect::statically_shaped;
-use crate::intervals::{Class, Heights, Pieces, Relation, Scan, Separation};
+use crate::intervals::{Class, Heights, Pieces, Relation, Scan, Separation, Workspace};
 use crate::motion::{winding, Frame, SlabLine, State};
 use crate::predicates::{self as pr, PathLine};
 use crate::vect2::Vect2;
@@ -119,9 +119,14 @@ fn scan_exit(
     heights: Option<Heights>,
     sep: Separation,
 ) -> Tri {
-    let Some(mut scan) = Scan::new(t, s, v, p, vels, heights, Relation::Breach, sep) else {
+    let mut ws = Workspace::new();
+    let Some(mut scan) = Scan::new(t, s, v, p, vels, heights, Relation::Breach, sep, &mut ws)
+    else {
         return Tri::Unsure;
     };
+    if scan.out_at_start() {
+        return Tri::Yes;
+    }
     let mut first = FirstBreach::default();
     scan.run(&mut first);
     if first.found {
@@ -158,7 +163,7 @@ fn static_exit(
     if !ok {
         return Tri::Unsure;
     }
-    let frame = Frame::new(t, s, v, p, vels, heights, &[sep.d, h]);
+    let frame = Frame::new(t, s, v, p, vels, heights, &[sep.d, h], true);
     let (s, v, d) = (frame.pt(s), frame.pt(v), frame.len(sep.d));
     // 3. The height against the shrunk slab, at t = 0 and t = T.
     let mut acc = match heights {
@@ -173,7 +178,7 @@ fn static_exit(
     let vertex = |i: usize| frame.pt(p[i]);
     match winding(n, |i| (vertex(i), Vect2::ZERO), s, Vect2::ZERO, 0.0) {
         State::Outside => return Tri::Yes,
-        State::Unknown => acc = Tri::Unsure,
+        State::Unknown | State::Undefined => acc = Tri::Unsure,
         State::Inside => {}
     }
     // 2. The relative path 0 → T·(v − V) against every edge (a point when v = V or

@@ -30,18 +30,19 @@
 //! A certified branch and bound over time (module `scan`), the method of
 //! [`crate::entry`]: on a piece [a, b] (centre m, half width h) every edge's quadratics
 //! g = (x − a)×(b − a), h₁ = (x − a)·(b − a), h₂ = (b − x)·(b − a) (§II.C without the
-//! BUFF band), the band g² − D²|b − a|² (the interval square of g's range minus D² times
-//! the range of |b − a|²: a quartic for a warping polygon) and the vertex terms
-//! |x − p_k|² − D² are enclosed by their Taylor ranges; the slab lines by theirs. From
-//! them, sufficient conditions over the whole closed piece:
+//! BUFF band), the band's sides g ∓ D·|b − a| (the range of |b − a| is the square root
+//! of the range of the quadratic |b − a|², its ends rounded outward) and the vertex
+//! terms |x − p_k|² − D² are enclosed by their Taylor ranges; the slab lines by theirs.
+//! From them, sufficient conditions over the whole closed piece:
 //! - no contact: g ≠ 0, or h₁ < 0, or h₂ < 0 throughout, for every edge. Then the
 //!   winding number is constant on the piece, and a certified crossing count at m
-//!   (§II.B on balls) gives it: 0 outside, odd inside, else unknown.
-//! - farther than D from an edge: g² − D²|e|² > 0 (for D = 0: g ≠ 0), or h₁ < 0 and
-//!   |x − a| > D, or h₂ < 0 and |x − b| > D, throughout (the nearest point of the
-//!   segment is then on its line, at a, or at b).
+//!   (§II.B on balls) gives it: 0 outside, odd inside, even and not 0 undefined (a
+//!   polygon that is not simple), or unknown.
+//! - farther than D from an edge: g − D|e| > 0 or g + D|e| < 0 (the line is farther;
+//!   for D = 0: g ≠ 0), or h₁ < 0 and |x − a| > D, or h₂ < 0 and |x − b| > D,
+//!   throughout (the nearest point of the segment is then on its line, at a, or at b).
 //! - within D of an edge: |x − a|² − D² ≤ 0, or |x − b|² − D² ≤ 0, or h₁ ≥ 0, h₂ ≥ 0
-//!   and g² − D²|e|² ≤ 0 throughout.
+//!   and g − D|e| ≤ 0 ≤ g + D|e| throughout.
 //!
 //! inside **holds** on the piece when there is no contact, the point is inside and the
 //! slab's lines are ≥ 0; it **fails** when the slab's lines exclude it or there is no
@@ -52,14 +53,18 @@
 //! point is inside, farther than D from every edge and strictly inside the shrunk slab.
 //! (Every edge that is farther than D, or certainly not touched, on a piece stays so on
 //! its halves, so the halves test only the others.) A piece that is neither is halved,
-//! down to width ε = T·2⁻³⁶; there it is **undecided**.
+//! down to width ε = T·2⁻³⁶ (inside a cluster already L long, L/64: its end cannot be
+//! enclosed more finely than that); there it is **undecided**. So is, at once, a piece
+//! without contact on which the winding number is certainly even and not 0 and no edge
+//! is undecided: there the relation is undefined, and halving cannot change that.
 //!
-//! A shortcut settles the common piece at once: when exactly one of those functions may
-//! change sign on the piece (and matters there), its derivative's range excludes 0 and
-//! its signs at a and b are certain and opposite, its root is bracketed in (t1, t2),
-//! t2 − t1 ≤ 2ε, by Newton's method and certified signs; [a, t1] and [t2, b] are then
-//! decided with that function's range taken as the hull of its end values (exact for a
-//! monotone function), and (t1, t2) is undecided.
+//! A shortcut settles the common piece at once (module `scan::shortcut`): when at most
+//! three of those functions may change sign on the piece (and matter there), each
+//! certainly monotone with certain signs at a and b, each root is bracketed in
+//! (t1, t2), t2 − t1 ≤ 2ε, by Newton's method and certified signs; the sub-pieces
+//! between the brackets are decided with each function's range taken as the hull of its
+//! values at their ends (exact for a monotone function), and the brackets are undecided
+//! (unless both sides are decided alike and the bracket is too).
 //!
 //! The pieces tile [0, T] from left to right. Runs of pieces that hold are *true
 //! stretches*, runs that fail *false stretches*, runs of undecided pieces *clusters*.
@@ -87,9 +92,10 @@
 //! That of [`crate::entry`]: every value is a `Ball` at an exact float time, each
 //! operation adding 2u·|result| to the radius (`crate::ball`'s rounding model), and a
 //! quadratic's Taylor form f(m) ± (|f′(m)|·h + |f″/2|·h²) is exact over |t − m| ≤ h,
-//! so its range is rigorous; the band's interval square rounds its ends outward; every
-//! decision compares an end of a range with 0. The case is first scaled by an exact
-//! power of two so that no product overflows or underflows. No absolute epsilon enters;
+//! so its range is rigorous; the square root of a range rounds its ends outward; every
+//! decision compares an end of a range with 0. A case whose magnitudes are beyond
+//! 2^±300 is first scaled by an exact power of two, so that no product overflows or
+//! underflows. No absolute epsilon enters;
 //! an enclosure's width is the resolution ε, or the rounding noise of the function whose
 //! root it holds when that is larger.
 //!
@@ -106,7 +112,7 @@ use std::vec::Vec;
 use crate::error::CaseError;
 pub use crate::motion::Heights;
 use crate::vect2::Vect2;
-pub(crate) use scan::{Class, Pieces, Scan};
+pub(crate) use scan::{Class, Pieces, Scan, Workspace};
 
 /// Which set of times a scan encloses (the module doc's definitions).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -332,7 +338,8 @@ fn scan_into(
     sep: Separation,
     sink: &mut impl Sink,
 ) {
-    match Scan::new(t, s, v, p, vels, heights, relation, sep) {
+    let mut ws = Workspace::new();
+    match Scan::new(t, s, v, p, vels, heights, relation, sep, &mut ws) {
         Some(mut scan) => {
             let mut spans = Spans {
                 sink,

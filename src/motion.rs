@@ -54,6 +54,9 @@ pub const VISIT_BUDGET: usize = 20_000;
 pub(crate) enum State {
     Outside,
     Inside,
+    /// The winding number is certainly even and not 0.
+    Undefined,
+    /// Not certified.
     Unknown,
 }
 
@@ -125,6 +128,29 @@ pub(crate) struct Edge {
     pub e22: Ball,
     pub q22: Ball,
     pub w22: Ball,
+    /// Which of q1, e1, w1 are exactly 0, when the edge was formed by [`Edge::lean`]
+    /// (else all `false`): their terms are then left out of every sum, exactly.
+    zero: [bool; 3],
+}
+
+/// a + b where either may be absent (an exact 0).
+#[inline]
+fn plus(a: Option<Ball>, b: Option<Ball>) -> Ball {
+    match (a, b) {
+        (Some(a), Some(b)) => a.add(b),
+        (Some(a), None) | (None, Some(a)) => a,
+        (None, None) => Ball::exact(0.0),
+    }
+}
+
+/// f(), unless `absent` (an exact 0).
+#[inline]
+fn term(absent: bool, f: impl FnOnce() -> Ball) -> Option<Ball> {
+    if absent {
+        None
+    } else {
+        Some(f())
+    }
 }
 
 impl Edge {
@@ -133,27 +159,59 @@ impl Edge {
         let q1 = BallV::diff(v, va);
         let e1 = BallV::diff(vb, va);
         let w1 = e1.sub(q1);
+        // A velocity difference that is exactly 0 (a rigidly moving edge, a point moving
+        // with a vertex) makes its products exactly 0: kept exact rather than given the
+        // radius floor, which would put subnormal numbers (slow on most processors) into
+        // every range of the scan.
+        let zero = |x: BallV| x.v == Vect2::ZERO && x.r == 0.0;
+        let prod = |x: BallV, y: BallV, f: fn(BallV, BallV) -> Ball| {
+            if zero(x) || zero(y) {
+                Ball::exact(0.0)
+            } else {
+                f(x, y)
+            }
+        };
         Edge {
             q0: BallV::diff(s, a),
             q1,
             e0: BallV::diff(b, a),
             e1,
             w1,
-            g2: q1.cross(e1),
-            h12: q1.dot(e1),
-            h22: w1.dot(e1),
-            e22: e1.sq(),
-            q22: q1.sq(),
-            w22: w1.sq(),
+            g2: prod(q1, e1, BallV::cross),
+            h12: prod(q1, e1, BallV::dot),
+            h22: prod(w1, e1, BallV::dot),
+            e22: prod(e1, e1, BallV::dot),
+            q22: prod(q1, q1, BallV::dot),
+            w22: prod(w1, w1, BallV::dot),
+            zero: [false; 3],
         }
+    }
+
+    /// [`Edge::new`], with the terms of a velocity difference that is exactly 0 left out
+    /// of the Taylor forms (exact: they are 0; the radii are smaller and no subnormal
+    /// radius floor enters the hot sums). The interval scan's form.
+    pub(crate) fn lean(s: Vect2, v: Vect2, a: Vect2, va: Vect2, b: Vect2, vb: Vect2) -> Edge {
+        let mut e = Edge::new(s, v, a, va, b, vb);
+        let zero = |x: BallV| x.v == Vect2::ZERO && x.r == 0.0;
+        e.zero = [zero(e.q1), zero(e.e1), zero(e.w1)];
+        e
     }
 
     /// q(m), e(m), w(m) at the float time m.
     #[inline]
     pub(crate) fn at(&self, m: f64) -> (BallV, BallV, BallV) {
         let mb = Ball::exact(m);
-        let q = self.q0.add(self.q1.scale(mb));
-        let e = self.e0.add(self.e1.scale(mb));
+        let [zq, ze, _] = self.zero;
+        let q = if zq {
+            self.q0
+        } else {
+            self.q0.add(self.q1.scale(mb))
+        };
+        let e = if ze {
+            self.e0
+        } else {
+            self.e0.add(self.e1.scale(mb))
+        };
         (q, e, e.sub(q))
     }
 
@@ -167,46 +225,63 @@ impl Edge {
     /// g, h₁, h₂ as Taylor forms at m, from q(m), e(m), w(m) (§II.C's quadratics).
     #[inline]
     pub(crate) fn taylor3(&self, q: BallV, e: BallV, w: BallV) -> [Taylor; 3] {
-        [
-            Taylor {
-                f0: q.cross(e),
-                f1: self.q1.cross(e).add(q.cross(self.e1)),
-                f2: self.g2,
-            },
-            Taylor {
-                f0: q.dot(e),
-                f1: self.q1.dot(e).add(q.dot(self.e1)),
-                f2: self.h12,
-            },
-            Taylor {
-                f0: w.dot(e),
-                f1: self.w1.dot(e).add(w.dot(self.e1)),
-                f2: self.h22,
-            },
-        ]
+        [self.g(q, e), self.h1(q, e), self.h2(w, e)]
     }
 
-    /// |e|², |q|², |w|² as Taylor forms at m: the squared edge length and the squared
-    /// distances from the point to a and to b.
+    /// g = q × e as a Taylor form at m, from q(m), e(m).
     #[inline]
-    pub(crate) fn lengths(&self, q: BallV, e: BallV, w: BallV) -> [Taylor; 3] {
-        [
-            Taylor {
-                f0: e.sq(),
-                f1: e.dot(self.e1).scale(2.0),
-                f2: self.e22,
-            },
-            Taylor {
-                f0: q.sq(),
-                f1: q.dot(self.q1).scale(2.0),
-                f2: self.q22,
-            },
-            Taylor {
-                f0: w.sq(),
-                f1: w.dot(self.w1).scale(2.0),
-                f2: self.w22,
-            },
-        ]
+    pub(crate) fn g(&self, q: BallV, e: BallV) -> Taylor {
+        let [zq, ze, _] = self.zero;
+        Taylor {
+            f0: q.cross(e),
+            f1: plus(term(zq, || self.q1.cross(e)), term(ze, || q.cross(self.e1))),
+            f2: self.g2,
+        }
+    }
+
+    /// h₁ = q·e as a Taylor form at m.
+    #[inline]
+    pub(crate) fn h1(&self, q: BallV, e: BallV) -> Taylor {
+        let [zq, ze, _] = self.zero;
+        Taylor {
+            f0: q.dot(e),
+            f1: plus(term(zq, || self.q1.dot(e)), term(ze, || q.dot(self.e1))),
+            f2: self.h12,
+        }
+    }
+
+    /// h₂ = w·e as a Taylor form at m.
+    #[inline]
+    pub(crate) fn h2(&self, w: BallV, e: BallV) -> Taylor {
+        let [_, ze, zw] = self.zero;
+        Taylor {
+            f0: w.dot(e),
+            f1: plus(term(zw, || self.w1.dot(e)), term(ze, || w.dot(self.e1))),
+            f2: self.h22,
+        }
+    }
+
+    /// The edge is rigid: e1 is exactly 0 (known only for an edge formed by
+    /// [`Edge::lean`]).
+    #[inline]
+    pub(crate) fn rigid(&self) -> bool {
+        self.zero[1]
+    }
+
+    /// One squared length as a Taylor form at m: of q(m) (k = 0), e(m) (k = 1) or w(m)
+    /// (k = 2), whose velocity is q1, e1 or w1.
+    #[inline]
+    pub(crate) fn length(&self, k: usize, x: BallV) -> Taylor {
+        let (x1, f2) = match k {
+            0 => (self.q1, self.q22),
+            1 => (self.e1, self.e22),
+            _ => (self.w1, self.w22),
+        };
+        Taylor {
+            f0: x.sq(),
+            f1: plus(term(self.zero[k], || x.dot(x1).scale(2.0)), None),
+            f2,
+        }
     }
 
     /// The ranges of g, h₁, h₂ over |t − m| ≤ h.
@@ -245,14 +320,16 @@ impl Edge {
         if sa == sb {
             return Some(None);
         }
-        bracket(|t| self.g_with_slope(t), a, b, m, eps, sa, sb).map(Some)
+        bracket(|t| self.g_with_slope(t), a, b, m, eps, 0.0, sa, sb)
+            .map(|(t1, t2, _, _)| Some((t1, t2)))
     }
 
     /// g(t) as a ball and g′(t) as a float estimate (for Newton's method).
     #[inline]
     pub(crate) fn g_with_slope(&self, t: f64) -> (Ball, f64) {
-        let (q, e, _) = self.at(t);
-        (q.cross(e), self.q1.cross(e).add(q.cross(self.e1)).z)
+        let (q, e, w) = self.at(t);
+        let [g, ..] = self.taylor3(q, e, w);
+        (g.f0, g.f1.z)
     }
 
     /// Can the point be on this edge at some time of |t − m| ≤ h? `false` is certain.
@@ -288,18 +365,22 @@ pub(crate) fn touch_possible(g: Ball, h1: Ball, h2: Ball) -> bool {
 /// `sa` at a and `sb` ≠ `sa` at b (the caller's certificates). `f(t)` gives f(t) as a
 /// ball and f′(t) as a float estimate. Newton's method on the float centres gives an
 /// estimate r (any estimate in [a, b] will do: what follows certifies the bracket around
-/// it); floats t1 = r − δ and t2 = r + δ at which f has the certain signs `sa` and `sb`
-/// then bound the root, δ growing from `eps`/16. `Some((t1, t2))`: a ≤ t1 < t2 ≤ b with
-/// f of sign `sa` on [a, t1] and `sb` on [t2, b] (monotone), the root in (t1, t2).
+/// it; the iteration stops early at a fixed point, or once a step is at most `tol`);
+/// floats t1 = r − δ and t2 = r + δ at which f has the certain signs `sa` and `sb` then
+/// bound the root, δ growing from `eps`/16. `Some((t1, t2, f(t1), f(t2)))`:
+/// a ≤ t1 < t2 ≤ b with f of sign `sa` on [a, t1] and `sb` on [t2, b] (monotone), the
+/// root in (t1, t2).
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn bracket(
     f: impl Fn(f64) -> (Ball, f64),
     a: f64,
     b: f64,
     m: f64,
     eps: f64,
+    tol: f64,
     sa: bool,
     sb: bool,
-) -> Option<(f64, f64)> {
+) -> Option<(f64, f64, Ball, Ball)> {
     let mut r = m;
     for _ in 0..6 {
         let (y, d) = f(r);
@@ -307,14 +388,25 @@ pub(crate) fn bracket(
         if !step.is_finite() {
             break;
         }
-        r = (r - step).clamp(a, b);
+        let next = (r - step).clamp(a, b);
+        let done = next == r || step.abs() <= tol;
+        r = next;
+        if done {
+            break;
+        }
     }
     let mut delta = eps * (1.0 / 16.0);
     for _ in 0..80 {
         let t1 = if r - delta > a { r - delta } else { a };
         let t2 = if r + delta < b { r + delta } else { b };
-        if t1 < t2 && sign(f(t1).0) == Some(sa) && sign(f(t2).0) == Some(sb) {
-            return Some((t1, t2));
+        if t1 < t2 {
+            let f1 = f(t1).0;
+            if sign(f1) == Some(sa) {
+                let f2 = f(t2).0;
+                if sign(f2) == Some(sb) {
+                    return Some((t1, t2, f1, f2));
+                }
+            }
         }
         delta *= 2.0;
     }
@@ -378,6 +470,9 @@ impl SlabLine {
     }
 }
 
+/// The magnitudes 2^−LAZY … 2^LAZY that a lazy [`Frame`] leaves unscaled.
+pub(crate) const LAZY: i32 = 300;
+
 /// An exact change of length unit: every length times 2^k (paper A §II's question is
 /// invariant under it), chosen so that the largest magnitude of a case is about 1, so
 /// that the scans' products neither overflow nor underflow. Only an exact scaling is
@@ -392,7 +487,10 @@ pub(crate) struct Frame {
 impl Frame {
     /// The frame of a case: k = −ilogb of the largest of |s|, T·|v|, |p_i|, T·|V_i|, the
     /// heights (and T times their speeds) and the `extra` lengths; k = 0 unless every
-    /// one of those values (and v, V_i, the vertical speeds) scales exactly.
+    /// one of those values (and v, V_i, the vertical speeds) scales exactly. With
+    /// `lazy`, also k = 0 when that largest magnitude is within 2^±[`LAZY`]: the scans'
+    /// products of two lengths then stay far from overflow and underflow as they are.
+    #[allow(clippy::too_many_arguments)]
     pub(crate) fn new(
         t: f64,
         s: Vect2,
@@ -401,6 +499,7 @@ impl Frame {
         vels: &[Vect2],
         heights: Option<Heights>,
         extra: &[f64],
+        lazy: bool,
     ) -> Frame {
         let mut mag = s.x.abs().max(s.y.abs()).max(t * v.x.abs().max(v.y.abs()));
         for (pi, vi) in p.iter().zip(vels) {
@@ -421,6 +520,9 @@ impl Frame {
         } else {
             0
         };
+        if lazy && k.abs() <= LAZY {
+            return Frame::of(0);
+        }
         let frame = Frame::of(k);
         if k == 0 {
             return frame;
@@ -459,7 +561,9 @@ impl Frame {
     /// x·2^k (exact for every value [`Frame::new`] checked).
     #[inline]
     pub(crate) fn len(&self, x: f64) -> f64 {
-        if self.factor != 0.0 {
+        if self.k == 0 {
+            x
+        } else if self.factor != 0.0 {
             x * self.factor
         } else {
             libm::scalbn(x, self.k)
@@ -485,8 +589,8 @@ impl Frame {
 }
 
 /// The point's winding number about P(τ), certified, with a ray along +x, +y, −x or −y
-/// (the first whose every sign is decided): 0 outside, odd inside, else unknown (paper
-/// A §II.B's crossing count, on balls). `vertex(i)` gives p_i and V_i (in the scan's
+/// (the first whose every sign is decided): 0 outside, odd inside, even and not 0
+/// undefined, unknown when no ray decides (paper A §II.B's crossing count, on balls). `vertex(i)` gives p_i and V_i (in the scan's
 /// frame), s and v the point.
 pub(crate) fn winding(
     n: usize,
@@ -556,7 +660,7 @@ pub(crate) fn winding(
         return match w {
             0 => State::Outside,
             w if w % 2 != 0 => State::Inside,
-            _ => State::Unknown,
+            _ => State::Undefined,
         };
     }
     State::Unknown

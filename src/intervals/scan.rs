@@ -10,12 +10,14 @@
 //! [`CAND_CAP`] indices; when it is full, a piece's children test every edge.
 
 use super::{Relation, Separation};
-use crate::ball::{mx, round_down, round_up, Ball};
+use crate::ball::{mx, round_down, round_up, Ball, BallV};
 use crate::motion::{
     bracket, centre, sign, touch_possible, winding, Edge, Frame, Heights, SlabLine, State, Taylor,
     RESOLUTION, VISIT_BUDGET,
 };
 use crate::vect2::Vect2;
+
+mod shortcut;
 
 /// How many edges are formed once and kept (on the stack) for the whole scan.
 pub(crate) const EDGE_CAP: usize = 64;
@@ -41,35 +43,57 @@ pub(crate) trait Pieces {
 }
 
 /// One of the functions of t whose signs decide the relation on a piece (definitions
-/// of the parent module: an edge's g, h₁, h₂, its band g² − D²|e|², a vertex's
+/// of the parent module: an edge's g, h₁, h₂, the two sides g − D|e| and g + D|e| of its
+/// band (within D of its line exactly when g − D|e| ≤ 0 ≤ g + D|e|), a vertex's
 /// |x − p_k|² − D², a slab line).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Fun {
     Cross(u32),
     Along(u32),
     Back(u32),
-    Band(u32),
+    Minus(u32),
+    Plus(u32),
     Vertex(u32),
     Slab(u8),
 }
 
-/// The functions that may change sign on a piece and matter there: none, one, or more.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Lone {
-    None,
-    One(Fun),
-    Many,
+/// How many functions that may change sign on a piece the shortcut takes on at once.
+const FEW: usize = 3;
+
+/// The functions that may change sign on a piece and matter there: up to [`FEW`] of
+/// them, or more (`many`).
+#[derive(Clone, Copy, Debug)]
+struct Few {
+    funs: [Fun; FEW],
+    n: usize,
+    many: bool,
 }
 
-impl Lone {
+impl Few {
+    /// None yet.
+    const NONE: Few = Few {
+        funs: [Fun::Slab(0); FEW],
+        n: 0,
+        many: false,
+    };
+
     /// Counts `f`, which may change sign (the same function twice counts once).
     #[inline]
     fn add(&mut self, f: Fun) {
-        *self = match *self {
-            Lone::None => Lone::One(f),
-            Lone::One(g) if g == f => Lone::One(g),
-            _ => Lone::Many,
-        };
+        if self.many || self.funs[..self.n].contains(&f) {
+            return;
+        }
+        if self.n == FEW {
+            self.many = true;
+        } else {
+            self.funs[self.n] = f;
+            self.n += 1;
+        }
+    }
+
+    /// The functions, when there are at most [`FEW`] and at least one.
+    fn list(&self) -> Option<&[Fun]> {
+        (!self.many && self.n > 0).then(|| &self.funs[..self.n])
     }
 }
 
@@ -84,12 +108,12 @@ struct Summary {
     any_close: bool,
     /// The slab lines' ranges (3D).
     slab: Option<[Ball; 2]>,
-    lone: Lone,
+    few: Few,
 }
 
 /// The candidate edges of a piece: every live edge, or a segment of the stack.
 #[derive(Clone, Copy, Debug)]
-enum Cands {
+pub(super) enum Cands {
     All,
     Stack(usize, usize),
 }
@@ -99,9 +123,22 @@ struct Ranges {
     g: Ball,
     h1: Ball,
     h2: Ball,
-    band: Ball,
+    minus: Ball,
+    plus: Ball,
     head: Ball,
     tail: Ball,
+}
+
+/// A range that says nothing: (−∞, ∞).
+const UNKNOWN: Ball = Ball {
+    z: 0.0,
+    r: f64::INFINITY,
+};
+
+/// x ≤ 0, or NaN: not certainly positive.
+#[inline]
+fn not_positive(x: f64) -> bool {
+    x <= 0.0 || x.is_nan()
 }
 
 /// Does the range certainly exclude 0? (NaN: no.)
@@ -118,26 +155,36 @@ fn hull(x: Ball, y: Ball) -> Ball {
     Ball::from_interval(lo, hi)
 }
 
-/// The range of g² from the range of g: [(|g| − r)², (|g| + r)²], or from 0 when the
-/// range holds 0 (the interval square, each end rounded outward).
+/// The range of √x from the range of x (negative values cut off; each end rounded
+/// outward).
 #[inline]
-fn square(g: Ball) -> Ball {
-    let (lo, hi) = (g.lo(), g.hi());
-    let top = round_up(mx_abs(lo, hi) * mx_abs(lo, hi));
-    let bottom = if lo > 0.0 {
-        round_down(lo * lo)
-    } else if hi < 0.0 {
-        round_down(hi * hi)
-    } else {
-        0.0
-    };
-    Ball::from_interval(bottom.max(0.0), top)
+fn root(x: Ball) -> Ball {
+    let (lo, hi) = (x.lo().max(0.0), x.hi());
+    Ball::from_interval(
+        round_down(libm::sqrt(lo)).max(0.0),
+        round_up(libm::sqrt(hi)),
+    )
 }
 
-/// max(|a|, |b|).
-#[inline]
-fn mx_abs(a: f64, b: f64) -> f64 {
-    a.abs().max(b.abs())
+/// The scan's fixed storage, which the caller keeps on its stack: the first
+/// [`EDGE_CAP`] edges, and the stack of candidate edges of the open pieces.
+pub(crate) struct Workspace {
+    edges: [Edge; EDGE_CAP],
+    /// D·|e| of the stored edges that are rigid (e1 = 0).
+    reach: [Ball; EDGE_CAP],
+    cands: [u32; CAND_CAP],
+}
+
+impl Workspace {
+    /// Empty storage.
+    pub(crate) fn new() -> Workspace {
+        let o = Vect2::ZERO;
+        Workspace {
+            edges: [Edge::new(o, o, o, o, o, o); EDGE_CAP],
+            reach: [Ball::exact(0.0); EDGE_CAP],
+            cands: [0; CAND_CAP],
+        }
+    }
 }
 
 /// The scan over [0, T] of one relation (see the module doc).
@@ -150,15 +197,16 @@ pub(crate) struct Scan<'a> {
     /// The polygon as given (each vertex is put in the frame when used).
     p: &'a [Vect2],
     vels: &'a [Vect2],
-    cache: [Edge; EDGE_CAP],
-    /// D², in the frame, and whether D = 0.
+    /// The edges formed once (the first [`EDGE_CAP`]) and the candidates' stack.
+    ws: &'a mut Workspace,
+    /// D and D², in the frame, and whether D = 0.
+    d: Ball,
     d2: Ball,
     d_zero: bool,
     slab: Option<[SlabLine; 2]>,
     t: f64,
     eps: f64,
     state: State,
-    cands: [u32; CAND_CAP],
     len: usize,
     visits: usize,
     /// Where the undecided pieces sent last began, while the last piece sent was one.
@@ -180,6 +228,7 @@ impl<'a> Scan<'a> {
         heights: Option<Heights>,
         relation: Relation,
         sep: Separation,
+        ws: &'a mut Workspace,
     ) -> Option<Scan<'a>> {
         let n = p.len().min(vels.len());
         let (p, vels) = (&p[..n], &vels[..n]);
@@ -208,7 +257,7 @@ impl<'a> Scan<'a> {
         if !ok {
             return None;
         }
-        let frame = Frame::new(t, s, v, p, vels, heights, &[d, h]);
+        let frame = Frame::new(t, s, v, p, vels, heights, &[d, h], true);
         let (s, v) = (frame.pt(s), frame.pt(v));
         let (d, h) = (frame.len(d), frame.len(h));
         let off = match relation {
@@ -217,31 +266,42 @@ impl<'a> Scan<'a> {
             Relation::Breach => -h,
         };
         let slab = heights.map(|z| SlabLine::pair(frame.heights(z), off));
-        let o = Vect2::ZERO;
-        let zero = Edge::new(o, o, o, o, o, o);
-        let mut scan = Scan {
+        let scan = Scan {
             relation,
             frame,
             s,
             v,
             p,
             vels,
-            cache: [zero; EDGE_CAP],
+            ws,
+            d: Ball::exact(d),
             d2: Ball::exact(d).sq(),
             d_zero: d == 0.0,
             slab,
             t,
             eps: t * RESOLUTION,
             state: State::Unknown,
-            cands: [0; CAND_CAP],
             len: 0,
             visits: 0,
             cluster_from: None,
         };
         for i in 0..n.min(EDGE_CAP) {
-            scan.cache[i] = scan.make_edge(i);
+            let e = scan.make_edge(i);
+            if e.rigid() {
+                scan.ws.reach[i] = scan.d.mul(root(e.length(1, e.e0).range(0.0)));
+            }
+            scan.ws.edges[i] = e;
         }
         Some(scan)
+    }
+
+    /// At t = 0, certainly outside the polygon (a certified winding number 0), or
+    /// certainly past a slab line (≤ 0; for breach_D, whose lines are shrunk by H): a
+    /// quick certificate that breach_D holds at 0 (the module doc's conditions at one
+    /// time).
+    pub(crate) fn out_at_start(&self) -> bool {
+        let past = |line: &SlabLine| line.at(0.0).0.hi() <= 0.0;
+        self.slab.is_some_and(|lines| lines.iter().any(past)) || self.winding(0.0) == State::Outside
     }
 
     /// Scans [0, T], sending every piece to `out` (until it asks to stop).
@@ -253,7 +313,7 @@ impl<'a> Scan<'a> {
     fn make_edge(&self, i: usize) -> Edge {
         let j = next(self.p.len(), i);
         let f = &self.frame;
-        Edge::new(
+        Edge::lean(
             self.s,
             self.v,
             f.pt(self.p[i]),
@@ -261,15 +321,6 @@ impl<'a> Scan<'a> {
             f.pt(self.p[j]),
             f.pt(self.vels[j]),
         )
-    }
-
-    /// Edge i, from the cache when it is there.
-    #[inline]
-    fn edge(&self, i: u32) -> Edge {
-        match self.cache.get(i as usize) {
-            Some(e) => *e,
-            None => self.make_edge(i as usize),
-        }
     }
 
     /// The point's winding number about P(τ) (paper A §II.B on balls, see
@@ -291,44 +342,91 @@ impl<'a> Scan<'a> {
         self.relation != Relation::Inside
     }
 
+    /// Edge i: the stored one, or formed into `slot` past [`EDGE_CAP`].
+    #[inline]
+    fn edge<'s>(&'s self, i: u32, slot: &'s mut Option<Edge>) -> &'s Edge {
+        match self.ws.edges.get(i as usize) {
+            Some(e) => e,
+            None => slot.insert(self.make_edge(i as usize)),
+        }
+    }
+
+    /// D·|e| over |t − m| ≤ h (e = e(m)), from the range of |e|²; a rigid edge's is
+    /// constant and stored.
+    #[inline]
+    fn reach(&self, i: u32, e: &Edge, ev: BallV, h: f64) -> Ball {
+        match self.ws.reach.get(i as usize) {
+            Some(&r) if e.rigid() => r,
+            _ => self.d.mul(root(e.length(1, ev).range(h))),
+        }
+    }
+
     /// The ranges of edge i's functions over |t − m| ≤ h, with `over`'s range put in for
     /// its function when it is one of this edge's (the monotone hull of a shortcut).
+    /// `None` when the edge is out of play on the piece: it cannot be touched (inside),
+    /// or its line is farther than D (near_D, breach_D). Only what is needed is formed.
     #[inline]
-    fn ranges(&self, i: u32, m: f64, h: f64, over: Option<(Fun, Ball)>) -> Ranges {
-        let e = self.edge(i);
+    fn ranges(&self, i: u32, m: f64, h: f64, over: &[(Fun, Ball)]) -> Option<Ranges> {
+        let mut slot = None;
+        let e = self.edge(i, &mut slot);
         let (q, ev, w) = e.at(m);
-        let [g, h1, h2] = e.taylor3(q, ev, w);
-        let pick = |f: Fun, r: Ball| match over {
-            Some((o, x)) if o == f => x,
-            _ => r,
+        let pick = |f: Fun, r: Ball| match over.iter().find(|(o, _)| *o == f) {
+            Some(&(_, x)) => x,
+            None => r,
         };
-        let g = pick(Fun::Cross(i), g.range(h));
-        let h1 = pick(Fun::Along(i), h1.range(h));
-        let h2 = pick(Fun::Back(i), h2.range(h));
+        let g = pick(Fun::Cross(i), e.g(q, ev).range(h));
+        let (minus, plus) = if self.d_zero {
+            (g, g)
+        } else {
+            let reach = self.reach(i, e, ev, h);
+            (
+                pick(Fun::Minus(i), g.sub(reach)),
+                pick(Fun::Plus(i), g.add(reach)),
+            )
+        };
+        // Off the line (inside), or farther than D from it: out of play.
+        if minus.lo() > 0.0 || plus.hi() < 0.0 {
+            return None;
+        }
+        let h1 = pick(Fun::Along(i), e.h1(q, ev).range(h));
+        let h2 = pick(Fun::Back(i), e.h2(w, ev).range(h));
         if !self.distances() {
-            let z = Ball::exact(0.0);
-            return Ranges {
-                g,
-                h1,
-                h2,
-                band: z,
-                head: z,
-                tail: z,
+            return if h1.hi() < 0.0 || h2.hi() < 0.0 {
+                None
+            } else {
+                Some(Ranges {
+                    g,
+                    h1,
+                    h2,
+                    minus,
+                    plus,
+                    head: UNKNOWN,
+                    tail: UNKNOWN,
+                })
             };
         }
-        let [el, ql, wl] = e.lengths(q, ev, w);
-        let band = pick(Fun::Band(i), square(g).sub(self.d2.mul(el.range(h))));
+        // A vertex's distance matters where the foot of the perpendicular may leave the
+        // segment at that end (h₁ ≤ 0 for a, h₂ ≤ 0 for b); elsewhere the line decides,
+        // and the vertex term is left unknown (never far, never close).
+        let vertex = |k: usize, x: BallV, at_end: bool| {
+            if at_end {
+                e.length(k, x).range(h).sub(self.d2)
+            } else {
+                UNKNOWN
+            }
+        };
         let j = next(self.p.len(), i as usize) as u32;
-        let head = pick(Fun::Vertex(i), ql.range(h).sub(self.d2));
-        let tail = pick(Fun::Vertex(j), wl.range(h).sub(self.d2));
-        Ranges {
+        let head = pick(Fun::Vertex(i), vertex(0, q, not_positive(h1.lo())));
+        let tail = pick(Fun::Vertex(j), vertex(2, w, not_positive(h2.lo())));
+        Some(Ranges {
             g,
             h1,
             h2,
-            band,
+            minus,
+            plus,
             head,
             tail,
-        }
+        })
     }
 
     /// One pass over the candidates on |t − m| ≤ h: what is certain there, and (when
@@ -339,7 +437,7 @@ impl<'a> Scan<'a> {
         m: f64,
         h: f64,
         cands: Cands,
-        over: Option<(Fun, Ball)>,
+        over: &[(Fun, Ball)],
         push: bool,
     ) -> (Summary, Cands) {
         let start = self.len;
@@ -349,7 +447,7 @@ impl<'a> Scan<'a> {
             all_far: true,
             any_close: false,
             slab: None,
-            lone: Lone::None,
+            few: Few::NONE,
         };
         let (from, to) = match cands {
             Cands::All => (0, self.p.len()),
@@ -359,12 +457,12 @@ impl<'a> Scan<'a> {
             let i = match cands {
                 Cands::All if !live(self.p, self.vels, k) => continue,
                 Cands::All => k as u32,
-                Cands::Stack(..) => self.cands[k],
+                Cands::Stack(..) => self.ws.cands[k],
             };
             let keep = self.edge_assess(i, m, h, over, &mut sum);
             if keep && push {
                 if self.len < CAND_CAP {
-                    self.cands[self.len] = i;
+                    self.ws.cands[self.len] = i;
                     self.len += 1;
                 } else {
                     full = true;
@@ -374,12 +472,12 @@ impl<'a> Scan<'a> {
         if let Some(lines) = self.slab {
             let mut r = [Ball::exact(0.0); 2];
             for (k, line) in lines.iter().enumerate() {
-                r[k] = match over {
-                    Some((Fun::Slab(o), x)) if o as usize == k => x,
-                    _ => line.range(m, h),
+                r[k] = match over.iter().find(|(o, _)| *o == Fun::Slab(k as u8)) {
+                    Some(&(_, x)) => x,
+                    None => line.range(m, h),
                 };
                 if !signed(r[k]) {
-                    sum.lone.add(Fun::Slab(k as u8));
+                    sum.few.add(Fun::Slab(k as u8));
                 }
             }
             sum.slab = Some(r);
@@ -397,42 +495,28 @@ impl<'a> Scan<'a> {
     /// whether it stays a candidate (it may be touched, for inside; it may come within D,
     /// for near_D and breach_D).
     #[inline]
-    fn edge_assess(
-        &self,
-        i: u32,
-        m: f64,
-        h: f64,
-        over: Option<(Fun, Ball)>,
-        sum: &mut Summary,
-    ) -> bool {
-        let r = self.ranges(i, m, h, over);
+    fn edge_assess(&self, i: u32, m: f64, h: f64, over: &[(Fun, Ball)], sum: &mut Summary) -> bool {
+        let Some(r) = self.ranges(i, m, h, over) else {
+            return false;
+        };
         let touch = touch_possible(r.g, r.h1, r.h2);
         if !self.distances() {
-            if touch {
-                sum.touching = true;
-                sum.all_far = false;
-                for (f, x) in [
-                    (Fun::Cross(i), r.g),
-                    (Fun::Along(i), r.h1),
-                    (Fun::Back(i), r.h2),
-                ] {
-                    if !signed(x) {
-                        sum.lone.add(f);
-                    }
+            sum.touching = true;
+            sum.all_far = false;
+            for (f, x) in [
+                (Fun::Cross(i), r.g),
+                (Fun::Along(i), r.h1),
+                (Fun::Back(i), r.h2),
+            ] {
+                if !signed(x) {
+                    sum.few.add(f);
                 }
             }
-            return touch;
+            return true;
         }
-        // Farther than D from the segment: from its line (with D = 0: off the line), or
-        // beyond an end (h₁ < 0 or h₂ < 0) and farther than D from that end.
-        let line_far = if self.d_zero {
-            signed(r.g)
-        } else {
-            r.band.lo() > 0.0
-        };
-        let far = line_far
-            || (r.h1.hi() < 0.0 && r.head.lo() > 0.0)
-            || (r.h2.hi() < 0.0 && r.tail.lo() > 0.0);
+        // Farther than D from the segment: beyond an end (h₁ < 0 or h₂ < 0) and farther
+        // than D from that end (farther than D from the line: out of play already).
+        let far = (r.h1.hi() < 0.0 && r.head.lo() > 0.0) || (r.h2.hi() < 0.0 && r.tail.lo() > 0.0);
         if far {
             return false;
         }
@@ -441,20 +525,23 @@ impl<'a> Scan<'a> {
         // on the segment: h₁ ≥ 0, h₂ ≥ 0, and g² ≤ D²|e|²).
         sum.any_close |= r.head.hi() <= 0.0
             || r.tail.hi() <= 0.0
-            || (r.h1.lo() >= 0.0 && r.h2.lo() >= 0.0 && r.band.hi() <= 0.0);
+            || (r.h1.lo() >= 0.0 && r.h2.lo() >= 0.0 && r.minus.hi() <= 0.0 && r.plus.lo() >= 0.0);
         sum.touching |= touch;
         let j = next(self.p.len(), i as usize) as u32;
+        // With D > 0 the point meets the edge only where it is within D of it, where the
+        // relation is decided whatever the winding number: g's sign change is no event.
         let inner = r.h1.hi() >= 0.0 && r.h2.hi() >= 0.0;
         for (f, x, matters) in [
             (Fun::Along(i), r.h1, true),
             (Fun::Back(i), r.h2, true),
-            (Fun::Cross(i), r.g, inner),
-            (Fun::Band(i), r.band, inner && !self.d_zero),
+            (Fun::Cross(i), r.g, inner && self.d_zero),
+            (Fun::Minus(i), r.minus, inner && !self.d_zero),
+            (Fun::Plus(i), r.plus, inner && !self.d_zero),
             (Fun::Vertex(i), r.head, r.h1.lo() <= 0.0),
             (Fun::Vertex(j), r.tail, r.h2.lo() <= 0.0),
         ] {
             if matters && !signed(x) {
-                sum.lone.add(f);
+                sum.few.add(f);
             }
         }
         true
@@ -529,7 +616,7 @@ impl<'a> Scan<'a> {
         }
         let (m, h) = centre(a, b);
         let start = self.len;
-        let (sum, child) = self.assess(m, h, cands, None, true);
+        let (sum, child) = self.assess(m, h, cands, &[], true);
         let class = self.settle(&sum, m);
         // Inside a cluster already L long its end is enclosed to L/64 at best: pieces
         // need not be finer (as first_entry's hi), which keeps a stretch of contacts (a
@@ -538,86 +625,25 @@ impl<'a> Scan<'a> {
             Some(c) => mx(self.eps, (a - c) * (1.0 / 64.0)),
             None => self.eps,
         };
-        let small = b - a <= fine || m <= a || m >= b;
+        // Where the winding number is certainly even and not 0 (a polygon that is not
+        // simple), inside is undefined: halving cannot decide what no edge can change.
+        let undefined = class == Class::Unsure
+            && !sum.touching
+            && self.state == State::Undefined
+            && (self.relation == Relation::Inside || sum.all_far);
+        let small = b - a <= fine || m <= a || m >= b || undefined;
         let stop = if class != Class::Unsure || small {
             if sum.touching {
                 self.state = State::Unknown;
             }
             self.emit(out, a, b, class)
-        } else if let Some(stop) = self.lone(a, b, m, h, &sum, child, out) {
+        } else if let Some(stop) = self.few(a, b, m, h, &sum, child, out) {
             stop
         } else {
             self.visit(a, m, child, out) || self.visit(m, b, child, out)
         };
         self.len = start;
         stop
-    }
-
-    /// The shortcut of one sign change: on [a, b] exactly one function that matters may
-    /// change sign, and it is certainly monotone there. With the same certain sign at a
-    /// and b it keeps it throughout; with opposite signs its one root is bracketed
-    /// ([`bracket`]) in (t1, t2), t2 − t1 ≤ 2ε, and [a, t1], [t2, b] are decided with that
-    /// function's range replaced by the hull of its end values (exact for a monotone
-    /// function, up to rounding). `None` when the shortcut does not decide the pieces;
-    /// the caller then halves [a, b].
-    #[allow(clippy::too_many_arguments)]
-    fn lone(
-        &mut self,
-        a: f64,
-        b: f64,
-        m: f64,
-        h: f64,
-        sum: &Summary,
-        child: Cands,
-        out: &mut impl Pieces,
-    ) -> Option<bool> {
-        let Lone::One(f) = sum.lone else {
-            return None;
-        };
-        if !signed(self.slope(f, m, h)) {
-            return None;
-        }
-        let (fa, fb) = (self.eval(f, a).0, self.eval(f, b).0);
-        let (sa, sb) = (sign(fa)?, sign(fb)?);
-        let state_a = self.state;
-        if sa == sb {
-            let (whole, _) = self.assess(m, h, child, Some((f, hull(fa, fb))), false);
-            let c = self.settle(&whole, m);
-            if c == Class::Unsure || whole.touching {
-                self.state = state_a;
-                return None;
-            }
-            return Some(self.emit(out, a, b, c));
-        }
-        let (t1, t2) = bracket(|t| self.eval(f, t), a, b, m, self.eps, sa, sb)?;
-        if t2 - t1 > 2.0 * self.eps {
-            return None;
-        }
-        let (m1, r1) = centre(a, t1);
-        let (m2, r2) = centre(t2, b);
-        let f1 = self.eval(f, t1).0;
-        let f2 = self.eval(f, t2).0;
-        let (left, _) = self.assess(m1, r1, child, Some((f, hull(fa, f1))), false);
-        let (right, _) = self.assess(m2, r2, child, Some((f, hull(f2, fb))), false);
-        if left.touching || right.touching {
-            return None;
-        }
-        let c1 = self.settle(&left, m1);
-        let state_left = self.state;
-        if matches!(f, Fun::Cross(_)) {
-            // The point crossed an edge: its winding number changed.
-            self.state = State::Unknown;
-        }
-        let c2 = self.settle(&right, m2);
-        if c1 == Class::Unsure || c2 == Class::Unsure {
-            self.state = state_left;
-            return None;
-        }
-        Some(
-            self.emit(out, a, t1, c1)
-                || self.emit(out, t1, t2, Class::Unsure)
-                || self.emit(out, t2, b, c2),
-        )
     }
 
     /// Sends the piece [a, b] to `out`, keeping track of the cluster in progress.
@@ -629,58 +655,83 @@ impl<'a> Scan<'a> {
         out.piece(a, b, class)
     }
 
-    /// f(t) as a ball and f′(t) as a float estimate, at the float time t.
-    fn eval(&self, f: Fun, t: f64) -> (Ball, f64) {
-        let taylor = |i: u32| {
-            let e = self.edge(i);
-            let (q, ev, w) = e.at(t);
-            (e.taylor3(q, ev, w), e.lengths(q, ev, w))
+    /// f's Taylor form at the float time m (a band side's as g's and |e|²'s).
+    fn taylor_of(&self, f: Fun, m: f64) -> (Taylor, Option<Taylor>) {
+        let i = match f {
+            Fun::Cross(i)
+            | Fun::Along(i)
+            | Fun::Back(i)
+            | Fun::Minus(i)
+            | Fun::Plus(i)
+            | Fun::Vertex(i) => i,
+            Fun::Slab(_) => 0,
         };
-        let pair = |x: Taylor| (x.f0, x.f1.z);
+        let mut slot = None;
+        let e = self.edge(i, &mut slot);
+        let (q, ev, w) = e.at(m);
         match f {
-            Fun::Cross(i) => self.edge(i).g_with_slope(t),
-            Fun::Along(i) => pair(taylor(i).0[1]),
-            Fun::Back(i) => pair(taylor(i).0[2]),
-            Fun::Band(i) => {
-                let ([g, ..], [el, ..]) = taylor(i);
-                let value = g.f0.sq().sub(self.d2.mul(el.f0));
-                (value, 2.0 * g.f0.z * g.f1.z - self.d2.z * el.f1.z)
-            }
-            Fun::Vertex(k) => {
-                let (_, [_, ql, _]) = taylor(k);
-                (ql.f0.sub(self.d2), ql.f1.z)
-            }
-            Fun::Slab(k) => match self.slab {
-                Some(lines) => lines[k as usize].at(t),
-                None => (Ball::exact(f64::NAN), f64::NAN),
-            },
+            Fun::Along(_) => (e.h1(q, ev), None),
+            Fun::Back(_) => (e.h2(w, ev), None),
+            Fun::Vertex(_) => (e.length(0, q), None),
+            Fun::Minus(_) | Fun::Plus(_) => (e.g(q, ev), Some(e.length(1, ev))),
+            _ => (e.g(q, ev), None),
         }
     }
 
-    /// An enclosure of f′ over |t − m| ≤ h (the band's from its factors' ranges:
-    /// (g² − D²|e|²)′ = 2g·g′ − D²·(|e|²)′).
-    fn slope(&self, f: Fun, m: f64, h: f64) -> Ball {
-        let taylor = |i: u32| {
-            let e = self.edge(i);
-            let (q, ev, w) = e.at(m);
-            (e.taylor3(q, ev, w), e.lengths(q, ev, w))
-        };
-        match f {
-            Fun::Cross(i) => taylor(i).0[0].slope(h),
-            Fun::Along(i) => taylor(i).0[1].slope(h),
-            Fun::Back(i) => taylor(i).0[2].slope(h),
-            Fun::Band(i) => {
-                let ([g, ..], [el, ..]) = taylor(i);
-                g.range(h)
-                    .mul(g.slope(h))
-                    .scale(2.0)
-                    .sub(self.d2.mul(el.slope(h)))
+    /// f(t) as a ball and f′(t) as a float estimate, at the float time t.
+    fn eval(&self, f: Fun, t: f64) -> (Ball, f64) {
+        if let Fun::Slab(k) = f {
+            return match self.slab {
+                Some(lines) => lines[k as usize].at(t),
+                None => (Ball::exact(f64::NAN), f64::NAN),
+            };
+        }
+        match self.taylor_of(f, t) {
+            (x, None) if matches!(f, Fun::Vertex(_)) => (x.f0.sub(self.d2), x.f1.z),
+            (x, None) => (x.f0, x.f1.z),
+            (g, Some(el)) => {
+                let reach = self.d.mul(root(el.f0));
+                let minus = matches!(f, Fun::Minus(_));
+                let value = if minus {
+                    g.f0.sub(reach)
+                } else {
+                    g.f0.add(reach)
+                };
+                // (D|e|)′ = D·(|e|²)′ / (2|e|).
+                let turn = self.d.z * el.f1.z / (2.0 * libm::sqrt(el.f0.z));
+                (value, if minus { g.f1.z - turn } else { g.f1.z + turn })
             }
-            Fun::Vertex(k) => taylor(k).1[1].slope(h),
-            Fun::Slab(k) => match self.slab {
+        }
+    }
+
+    /// An enclosure of f′ over |t − m| ≤ h (a band side's g′ ∓ D·(|e|²)′/(2|e|) from
+    /// bounds of its factors: |(|e|²)′| at most its range's largest magnitude, |e| at
+    /// least the least value of its range).
+    fn slope(&self, f: Fun, m: f64, h: f64) -> Ball {
+        if let Fun::Slab(k) = f {
+            return match self.slab {
                 Some(lines) => lines[k as usize].c1,
                 None => Ball::exact(f64::NAN),
-            },
+            };
+        }
+        match self.taylor_of(f, m) {
+            (x, None) => x.slope(h),
+            (g, Some(el)) => {
+                if el.f1.is_exact_zero() && el.f2.is_exact_zero() {
+                    // A rigid edge: |e| is constant.
+                    return g.slope(h);
+                }
+                let rate = el.slope(h);
+                let least = root(el.range(h)).lo();
+                let most = rate.lo().abs().max(rate.hi().abs());
+                // |D·(|e|²)′/(2|e|)| ≤ D·most/(2·least), each step rounded up.
+                let bound = if least > 0.0 {
+                    round_up(self.d.z * round_up(most / (2.0 * least)))
+                } else {
+                    f64::INFINITY
+                };
+                g.slope(h).add(Ball { z: 0.0, r: bound })
+            }
         }
     }
 }

@@ -41,19 +41,22 @@ fn at_rest(t: f64, s: Vect2, vel: Vect2, p: &[Vect2], rel: Relation, d: f64) -> 
 
 /// The shape every answer has: finite ends in [0, T], each span's ends in order (or
 /// start = end: one cluster), a certain span's [start.hi, end.lo] not empty, the spans
-/// in order.
+/// in order (or sharing one cluster: span[k].end = span[k+1].start).
 pub(crate) fn assert_sorted(spans: &[Span], t: f64) {
-    let mut last = 0.0;
+    let mut last: Option<End> = None;
     for sp in spans {
         let ends = [sp.start.lo, sp.start.hi, sp.end.lo, sp.end.hi];
         assert!(ends.iter().all(|x| x.is_finite()), "{spans:?}");
-        assert!(last <= ends[0] && ends[3] <= t, "{spans:?}");
+        assert!(0.0 <= ends[0] && ends[3] <= t, "{spans:?}");
         assert!(ends[0] <= ends[1] && ends[2] <= ends[3], "{spans:?}");
         assert!(
             ends[1] <= ends[2] || (sp.start == sp.end && !sp.certain),
             "{spans:?}"
         );
-        last = ends[3];
+        if let Some(e) = last {
+            assert!(e.hi <= sp.start.lo || e == sp.start, "{spans:?}");
+        }
+        last = Some(sp.end);
     }
 }
 
@@ -470,4 +473,152 @@ fn names_and_separations() {
         Err("sep_v".into())
     );
     assert_eq!(Separation::NONE, sep(0.0, 0.0));
+}
+
+/// The relation at time t evaluated in plain f64 from the definitions, or `None` when a
+/// margin of 10⁻⁶ of the case's scale does not separate the value from its threshold
+/// (then f64 rounding could go either way, and nothing is asserted). For simple
+/// polygons only (inside by the crossing parity).
+fn plain_truth(case: &RandomCase, relation: Relation, t: f64) -> Option<bool> {
+    let x = case.s + case.v.scale(t);
+    let q: Vec<Vect2> = case
+        .p
+        .iter()
+        .zip(&case.vels)
+        .map(|(&p, &w)| p + w.scale(t))
+        .collect();
+    let n = q.len();
+    let mut inside = false;
+    let mut dist = f64::INFINITY;
+    for i in 0..n {
+        let (a, b) = (q[i], q[(i + 1) % n]);
+        if (a.y > x.y) != (b.y > x.y) && x.x < a.x + (x.y - a.y) / (b.y - a.y) * (b.x - a.x) {
+            inside = !inside;
+        }
+        let e = b - a;
+        let u = ((x - a).dot(e) / e.sq()).clamp(0.0, 1.0);
+        dist = dist.min((a + e.scale(u) - x).sq().sqrt());
+    }
+    let margin = 1e-6 * case.scale;
+    let clear = |value: f64, threshold: f64| (value - threshold).abs() > margin;
+    if !clear(dist, 0.0) {
+        return None;
+    }
+    let (d, h) = (case.sep.d, case.sep.h);
+    // The height's conditions (true in 2D): within [lo, hi] with the given offsets.
+    let z_in = |off: f64| -> Option<bool> {
+        let Some(z) = case.heights else {
+            return Some(true);
+        };
+        let (zt, bot, top) = (z.sz + t * z.vz, z.bottom + t * z.vsp, z.top + t * z.vsp);
+        if !clear(zt, bot - off) || !clear(zt, top + off) {
+            return None;
+        }
+        Some(bot - off <= zt && zt <= top + off)
+    };
+    match relation {
+        Relation::Inside => Some(inside && z_in(0.0)?),
+        Relation::Near => {
+            let horizontal = inside || {
+                if !clear(dist, d) {
+                    return None;
+                }
+                dist <= d
+            };
+            Some(horizontal && z_in(h)?)
+        }
+        Relation::Breach => {
+            if !clear(dist, d) {
+                return None;
+            }
+            Some(!(inside && dist > d && z_in(-h)?))
+        }
+    }
+}
+
+/// A random case: a star-shaped polygon about the origin whose vertices move radially
+/// (so it stays simple) on top of a common drift, a moving point, 2D or 3D.
+#[derive(Clone, Debug)]
+struct RandomCase {
+    t: f64,
+    s: Vect2,
+    v: Vect2,
+    p: Vec<Vect2>,
+    vels: Vec<Vect2>,
+    heights: Option<Heights>,
+    sep: Separation,
+    scale: f64,
+}
+
+fn random_case() -> impl proptest::strategy::Strategy<Value = RandomCase> {
+    use proptest::prelude::*;
+    (
+        proptest::collection::vec((1.0f64..3.0, -0.2f64..0.2), 3..9),
+        (0u8..3, -0.5f64..0.5, -0.5f64..0.5),
+        (-6.0f64..6.0, -6.0f64..6.0, -2.0f64..2.0, -2.0f64..2.0),
+        (1.0f64..10.0, 0.0f64..1.5, 0.0f64..1.0),
+        prop::option::of((0.0f64..10.0, -1.0f64..1.0, -0.3f64..0.3)),
+    )
+        .prop_map(|(radial, (kind, dx, dy), (sx, sy, vx, vy), (t, d, h), z)| {
+            let n = radial.len();
+            let drift = v(dx, dy);
+            let mut p = Vec::with_capacity(n);
+            let mut vels = Vec::with_capacity(n);
+            for (k, &(r, speed)) in radial.iter().enumerate() {
+                let a = k as f64 / n as f64 * core::f64::consts::TAU;
+                let dir = v(a.cos(), a.sin());
+                p.push(dir.scale(r));
+                // Radii stay ≥ 0.5 over [0, T].
+                let speed = speed.max((0.5 - r) / t);
+                vels.push(match kind {
+                    0 => Vect2::ZERO,
+                    1 => drift,
+                    _ => drift + dir.scale(speed),
+                });
+            }
+            let heights = z.map(|(sz, vz, vsp)| Heights {
+                sz,
+                vz,
+                bottom: 2.0,
+                top: 8.0,
+                vsp,
+            });
+            RandomCase {
+                t,
+                s: v(sx, sy),
+                v: v(vx, vy),
+                p,
+                vels,
+                heights,
+                sep: Separation { d, h },
+                scale: 10.0 + t * 3.0,
+            }
+        })
+}
+
+proptest::proptest! {
+    /// Where the answer is certain the plain evaluation agrees, away from thresholds: on
+    /// a certain span's [start.hi, end.lo] the relation holds, outside every
+    /// [start.lo, end.hi] it fails (G1, G2 sampled); and every answer has G1–G3's shape.
+    #[test]
+    fn certain_answers_agree_with_plain_evaluation(case in random_case()) {
+        for relation in Relation::ALL {
+            let spans = intervals(
+                case.t, case.s, case.v, &case.p, &case.vels, case.heights, relation, case.sep,
+            );
+            assert_sorted(&spans, case.t);
+            for k in 0..=64 {
+                let t = case.t * f64::from(k) / 64.0;
+                let Some(truth) = plain_truth(&case, relation, t) else {
+                    continue;
+                };
+                let held = spans
+                    .iter()
+                    .any(|sp| sp.certain && sp.start.hi <= t && t <= sp.end.lo);
+                let covered = spans.iter().any(|sp| sp.start.lo <= t && t <= sp.end.hi);
+                proptest::prop_assert!(!held || truth, "{relation:?} at {t}: holds? {spans:?}");
+                proptest::prop_assert!(covered || !truth, "{relation:?} at {t}: missed {spans:?}");
+            }
+        }
+    }
 }

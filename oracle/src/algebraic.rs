@@ -163,6 +163,24 @@ impl Poly {
         }
     }
 
+    /// self divided by the largest power of two dividing every coefficient: a positive
+    /// multiple found by shifts alone (inputs made of binary floats share large powers
+    /// of two, and a full gcd of the coefficients costs far more).
+    pub fn without_common_twos(&self) -> Poly {
+        let k = self
+            .c
+            .iter()
+            .filter_map(BigInt::trailing_zeros)
+            .min()
+            .unwrap_or(0);
+        if k == 0 {
+            return self.clone();
+        }
+        Poly {
+            c: self.c.iter().map(|x| x >> k).collect(),
+        }
+    }
+
     /// The primitive multiple with a positive leading coefficient (a sign may change:
     /// the normal form of a gcd).
     fn normalized(&self) -> Poly {

@@ -478,41 +478,87 @@ fn dyadic(m: i64, k: u64) -> f64 {
     (m as f64) * f64::from_bits((1023 - k) << 52)
 }
 
-/// A float ≤ x (or ≥ x when `above`), checked exactly; ∓∞ when the check fails.
-fn checked_end<F: ExactField>(x: &F, start: f64, above: bool) -> f64 {
-    let mut e = start;
-    for _ in 0..4 {
-        let ok = match f64_to_exact::<F>(e) {
-            Some(r) if above => r >= *x,
-            Some(r) => r <= *x,
-            None => false,
-        };
-        if ok {
-            return e;
-        }
-        e = if above { next_up(e) } else { next_down(e) };
-    }
-    if above {
-        f64::INFINITY
-    } else {
-        f64::NEG_INFINITY
-    }
-}
-
 /// A rigorous enclosure of an exact number: the point interval when it is a float
-/// (recognised structurally by [`ExactField::as_dyadic`]), else end points near it
-/// verified by exact comparison.
+/// (recognised structurally by [`ExactField::as_dyadic`]), else the leading bits of
+/// its numerator over its power-of-two denominator, or of ⌊n·2^k / d⌋, rounded
+/// outward (an ulp or two wide).
 pub fn enclose<F: ExactField>(x: &F) -> Iv {
     if let Some((m, k)) = x.as_dyadic() {
         if m.unsigned_abs() < 1 << 53 && k <= 969 {
             return Iv::point(dyadic(m, k));
         }
     }
-    let near = x.to_big().to_f64().unwrap_or(f64::NAN);
-    if !near.is_finite() {
-        return Iv::ENTIRE;
+    let big = x.to_big();
+    if let Some(k) = power_of_two(big.denom()) {
+        return enclose_scaled_int(big.numer(), -i64::try_from(k).unwrap_or(i64::MAX));
     }
-    Iv::raw(checked_end(x, near, false), checked_end(x, near, true))
+    // n/d = q·2^−k + a remainder below 2^−k, with q = ⌊n·2^k / d⌋ of about 64 bits.
+    use num_integer::Integer;
+    let (n, d) = (big.numer(), big.denom());
+    let k = 64 + i64::try_from(d.bits()).unwrap_or(0) - i64::try_from(n.bits()).unwrap_or(0);
+    let (num, den) = if k >= 0 {
+        (n << k.unsigned_abs(), d.clone())
+    } else {
+        (n.clone(), d << k.unsigned_abs())
+    };
+    let (q, r) = num.div_mod_floor(&den);
+    let lo = enclose_scaled_int(&q, -k).lo;
+    let hi = if r.bits() == 0 {
+        enclose_scaled_int(&q, -k).hi
+    } else {
+        enclose_scaled_int(&(q + 1u8), -k).hi
+    };
+    Iv::raw(lo, hi)
+}
+
+/// k when the positive integer x is 2^k.
+fn power_of_two(x: &num_bigint::BigInt) -> Option<u64> {
+    let k = x.trailing_zeros()?;
+    (x.bits() == k + 1).then_some(k)
+}
+
+/// A rigorous enclosure of m·2^e for an integer m of any size: its leading 60 bits
+/// rounded outward (an ulp or two wide), then scaled (outward beyond the normal range).
+pub fn enclose_scaled_int(m: &num_bigint::BigInt, e: i64) -> Iv {
+    use num_bigint::Sign;
+    let mag = m.magnitude();
+    let bits = mag.bits();
+    if bits == 0 {
+        return Iv::ZERO;
+    }
+    let (lo, hi, shift) = if bits <= 53 {
+        let v = mag.to_u64().map_or(f64::NAN, |v| v as f64);
+        (v, v, 0i64)
+    } else {
+        let s = bits - 60;
+        let h = (mag >> s).to_u64().unwrap_or(u64::MAX);
+        let exact = mag.trailing_zeros().is_some_and(|z| z >= s);
+        let down = |v: u64| {
+            let f = v as f64;
+            if f as u64 > v {
+                next_down(f)
+            } else {
+                f
+            }
+        };
+        let up = |v: u64| {
+            let f = v as f64;
+            if (f as u64) < v {
+                next_up(f)
+            } else {
+                f
+            }
+        };
+        let top = if exact { h } else { h + 1 };
+        (down(h), up(top), i64::try_from(s).unwrap_or(i64::MAX))
+    };
+    let k = e.saturating_add(shift).clamp(-4000, 4000) as i32;
+    let r = Iv::raw(lo, hi).scaled_pow2(k);
+    if m.sign() == Sign::Minus {
+        r.neg()
+    } else {
+        r
+    }
 }
 
 /// The enclosure of a vector.
@@ -805,14 +851,11 @@ pub fn poly_eval(c: &[Iv], t: Iv) -> Iv {
 /// (a positive factor: the same roots and signs) so that the largest is about 2^900
 /// at most.
 pub fn enclose_poly(p: &crate::algebraic::Poly) -> Vec<Iv> {
-    use num_bigint::BigInt;
-    use num_rational::BigRational;
     let bits = p.coeffs().iter().map(|c| c.bits()).max().unwrap_or(0);
-    let shift = bits.saturating_sub(900);
-    let den = BigInt::from(1u8) << shift;
+    let shift = i64::try_from(bits.saturating_sub(900)).unwrap_or(i64::MAX);
     p.coeffs()
         .iter()
-        .map(|c| enclose(&BigRational::new(c.clone(), den.clone())))
+        .map(|c| enclose_scaled_int(c, -shift))
         .collect()
 }
 
@@ -1259,20 +1302,62 @@ pub fn tighten_alg(x: &mut RealAlg) -> Iv {
             }
         }
     }
-    // Exact bisection, a bounded number of steps.
-    for _ in 0..64 {
+    // Floats again with the origin of time moved to lo exactly.
+    if narrow_alg(x) {
+        let (lo, hi) = x.bounds();
+        return Iv::raw(enclose(lo).lo, enclose(hi).hi);
+    }
+    // Exact bisection: as many halvings as bring the width to a few ulps of the
+    // number (at most 200), the enclosure taken once at the end.
+    let width = outer.hi - outer.lo;
+    let target = (outer.lo.abs().max(outer.hi.abs()) * (4.0 * f64::EPSILON)).max(f64::MIN_POSITIVE);
+    let steps = if width.is_finite() && width > target {
+        ((width / target).log2().ceil() as usize).min(200)
+    } else {
+        64
+    };
+    for _ in 0..steps {
         x.refine();
         if let Some(q) = x.as_rational() {
             return enclose(q);
         }
-        let (lo, hi) = x.bounds();
-        let e = Iv::raw(enclose(lo).lo, enclose(hi).hi);
-        if is_tight(e) {
-            return e;
-        }
     }
     let (lo, hi) = x.bounds();
     Iv::raw(enclose(lo).lo, enclose(hi).hi)
+}
+
+/// Narrow a real algebraic number's isolating interval (lo, hi) in floats relative to
+/// its own width, far below the float resolution at the number: the polynomial is
+/// moved to the origin s = t − lo exactly (its coefficients exact, so nothing cancels
+/// between large terms) and the root bracketed in s with certified signs. Whether it
+/// narrowed (a rational, or floats that cannot certify, leave it as it was).
+/// (Paper A §II.C/§II.I's roots, told apart where they nearly coincide.)
+pub fn narrow_alg(x: &mut RealAlg) -> bool {
+    let Some(sign) = x.lo_sign() else {
+        return false;
+    };
+    let rising = sign == Ordering::Less;
+    let (lo, hi) = {
+        let (l, h) = x.bounds();
+        (l.clone(), h.clone())
+    };
+    let c = enclose_poly(&x.poly().shifted(&lo));
+    let b = enclose(&(&hi - &lo)).lo;
+    if !(b > 0.0 && c.iter().all(|v| v.finite())) {
+        return false;
+    }
+    let g = approx_root(&midpoints(&c), 0.0, b, rising);
+    let Some(br) = certify_near(&c, g, 0.0, b, rising) else {
+        return false;
+    };
+    let (Some(l), Some(h)) = (
+        br.lo_exact::<num_rational::BigRational>(),
+        br.hi_exact::<num_rational::BigRational>(),
+    ) else {
+        return false;
+    };
+    x.narrow_to(&lo + l, &lo + h);
+    true
 }
 
 /// A rigorous enclosure of a real algebraic number ([`tighten_alg`] on a copy).

@@ -149,7 +149,14 @@ impl Poly {
 
     /// The gcd of the coefficients (0 for the zero polynomial), ≥ 0.
     pub fn content(&self) -> BigInt {
-        self.c.iter().fold(BigInt::zero(), |acc, x| acc.gcd(x))
+        let mut acc = BigInt::zero();
+        for x in &self.c {
+            acc = acc.gcd(x);
+            if acc.is_one() {
+                break;
+            }
+        }
+        acc
     }
 
     /// self divided by its content: the primitive positive multiple.
@@ -160,6 +167,24 @@ impl Poly {
         }
         Poly {
             c: self.c.iter().map(|x| x / &g).collect(),
+        }
+    }
+
+    /// self divided by the largest power of two dividing every coefficient: a positive
+    /// multiple found by shifts alone (inputs made of binary floats share large powers
+    /// of two, and a full gcd of the coefficients costs far more).
+    pub fn without_common_twos(&self) -> Poly {
+        let k = self
+            .c
+            .iter()
+            .filter_map(BigInt::trailing_zeros)
+            .min()
+            .unwrap_or(0);
+        if k == 0 {
+            return self.clone();
+        }
+        Poly {
+            c: self.c.iter().map(|x| x >> k).collect(),
         }
     }
 
@@ -238,6 +263,38 @@ impl Poly {
         self.div_exact(&g).unwrap_or_else(|| self.primitive())
     }
 
+    /// A positive multiple of self(x + s) as a polynomial in s (a Taylor shift by the
+    /// rational x = a/b): b^n·self(a/b + s) = P̃(a + b·s) with P̃(y) = b^n·self(y/b), an
+    /// integer polynomial shifted by the integer a, then scaled.
+    pub fn shifted(&self, x: &BigRational) -> Poly {
+        let Some(n) = self.degree() else {
+            return Poly::zero();
+        };
+        let (a, b) = (x.numer(), x.denom());
+        // P̃'s coefficients c_k·b^(n−k).
+        let mut q: Vec<BigInt> = Vec::with_capacity(n + 1);
+        let mut bp = BigInt::one();
+        for k in (0..=n).rev() {
+            q.push(&self.c[k] * &bp);
+            bp *= b;
+        }
+        q.reverse();
+        // Taylor shift by a (repeated synthetic division).
+        for i in 0..n {
+            for j in (i..n).rev() {
+                let t = &q[j + 1] * a;
+                q[j] += t;
+            }
+        }
+        // y = a + b·s: coefficient k times b^k.
+        let mut bp = BigInt::one();
+        for c in q.iter_mut().skip(1) {
+            bp *= b;
+            *c *= &bp;
+        }
+        Poly::new(q).without_common_twos()
+    }
+
     /// The exact value at a rational x.
     pub fn eval(&self, x: &BigRational) -> BigRational {
         self.c.iter().rev().fold(BigRational::zero(), |acc, c| {
@@ -291,6 +348,9 @@ impl Poly {
         if self.is_zero() || lo > hi {
             return out;
         }
+        if self.degree() == Some(2) {
+            return quadratic_roots_in(self, lo, hi);
+        }
         let sf = self.squarefree();
         match sf.degree() {
             None | Some(0) => return out,
@@ -311,6 +371,55 @@ impl Poly {
         isolate(&sf, &st, lo.clone(), hi.clone(), n, &mut out);
         out
     }
+}
+
+/// The distinct roots of a quadratic p = c + b·t + a·t² (a ≠ 0) in [lo, hi], by its
+/// exact discriminant: none, a double root −b/2a, two rational roots when it is a
+/// perfect square, else one on each side of the vertex −b/2a, where p is monotone, so
+/// that a sign change between the window's end and the vertex isolates it.
+fn quadratic_roots_in(p: &Poly, lo: &BigRational, hi: &BigRational) -> Vec<RealAlg> {
+    let (c, b, a) = (&p.c[0], &p.c[1], &p.c[2]);
+    let disc = b * b - BigInt::from(4) * a * c;
+    let two_a = a * BigInt::from(2);
+    let inside = |r: &BigRational| r >= lo && r <= hi;
+    let rational = |num: BigInt| {
+        let r = BigRational::new(num, two_a.clone());
+        inside(&r).then(|| RealAlg::rational(r))
+    };
+    match sign_of(&disc) {
+        Ordering::Less => return Vec::new(),
+        Ordering::Equal => return rational(-b).into_iter().collect(),
+        Ordering::Greater => {}
+    }
+    if let Some(s) = exact_sqrt(&disc) {
+        let mut r: Vec<RealAlg> = [rational(-b - &s), rational(-b + &s)]
+            .into_iter()
+            .flatten()
+            .collect();
+        r.sort();
+        return r;
+    }
+    // Irrational roots: neither is a rational end, so signs there are nonzero.
+    let v = BigRational::new(-b.clone(), two_a.clone());
+    let mut out = Vec::new();
+    let mut side = |from: &BigRational, to: &BigRational| {
+        if from >= to {
+            return;
+        }
+        let (sf, st) = (p.sign_at(from), p.sign_at(to));
+        if sf != st && sf != Ordering::Equal && st != Ordering::Equal {
+            out.push(RealAlg(Repr::Root(Root {
+                p: p.clone(),
+                lo: from.clone(),
+                hi: to.clone(),
+                lo_sign: sf,
+            })));
+        }
+    };
+    // Left of the vertex, then right of it.
+    side(lo, if &v < hi { &v } else { hi });
+    side(if &v > lo { &v } else { lo }, hi);
+    out
 }
 
 /// The n roots of the squarefree sf in (a, b], isolated by bisection and appended in
@@ -344,7 +453,7 @@ fn isolate(
         // a is a root of sf (counted in the piece before): move the left end right
         // until it is not, keeping the one root of (a, b].
     }
-    let m = (&a + &b) / BigRational::from_integer(BigInt::from(2));
+    let m = midpoint(&a, &b);
     let left = st.count(&a, &m);
     isolate(sf, st, a, m.clone(), left, out);
     isolate(sf, st, m, b, n - left, out);
@@ -593,7 +702,7 @@ impl RealAlg {
         let Repr::Root(r) = &mut self.0 else {
             return;
         };
-        let m = (&r.lo + &r.hi) / BigRational::from_integer(BigInt::from(2));
+        let m = midpoint(&r.lo, &r.hi);
         match r.p.sign_at(&m) {
             Ordering::Equal => self.0 = Repr::Rational(m),
             s if s == r.lo_sign => r.lo = m,
@@ -757,6 +866,39 @@ impl RealAlg {
             ),
         }
     }
+}
+
+/// k when the positive integer x is 2^k.
+fn power_of_two(x: &BigInt) -> Option<u64> {
+    let k = x.trailing_zeros()?;
+    (x.bits() == k + 1).then_some(k)
+}
+
+/// The dyadic n/2^k in lowest terms.
+fn dyadic(n: BigInt, k: u64) -> BigRational {
+    let z = n.trailing_zeros().unwrap_or(k).min(k);
+    BigRational::new_raw(n >> z, BigInt::one() << (k - z))
+}
+
+/// A dyadic rational within a quarter of the width of (a + b)/2, for a < b: the exact
+/// midpoint by shifts when both are dyadic, else the midpoint rounded down to a
+/// multiple of 2^−j ≤ (b − a)/4. Bisection points stay dyadic, so no gcd reduction is
+/// ever needed (it would dominate the cost).
+fn midpoint(a: &BigRational, b: &BigRational) -> BigRational {
+    if let (Some(ka), Some(kb)) = (power_of_two(a.denom()), power_of_two(b.denom())) {
+        let k = ka.max(kb);
+        let sum = (a.numer() << (k - ka)) + (b.numer() << (k - kb));
+        return dyadic(sum, k + 1);
+    }
+    // (a + b)/2 = num/den; 2^−j ≤ (b − a)/4 holds for j ≥ 2 + log2 of
+    // (ad·bd)/(bn·ad − an·bd), bounded by bit lengths.
+    let (an, ad, bn, bd) = (a.numer(), a.denom(), b.numer(), b.denom());
+    let num = an * bd + bn * ad;
+    let den = ad * bd * BigInt::from(2);
+    let gap = bn * ad - an * bd;
+    let j = (den.bits() + 3).saturating_sub(gap.bits());
+    let k = (num << j).div_floor(&den);
+    dyadic(k, j)
 }
 
 /// "int.frac" from ⌊x·10^digits⌋ (the digits of [`RealAlg::to_decimal_string`]).

@@ -128,7 +128,14 @@ impl ExactField for BigRational {
         if exp >= 0 {
             BigRational::from_integer(m << exp.unsigned_abs())
         } else {
-            BigRational::new(m, BigInt::one() << exp.unsigned_abs())
+            // Lowest terms by shifts: the denominator is a power of two, so the common
+            // factor is the power of two dividing the mantissa.
+            let k = u64::from(mant.trailing_zeros()).min(u64::from(exp.unsigned_abs()));
+            let den_exp = u64::from(exp.unsigned_abs()) - k;
+            if mant == 0 {
+                return BigRational::from_integer(BigInt::zero());
+            }
+            BigRational::new_raw(m >> k, BigInt::one() << den_exp)
         }
     }
     fn from_int_strs(num: &str, den: &str) -> Option<Self> {

@@ -509,6 +509,116 @@ fn separations(seed: u64) -> Separation<Q> {
     sep(d, h)
 }
 
+/// The components are sorted, disjoint, in [0, T], and each relation holds at a
+/// sampled time exactly when it holds by direct evaluation: at a grid of times,
+/// strictly inside each component and strictly between components.
+fn check_against_direct(c: &ExactCase<Q>, rel: Relation, s: &Separation<Q>) -> Result<(), String> {
+    let Ok(got) = intervals_of(c, rel, s) else {
+        return Ok(());
+    };
+    for (a, b) in &got {
+        if a > b
+            || a.cmp_rational(&qi(0)) == Ordering::Less
+            || b.cmp_rational(&c.lookahead) == Ordering::Greater
+        {
+            return Err(format!("bad component {a} .. {b}"));
+        }
+    }
+    if got.windows(2).any(|w| w[0].1 >= w[1].0) {
+        return Err(format!("not disjoint: {got:?}"));
+    }
+    let steps = 24i64;
+    let mut times: Vec<Q> = (0..=steps).map(|k| &c.lookahead * q(k, steps)).collect();
+    times.extend(
+        got.iter()
+            .filter(|(a, b)| a < b)
+            .map(|(a, b)| between(a, b)),
+    );
+    times.extend(got.windows(2).map(|w| between(&w[0].1, &w[1].0)));
+    for tau in &times {
+        if member(&got, tau) != relation_at(c, rel, s, tau) {
+            return Err(format!("{} at {tau}: {got:?}", rel.name()));
+        }
+    }
+    Ok(())
+}
+
+/// A random case in binary floats, every horizontal length (and D, returned) times
+/// 2^k: a star-shaped counterclockwise polygon of 3 to 16 vertices at rest,
+/// translating or warping, the point aimed at its centre, at a vertex or off it, in 2D
+/// or with a slab.
+fn float_case(seed: u64, k: i32) -> (ExactCase<Q>, Q) {
+    let mut g = common::Rng::new(seed);
+    let mut u = |lo: f64, hi: f64| lo + (hi - lo) * (g.next() >> 11) as f64 / (1u64 << 53) as f64;
+    let s2 = 2f64.powi(k);
+    let n = 3 + (u(0.0, 14.0) as usize);
+    let size = 10f64.powf(u(-3.0, 3.0));
+    let (cx, cy) = (u(-1e3, 1e3) * size, u(-1e3, 1e3) * size);
+    let verts: Vec<[f64; 2]> = (0..n)
+        .map(|j| {
+            let a = (j as f64 + u(0.1, 0.9)) * std::f64::consts::TAU / n as f64;
+            let r = size * u(0.5, 1.0);
+            [cx + r * a.cos(), cy + r * a.sin()]
+        })
+        .collect();
+    let t = 10f64.powf(u(-2.0, 3.0));
+    let motion = u(0.0, 3.0) as u32;
+    let base = [u(-1.0, 1.0) * size / t, u(-1.0, 1.0) * size / t];
+    let vels: Vec<[f64; 2]> = (0..n)
+        .map(|_| match motion {
+            0 => [0.0, 0.0],
+            1 => base,
+            _ => [
+                base[0] + u(-0.2, 0.2) * size / t,
+                base[1] + u(-0.2, 0.2) * size / t,
+            ],
+        })
+        .collect();
+    let ang = u(0.0, std::f64::consts::TAU);
+    let start = [cx + 3.0 * size * ang.cos(), cy + 3.0 * size * ang.sin()];
+    let aim = match u(0.0, 3.0) as u32 {
+        0 => [cx, cy],
+        1 => verts[0],
+        _ => [
+            cx + 2.0 * size * (ang + 1.0).cos(),
+            cy + 2.0 * size * (ang + 1.0).sin(),
+        ],
+    };
+    let hit = t * u(0.1, 0.9);
+    let vel = [
+        (aim[0] - start[0]) / hit + base[0],
+        (aim[1] - start[1]) / hit + base[1],
+    ];
+    let d = [0.0, size * 1e-3, size * 0.1, size][u(0.0, 4.0) as usize];
+    let slab = (u(0.0, 1.0) < 0.3).then(|| [u(-10.0, 0.0), u(0.0, 10.0), u(-1.0, 1.0) / t]);
+    let sc = |p: [f64; 2]| [p[0] * s2, p[1] * s2];
+    let verts: Vec<[f64; 2]> = verts.into_iter().map(sc).collect();
+    let vels: Vec<[f64; 2]> = vels.into_iter().map(sc).collect();
+    let (pos, velv) = (sc(start), sc(vel));
+    let (pos3, vel3) = (
+        [pos[0], pos[1], u(-10.0, 10.0)],
+        [velv[0], velv[1], u(-1.0, 1.0) / t],
+    );
+    let (p, v): (&[f64], &[f64]) = if slab.is_some() {
+        (&pos3, &vel3)
+    } else {
+        (&pos, &velv)
+    };
+    let c = ExactCase::new(&polyguard_oracle::CaseInput {
+        lookahead: t,
+        buff: 0.01,
+        fac: 1e-4,
+        pos: p,
+        vel: v,
+        vertices: &verts,
+        velocities: &vels,
+        slab,
+    })
+    .expect("a valid case");
+    let d = polyguard_oracle::convert::f64_to_exact::<Q>(d * s2).expect("finite");
+    (c, d)
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(cases(400)))]
 
@@ -530,29 +640,37 @@ proptest! {
     }
 
     // Each relation's set holds at a sampled time exactly when the relation, evaluated
-    // directly, does: at a grid of times, and strictly inside every component; the
-    // components are sorted and disjoint.
+    // directly, does (cases on a grid of rationals, many exact ties).
     #[test]
     fn sets_agree_with_direct_evaluation(seed in any::<u64>(), which in 0u64..36) {
         let g = gen_case(seed);
         let Ok(c) = g.exact::<Q>() else { return Ok(()) };
         let s = separations(which);
         let rel = [Relation::Inside, Relation::Near, Relation::Breach][(which % 3) as usize];
-        let Ok(got) = intervals_of(&c, rel, &s) else { return Ok(()) };
-        for (a, b) in &got {
-            prop_assert!(a <= b);
-            prop_assert!(a.cmp_rational(&qi(0)) != Ordering::Less);
-            prop_assert!(b.cmp_rational(&c.lookahead) != Ordering::Greater);
-        }
-        for w in got.windows(2) {
-            prop_assert!(w[0].1 < w[1].0, "not disjoint: {got:?}");
-        }
-        let steps = 24i64;
-        let mut times: Vec<Q> = (0..=steps).map(|k| &c.lookahead * q(k, steps)).collect();
-        times.extend(got.iter().filter(|(a, b)| a < b).map(|(a, b)| between(a, b)));
-        times.extend(got.windows(2).map(|w| between(&w[0].1, &w[1].0)));
-        for tau in &times {
-            prop_assert_eq!(member(&got, tau), relation_at(&c, rel, &s, tau), "{} at {}: {:?} {:?}", rel.name(), tau, got, g);
+        check_against_direct(&c, rel, &s).map_err(|e| TestCaseError::fail(format!("{e}: {g:?}")))?;
+    }
+
+    // The same on cases in binary floats over many scales.
+    #[test]
+    fn float_sets_agree_with_direct_evaluation(seed in any::<u64>(), which in 0u64..36) {
+        let (c, d) = float_case(seed, 0);
+        let s = sep(d, [qi(0), qi(1), qi(3)][((which / 4) % 3) as usize].clone());
+        let rel = [Relation::Inside, Relation::Near, Relation::Breach][(which % 3) as usize];
+        check_against_direct(&c, rel, &s).map_err(|e| TestCaseError::fail(format!("{e}: seed {seed}")))?;
+    }
+
+    // Scaling every horizontal length (and D) by a power of two changes no time: the
+    // components are exactly the same, far into the float range's ends.
+    #[test]
+    fn components_do_not_depend_on_the_horizontal_scale(seed in any::<u64>(), which in 0u64..12) {
+        let rel = [Relation::Inside, Relation::Near, Relation::Breach][(which % 3) as usize];
+        let (c, d) = float_case(seed, 0);
+        let s = sep(d.clone(), qi(1));
+        let base = intervals_of(&c, rel, &s);
+        for k in [-900i32, -40, 40, 900] {
+            let (ck, dk) = float_case(seed, k);
+            let got = intervals_of(&ck, rel, &sep(dk, qi(1)));
+            prop_assert_eq!(&got, &base, "2^{} ({})", k, rel.name());
         }
     }
 

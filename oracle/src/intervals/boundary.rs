@@ -74,29 +74,57 @@ pub(crate) fn point_edges<F: ExactField>(
     Ok(out)
 }
 
-/// Which vertices and edges can come within D of the point during the window: their
-/// boxes over the window (positions at the window's enclosure, which hold every
-/// position in it) against the point's, D apart at most on both axes. (A cheap
-/// exclusion in front of paper A §II.C's quadratics.)
-fn reachable<F: ExactField>(sc: &Scene<'_, F>, w: &Window) -> (Vec<bool>, Vec<bool>) {
-    let tau = w.iv();
-    let (x, ps) = sc.fl.at(&tau);
-    let d = sc.d_fl.hi;
-    let near = |b: &[Iv; 2]| {
-        (0..2).all(|k| {
-            let diff = x[k].sub(b[k]);
-            !(diff.lo > d || diff.hi < -d)
-        })
+/// An outer float range of {t ∈ w : c0 + t·c1 ∈ band} (one coordinate moving linearly
+/// against a fixed band), `None` when certainly empty: the constraint solved for t in
+/// enclosures, each bound taken outward.
+fn clip(c0: Iv, c1: Iv, band: Iv, w: Iv) -> Option<Iv> {
+    let (lo, hi) = (Iv::point(band.lo), Iv::point(band.hi));
+    let (from, to) = match c1.sign() {
+        Ok(Ordering::Equal) => {
+            return (c0.hi >= band.lo && c0.lo <= band.hi).then_some(w);
+        }
+        Ok(Ordering::Greater) => (lo.sub(c0).div(c1).lo, hi.sub(c0).div(c1).hi),
+        Ok(Ordering::Less) => (hi.sub(c0).div(c1).lo, lo.sub(c0).div(c1).hi),
+        Err(_) => return Some(w),
     };
-    let vertex: Vec<bool> = ps.iter().map(near).collect();
-    let n = ps.len();
-    let edge = (0..n)
-        .map(|i| {
-            let (a, b) = (&ps[i], &ps[(i + 1) % n]);
-            near(&[a[0].hull(b[0]), a[1].hull(b[1])])
-        })
-        .collect();
-    (vertex, edge)
+    let r = Iv {
+        lo: from.max(w.lo),
+        hi: to.min(w.hi),
+    };
+    (r.lo <= r.hi).then_some(r)
+}
+
+/// The part of the window in which the point can be within D of the segment from
+/// vertex i to vertex j (or of vertex i alone, j = i): in the frame of vertex i the
+/// segment lies in the box spanned by 0 and e(t) = p_j(t) − p_i(t) over the window,
+/// and the point, q(t) = x(t) − p_i(t), moves linearly; the times at which q is within
+/// D of that box on both axes, as a sub-window with rational ends (`None`: never).
+/// (A cheap exclusion in front of paper A §II.C's quadratics.)
+fn reach<F: ExactField>(sc: &Scene<'_, F>, w: &Window, i: usize, j: usize) -> Option<Window> {
+    let (x, a, b) = (&sc.fl.x, &sc.fl.p[i], &sc.fl.p[j]);
+    let tw = w.iv();
+    let d = sc.d_fl.hi;
+    let mut range = tw;
+    for k in 0..2 {
+        let e = b.c0[k].sub(a.c0[k]).add(b.c1[k].sub(a.c1[k]).mul(tw));
+        // [min(e, 0), max(e, 0)] grown by D on both sides, rounded outward.
+        let band = e.hull(Iv::ZERO).add(Iv { lo: -d, hi: d });
+        let q0 = x.c0[k].sub(a.c0[k]);
+        let q1 = x.c1[k].sub(a.c1[k]);
+        range = clip(q0, q1, band, range)?;
+    }
+    if range.lo <= w.lo_end.iv.lo && range.hi >= w.hi_end.iv.hi {
+        return Some(w.clone());
+    }
+    let lo = match range.lo_exact::<BigRational>() {
+        Some(l) if l > w.lo => l,
+        _ => w.lo.clone(),
+    };
+    let hi = match range.hi_exact::<BigRational>() {
+        Some(h) if h < w.hi => h,
+        _ => w.hi.clone(),
+    };
+    (lo <= hi).then(|| Window::new(lo, hi))
 }
 
 /// B over the window: the times at which the point is within D of the boundary,
@@ -112,23 +140,28 @@ pub(crate) fn near_boundary<F: ExactField>(
     early: bool,
 ) -> Set {
     let n = sc.len();
-    let (vertex_ok, edge_ok) = reachable(sc, w);
     let d_zero = sc.d_is_zero();
     let mut parts: Vec<(End, End)> = Vec::new();
     if !d_zero {
-        for i in (0..n).filter(|&i| vertex_ok[i]) {
-            let s = sign_set(sc, &Lazy::new(sc, Kind::Vertex(i)), w, Ordering::Less);
+        for i in 0..n {
+            let Some(wi) = reach(sc, w, i, i) else {
+                continue;
+            };
+            let s = sign_set(sc, &Lazy::new(sc, Kind::Vertex(i)), &wi, Ordering::Less);
             parts.extend(s.comps);
             if early && !parts.is_empty() {
                 return Set::union_of(sc, parts);
             }
         }
     }
-    for i in (0..n).filter(|&i| edge_ok[i] && !point_edge[i]) {
+    for i in (0..n).filter(|&i| !point_edge[i]) {
+        let Some(wi) = reach(sc, w, i, (i + 1) % n) else {
+            continue;
+        };
         let strip = if d_zero {
-            contacts(sc, w, i)
+            contacts(sc, &wi, i)
         } else {
-            band(sc, w, i)
+            band(sc, &wi, i)
         };
         parts.extend(strip.comps);
         if early && !parts.is_empty() {

@@ -220,6 +220,35 @@ impl<C: Coef> Layout<C> {
 /// A position as two coefficients.
 pub(crate) type V2Of<C> = [C; 2];
 
+/// The power of two a positive integer is, if it is one.
+fn power_of_two(x: &BigInt) -> Option<u64> {
+    let k = x.trailing_zeros()?;
+    (x.bits() == k + 1).then_some(k)
+}
+
+/// lcm(a, b) of positive integers, by a comparison when both are powers of two (the
+/// denominators of binary floats).
+fn lcm(a: &BigInt, b: &BigInt) -> BigInt {
+    match (power_of_two(a), power_of_two(b)) {
+        (Some(x), Some(y)) => {
+            if x >= y {
+                a.clone()
+            } else {
+                b.clone()
+            }
+        }
+        _ => a.lcm(b),
+    }
+}
+
+/// a / b for a positive b dividing a, by a shift when b is a power of two.
+fn quotient(a: &BigInt, b: &BigInt) -> BigInt {
+    match power_of_two(b) {
+        Some(k) => a >> k,
+        None => a / b,
+    }
+}
+
 /// The inputs of a case, the float layout built at once, the integer one on demand.
 pub(crate) struct Scene<'a, F> {
     s: &'a V2<F>,
@@ -304,8 +333,10 @@ impl<'a, F: ExactField> Scene<'a, F> {
                 .chain(self.vels.iter())
                 .flat_map(|a| [big(&a.x), big(&a.y)])
                 .collect();
-            let l = all.iter().fold(BigInt::one(), |acc, x| acc.lcm(x.denom()));
-            let int = |x: &BigRational| x.numer() * (&l / x.denom());
+            let l = all
+                .iter()
+                .fold(BigInt::one(), |acc, x| lcm(&acc, x.denom()));
+            let int = |x: &BigRational| x.numer() * quotient(&l, x.denom());
             let at = |i: usize| [int(&all[2 * i]), int(&all[2 * i + 1])];
             let n = self.p.len();
             let ld = big(self.d) * BigRational::from_integer(l.clone());
@@ -327,9 +358,9 @@ impl<'a, F: ExactField> Scene<'a, F> {
         })
     }
 
-    /// The exact polynomial `kind` (primitive).
+    /// The exact polynomial `kind` (common powers of two divided out).
     pub fn exact_poly(&self, kind: Kind) -> Poly {
-        Poly::new(self.exact().poly(kind)).primitive()
+        Poly::new(self.exact().poly(kind)).without_common_twos()
     }
 
     /// The exact point and vertices at the rational time τ = num/den, all times den·L

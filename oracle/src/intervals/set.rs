@@ -14,11 +14,14 @@ use std::rc::Rc;
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
+use num_traits::Zero;
 
 use super::scene::{Kind, Scene};
 use crate::algebraic::{Poly, RealAlg};
 use crate::field::ExactField;
-use crate::kernel::interval::{enclose, isolate_roots, poly_eval, tighten_alg, Iv, RootPiece};
+use crate::kernel::interval::{
+    enclose, enclose_poly, isolate_roots, narrow_alg, poly_eval, tighten_alg, Iv, RootPiece,
+};
 
 /// A polynomial of the scene: its float enclosure now, its exact form on demand.
 #[derive(Debug)]
@@ -66,15 +69,21 @@ pub(crate) struct End {
     /// Encloses the exact value (a point only when the value is that float).
     pub iv: Iv,
     value: Value,
+    /// The exact value with its isolating interval narrowed below float resolution
+    /// ([`narrow_alg`]), made when a comparison first needs it.
+    narrow: OnceCell<RealAlg>,
 }
 
 impl End {
-    /// The exact number x, with its enclosure.
-    pub fn known(mut x: RealAlg) -> End {
-        let iv = tighten_alg(&mut x);
+    /// The exact number x with an enclosure of it (a rational is enclosed anew).
+    fn with_enclosure(x: RealAlg, iv: Iv) -> End {
+        if let Some(q) = x.as_rational() {
+            return End::rational(q.clone());
+        }
         End {
             iv,
             value: Value::Known(x),
+            narrow: OnceCell::new(),
         }
     }
 
@@ -83,6 +92,7 @@ impl End {
         End {
             iv: enclose(&x),
             value: Value::Known(RealAlg::rational(x)),
+            narrow: OnceCell::new(),
         }
     }
 
@@ -96,6 +106,7 @@ impl End {
                 rising,
                 alg: OnceCell::new(),
             },
+            narrow: OnceCell::new(),
         }
     }
 
@@ -132,6 +143,15 @@ impl End {
         }
     }
 
+    /// The exact value, its isolating interval narrowed below float resolution.
+    fn narrowed<F: ExactField>(&self, sc: &Scene<'_, F>) -> &RealAlg {
+        self.narrow.get_or_init(|| {
+            let mut x = self.alg(sc).clone();
+            narrow_alg(&mut x);
+            x
+        })
+    }
+
     /// Whether both are the same root of the same polynomial (then equal).
     fn same_root(&self, o: &End) -> bool {
         match (&self.value, &o.value) {
@@ -154,7 +174,7 @@ pub(crate) fn cmp_end<F: ExactField>(sc: &Scene<'_, F>, a: &End, b: &End) -> Ord
     if (a.iv.is_point() && a.iv == b.iv) || a.same_root(b) {
         return Ordering::Equal;
     }
-    a.alg(sc).cmp(b.alg(sc))
+    a.narrowed(sc).cmp(b.narrowed(sc))
 }
 
 /// A time window [lo, hi] with rational ends (lo ≤ hi).
@@ -295,11 +315,123 @@ pub(crate) fn roots_in<F: ExactField>(
                     Some(h) if h < w.hi => h,
                     _ => w.hi.clone(),
                 };
-                out.extend(p.roots_in(&lo, &hi).into_iter().map(End::known));
+                if lo <= hi {
+                    out.extend(shifted_roots(p, &lo, &hi));
+                }
             }
         }
     }
     Some(out)
+}
+
+/// How many times an unsure stretch is moved to the origin and tried in floats again
+/// before exact isolation.
+const SHIFTS: u32 = 3;
+
+/// The roots of p in [lo, hi] (lo ≤ hi), increasing: in floats again with the origin
+/// of time moved to lo exactly ([`Poly::shifted`]: exact coefficients, so a stretch
+/// that floats could not settle far from t = 0 for cancellation often settles now; each
+/// move gains about half the float precision around a near-double root), then in
+/// floats on p's squarefree part (where an exact double root is a simple one), and
+/// exactly (Sturm) where they still cannot tell.
+fn shifted_roots(p: &Poly, lo: &BigRational, hi: &BigRational) -> Vec<End> {
+    let mut out: Vec<(RealAlg, Iv)> = Vec::new();
+    let mut stack = vec![(lo.clone(), hi.clone(), 0u32)];
+    let mut squarefree: Option<Poly> = None;
+    while let Some((a, b, depth)) = stack.pop() {
+        let q = if depth < SHIFTS {
+            p
+        } else {
+            squarefree.get_or_insert_with(|| p.squarefree())
+        };
+        let mut unsure = Vec::new();
+        for piece in float_roots(q, &a, &b) {
+            match piece {
+                Ok(e) => out.push(e),
+                Err((l, h)) => unsure.push((l, h)),
+            }
+        }
+        for (l, h) in unsure.into_iter().rev() {
+            if depth < SHIFTS {
+                stack.push((l, h, depth + 1));
+            } else {
+                out.extend(q.roots_in(&l, &h).into_iter().map(|mut x| {
+                    let iv = tighten_alg(&mut x);
+                    (x, iv)
+                }));
+            }
+        }
+    }
+    // Distinct roots, ordered by their enclosures where these are apart, else exactly.
+    out.sort_by(|(x, a), (y, b)| {
+        if a.hi < b.lo {
+            Ordering::Less
+        } else if b.hi < a.lo {
+            Ordering::Greater
+        } else {
+            x.cmp(y)
+        }
+    });
+    out.into_iter()
+        .map(|(x, iv)| End::with_enclosure(x, iv))
+        .collect()
+}
+
+/// The roots of q in [lo, hi] isolated in floats after moving the origin to lo: each a
+/// root with its enclosure (`Ok`), or a stretch [l, h] ⊆ [lo, hi] that floats could
+/// not settle.
+fn float_roots(
+    q: &Poly,
+    lo: &BigRational,
+    hi: &BigRational,
+) -> Vec<Result<(RealAlg, Iv), (BigRational, BigRational)>> {
+    let shifted = q.shifted(lo);
+    let window = Iv::ZERO.hull(enclose(&(hi - lo)));
+    let mut out = Vec::new();
+    for piece in isolate_roots(&enclose_poly(&shifted), window) {
+        match piece {
+            RootPiece::Root { at, rising } => {
+                let (Some(sl), Some(sh)) =
+                    (at.lo_exact::<BigRational>(), at.hi_exact::<BigRational>())
+                else {
+                    out.push(Err((lo.clone(), hi.clone())));
+                    continue;
+                };
+                let (tl, th) = (lo + sl, lo + sh);
+                let iv = Iv {
+                    lo: enclose(&tl).lo,
+                    hi: enclose(&th).hi,
+                };
+                let inside = &tl >= lo && &th <= hi;
+                let s = if rising {
+                    Ordering::Less
+                } else {
+                    Ordering::Greater
+                };
+                let x = RealAlg::certified(q.clone(), tl, th, s);
+                if inside
+                    || (x.cmp_rational(lo) != Ordering::Less
+                        && x.cmp_rational(hi) != Ordering::Greater)
+                {
+                    out.push(Ok((x, iv)));
+                }
+            }
+            RootPiece::Unsure(at) => {
+                let a = match at.lo_exact::<BigRational>() {
+                    Some(l) if l > BigRational::zero() => lo + l,
+                    _ => lo.clone(),
+                };
+                let b = match at.hi_exact::<BigRational>() {
+                    Some(h) if &(lo + &h) < hi => lo + h,
+                    _ => hi.clone(),
+                };
+                if a <= b {
+                    out.push(Err((a, b)));
+                }
+            }
+        }
+    }
+    out
 }
 
 /// A closed set of times: sorted, disjoint closed components [a, b] (a ≤ b).

@@ -234,7 +234,13 @@ impl Iv {
     /// self / 2.
     #[inline]
     pub fn half(self) -> Iv {
-        self.mul(Iv::point(0.5))
+        // Halving is exact unless it lands below the normal range and drops a bit.
+        let (lo, hi) = (self.lo * 0.5, self.hi * 0.5);
+        if lo * 2.0 == self.lo && hi * 2.0 == self.hi {
+            Iv::raw(lo, hi)
+        } else {
+            self.mul(Iv::point(0.5))
+        }
     }
 
     /// self / o; (−∞, +∞) when o may be 0.
@@ -472,41 +478,87 @@ fn dyadic(m: i64, k: u64) -> f64 {
     (m as f64) * f64::from_bits((1023 - k) << 52)
 }
 
-/// A float ≤ x (or ≥ x when `above`), checked exactly; ∓∞ when the check fails.
-fn checked_end<F: ExactField>(x: &F, start: f64, above: bool) -> f64 {
-    let mut e = start;
-    for _ in 0..4 {
-        let ok = match f64_to_exact::<F>(e) {
-            Some(r) if above => r >= *x,
-            Some(r) => r <= *x,
-            None => false,
-        };
-        if ok {
-            return e;
-        }
-        e = if above { next_up(e) } else { next_down(e) };
-    }
-    if above {
-        f64::INFINITY
-    } else {
-        f64::NEG_INFINITY
-    }
-}
-
 /// A rigorous enclosure of an exact number: the point interval when it is a float
-/// (recognised structurally by [`ExactField::as_dyadic`]), else end points near it
-/// verified by exact comparison.
+/// (recognised structurally by [`ExactField::as_dyadic`]), else the leading bits of
+/// its numerator over its power-of-two denominator, or of ⌊n·2^k / d⌋, rounded
+/// outward (an ulp or two wide).
 pub fn enclose<F: ExactField>(x: &F) -> Iv {
     if let Some((m, k)) = x.as_dyadic() {
         if m.unsigned_abs() < 1 << 53 && k <= 969 {
             return Iv::point(dyadic(m, k));
         }
     }
-    let near = x.to_big().to_f64().unwrap_or(f64::NAN);
-    if !near.is_finite() {
-        return Iv::ENTIRE;
+    let big = x.to_big();
+    if let Some(k) = power_of_two(big.denom()) {
+        return enclose_scaled_int(big.numer(), -i64::try_from(k).unwrap_or(i64::MAX));
     }
-    Iv::raw(checked_end(x, near, false), checked_end(x, near, true))
+    // n/d = q·2^−k + a remainder below 2^−k, with q = ⌊n·2^k / d⌋ of about 64 bits.
+    use num_integer::Integer;
+    let (n, d) = (big.numer(), big.denom());
+    let k = 64 + i64::try_from(d.bits()).unwrap_or(0) - i64::try_from(n.bits()).unwrap_or(0);
+    let (num, den) = if k >= 0 {
+        (n << k.unsigned_abs(), d.clone())
+    } else {
+        (n.clone(), d << k.unsigned_abs())
+    };
+    let (q, r) = num.div_mod_floor(&den);
+    let lo = enclose_scaled_int(&q, -k).lo;
+    let hi = if r.bits() == 0 {
+        enclose_scaled_int(&q, -k).hi
+    } else {
+        enclose_scaled_int(&(q + 1u8), -k).hi
+    };
+    Iv::raw(lo, hi)
+}
+
+/// k when the positive integer x is 2^k.
+fn power_of_two(x: &num_bigint::BigInt) -> Option<u64> {
+    let k = x.trailing_zeros()?;
+    (x.bits() == k + 1).then_some(k)
+}
+
+/// A rigorous enclosure of m·2^e for an integer m of any size: its leading 60 bits
+/// rounded outward (an ulp or two wide), then scaled (outward beyond the normal range).
+pub fn enclose_scaled_int(m: &num_bigint::BigInt, e: i64) -> Iv {
+    use num_bigint::Sign;
+    let mag = m.magnitude();
+    let bits = mag.bits();
+    if bits == 0 {
+        return Iv::ZERO;
+    }
+    let (lo, hi, shift) = if bits <= 53 {
+        let v = mag.to_u64().map_or(f64::NAN, |v| v as f64);
+        (v, v, 0i64)
+    } else {
+        let s = bits - 60;
+        let h = (mag >> s).to_u64().unwrap_or(u64::MAX);
+        let exact = mag.trailing_zeros().is_some_and(|z| z >= s);
+        let down = |v: u64| {
+            let f = v as f64;
+            if f as u64 > v {
+                next_down(f)
+            } else {
+                f
+            }
+        };
+        let up = |v: u64| {
+            let f = v as f64;
+            if (f as u64) < v {
+                next_up(f)
+            } else {
+                f
+            }
+        };
+        let top = if exact { h } else { h + 1 };
+        (down(h), up(top), i64::try_from(s).unwrap_or(i64::MAX))
+    };
+    let k = e.saturating_add(shift).clamp(-4000, 4000) as i32;
+    let r = Iv::raw(lo, hi).scaled_pow2(k);
+    if m.sign() == Sign::Minus {
+        r.neg()
+    } else {
+        r
+    }
 }
 
 /// The enclosure of a vector.
@@ -799,14 +851,11 @@ pub fn poly_eval(c: &[Iv], t: Iv) -> Iv {
 /// (a positive factor: the same roots and signs) so that the largest is about 2^900
 /// at most.
 pub fn enclose_poly(p: &crate::algebraic::Poly) -> Vec<Iv> {
-    use num_bigint::BigInt;
-    use num_rational::BigRational;
     let bits = p.coeffs().iter().map(|c| c.bits()).max().unwrap_or(0);
-    let shift = bits.saturating_sub(900);
-    let den = BigInt::from(1u8) << shift;
+    let shift = i64::try_from(bits.saturating_sub(900)).unwrap_or(i64::MAX);
     p.coeffs()
         .iter()
-        .map(|c| enclose(&BigRational::new(c.clone(), den.clone())))
+        .map(|c| enclose_scaled_int(c, -shift))
         .collect()
 }
 
@@ -900,32 +949,31 @@ fn sign_at(p: &[Iv], x: f64) -> Option<Ordering> {
     }
 }
 
-/// A root piece for a root known to lie in the enclosure r (a root of a polynomial of
-/// degree ≤ 2 whose other root is elsewhere): r itself, widened by a few ulps if its
-/// ends' signs are not certified opposite, else `Unsure`.
+/// A root piece for a root known to lie in the enclosure r, of a polynomial of degree
+/// ≤ 2: r widened until the signs at its ends are certified opposite (then it holds
+/// exactly one root: a second one would make the signs agree), doubling the widening
+/// from an ulp; `Unsure` when that does not happen.
 fn bracket_or_unsure(p: &[Iv], r: Iv) -> RootPiece {
     if !r.finite() {
         return RootPiece::Unsure(r);
     }
-    let (mut l, mut h) = (r.lo, r.hi);
-    for _ in 0..4 {
-        if l == h {
-            l = next_down(l);
-            h = next_up(h);
-        }
-        if let (Some(sl), Some(sh)) = (sign_at(p, l), sign_at(p, h)) {
-            if sl != sh {
+    let scale = r.lo.abs().max(r.hi.abs());
+    let mut delta = (scale * f64::EPSILON).max(f64::MIN_POSITIVE);
+    for _ in 0..48 {
+        let (l, h) = (next_down(r.lo - delta), next_up(r.hi + delta));
+        match (sign_at(p, l), sign_at(p, h)) {
+            (Some(sl), Some(sh)) if sl != sh => {
                 return RootPiece::Root {
                     at: Iv::raw(l, h),
                     rising: sl == Ordering::Less,
-                };
+                }
             }
-            break;
+            // Certified equal signs: the enclosure was right, so both roots are in it.
+            (Some(_), Some(_)) => break,
+            _ => delta *= 2.0,
         }
-        l = next_down(next_down(l));
-        h = next_up(next_up(h));
     }
-    RootPiece::Unsure(Iv::raw(l, h))
+    RootPiece::Unsure(r)
 }
 
 /// The pieces of a quadratic c + b·t + a·t² with a certified nonzero: no real root
@@ -995,45 +1043,116 @@ fn bernstein(p: &[Iv], l: f64, h: f64) -> Vec<Iv> {
         .collect()
 }
 
+/// The Bernstein coefficients of the two halves [l, m] and [m, h] of a piece from its
+/// own, by de Casteljau's scheme at u = (m − l)/(h − l) (enclosed; the exact 1/2 when
+/// m is the exact midpoint, then every step is a sum and a halving).
+fn de_casteljau(b: &[Iv], u: Iv) -> (Vec<Iv>, Vec<Iv>) {
+    let n = b.len() - 1;
+    let half = u.lo == 0.5 && u.hi == 0.5;
+    let v = Iv::ONE.sub(u);
+    let mut work = b.to_vec();
+    let mut left = Vec::with_capacity(n + 1);
+    let mut right = Vec::with_capacity(n + 1);
+    left.push(work[0]);
+    right.push(work[n]);
+    for r in 1..=n {
+        for i in 0..=n - r {
+            work[i] = if half {
+                work[i].add(work[i + 1]).half()
+            } else {
+                work[i].mul(v).add(work[i + 1].mul(u))
+            };
+        }
+        left.push(work[0]);
+        right.push(work[n - r]);
+    }
+    right.reverse();
+    (left, right)
+}
+
+/// What the Bernstein coefficients of a piece say: no root (one strict sign), exactly
+/// one (one sign change, the ends' signs certified and nonzero: Descartes' rule for
+/// the Bernstein basis; `Some(true)` when it rises), or nothing certain (`None`).
+enum Verdict {
+    NoRoot,
+    OneRoot(bool),
+    Unknown,
+}
+
+fn verdict(b: &[Iv]) -> Verdict {
+    let mut last = Ordering::Equal;
+    let mut first = Ordering::Equal;
+    let mut changes = 0;
+    for x in b {
+        match x.sign() {
+            Err(_) => return Verdict::Unknown,
+            Ok(Ordering::Equal) => continue,
+            Ok(s) => {
+                if first == Ordering::Equal {
+                    first = s;
+                } else if s != last {
+                    changes += 1;
+                }
+                last = s;
+            }
+        }
+    }
+    let ends = |x: Option<&Iv>| {
+        matches!(
+            x.map(|x| x.sign()),
+            Some(Ok(Ordering::Less | Ordering::Greater))
+        )
+    };
+    if !(ends(b.first()) && ends(b.last())) {
+        return Verdict::Unknown;
+    }
+    match changes {
+        0 => Verdict::NoRoot,
+        1 => Verdict::OneRoot(first == Ordering::Less),
+        _ => Verdict::Unknown,
+    }
+}
+
 /// Subdivision in the Bernstein basis (see [`isolate_roots`]): pieces of the window
 /// with one strict sign are dropped, pieces with exactly one sign change are roots,
-/// the rest are halved until the budget or the depth runs out.
+/// the rest are halved (de Casteljau) until the budget or the depth runs out.
 fn bernstein_pieces(p: &[Iv], window: Iv) -> Vec<RootPiece> {
     let mut out = Vec::new();
-    let mut stack = vec![(window.lo, window.hi, 0u32)];
+    let mut stack = vec![(
+        window.lo,
+        window.hi,
+        0u32,
+        bernstein(p, window.lo, window.hi),
+    )];
     let mut splits = 0usize;
-    while let Some((l, h, depth)) = stack.pop() {
-        let b = bernstein(p, l, h);
-        let signs: Vec<Option<Ordering>> = b.iter().map(|x| x.sign().ok()).collect();
-        let known = signs.iter().all(Option::is_some);
-        let nonzero: Vec<Ordering> = signs
-            .iter()
-            .flatten()
-            .copied()
-            .filter(|&s| s != Ordering::Equal)
-            .collect();
-        let ends_nonzero = matches!(signs.first(), Some(Some(s)) if *s != Ordering::Equal)
-            && matches!(signs.last(), Some(Some(s)) if *s != Ordering::Equal);
-        if known && ends_nonzero {
-            let changes = nonzero.windows(2).filter(|w| w[0] != w[1]).count();
-            if changes == 0 {
-                continue;
-            }
-            if changes == 1 {
+    while let Some((l, h, depth, b)) = stack.pop() {
+        match verdict(&b) {
+            Verdict::NoRoot => continue,
+            Verdict::OneRoot(rising) => {
                 out.push(RootPiece::Root {
                     at: Iv::raw(l, h),
-                    rising: nonzero[0] == Ordering::Less,
+                    rising,
                 });
                 continue;
             }
+            Verdict::Unknown => {}
         }
-        let m = Iv::point_between(Iv::point(l), Iv::point(h));
-        match m {
+        match Iv::point_between(Iv::point(l), Iv::point(h)) {
             Some(m) if depth < MAX_DEPTH && splits < SPLIT_BUDGET => {
                 splits += 1;
+                let m = m.lo;
+                // u = (m − l)/(h − l), exactly 1/2 when m is the exact midpoint.
+                let u = if m - l == h - m {
+                    Iv::point(0.5)
+                } else {
+                    Iv::point(m)
+                        .sub(Iv::point(l))
+                        .div(Iv::point(h).sub(Iv::point(l)))
+                };
+                let (bl, br) = de_casteljau(&b, u);
                 // Right half first onto the stack, so that the left one comes out first.
-                stack.push((m.lo, h, depth + 1));
-                stack.push((l, m.lo, depth + 1));
+                stack.push((m, h, depth + 1, br));
+                stack.push((l, m, depth + 1, bl));
             }
             _ => out.push(RootPiece::Unsure(Iv::raw(l, h))),
         }
@@ -1059,26 +1178,37 @@ fn midpoints(p: &[Iv]) -> Vec<f64> {
 }
 
 /// An approximate root in (l, h) of the plain polynomial c that is negative at l when
-/// `rising` (positive otherwise), by float bisection.
+/// `rising` (positive otherwise): Newton's method kept inside a shrinking bracket,
+/// bisecting when a step leaves it.
 fn approx_root(c: &[f64], l: f64, h: f64, rising: bool) -> f64 {
-    let eval = |t: f64| c.iter().rev().fold(0.0, |acc, &x| acc * t + x);
+    let eval = |t: f64| {
+        c.iter()
+            .rev()
+            .fold((0.0, 0.0), |(v, d), &x| (v * t + x, d * t + v))
+    };
     let (mut a, mut b) = (l, h);
-    for _ in 0..80 {
-        let m = a / 2.0 + b / 2.0;
-        if !(m > a && m < b) {
-            break;
-        }
-        let v = eval(m);
+    let mut x = a / 2.0 + b / 2.0;
+    for _ in 0..100 {
+        let (v, d) = eval(x);
         if v == 0.0 || !v.is_finite() {
-            return m;
+            return x;
         }
         if (v < 0.0) == rising {
-            a = m;
+            a = x;
         } else {
-            b = m;
+            b = x;
         }
+        let mid = a / 2.0 + b / 2.0;
+        if !(mid > a && mid < b) {
+            break;
+        }
+        let step = x - v / d;
+        if step == x {
+            return x;
+        }
+        x = if step > a && step < b { step } else { mid };
     }
-    a / 2.0 + b / 2.0
+    x
 }
 
 /// A bracket [g − δ, g + δ] inside (l, h), with certified opposite signs, around the
@@ -1090,7 +1220,24 @@ fn certify_near(p: &[Iv], g: f64, l: f64, h: f64, rising: bool) -> Option<Iv> {
     } else {
         Ordering::Greater
     };
-    let mut delta = (g.abs() * f64::EPSILON).max(f64::MIN_POSITIVE);
+    // The first width: the evaluation's own uncertainty at g over the slope there
+    // (below it no sign can be certified), at least an ulp of g.
+    let noise = poly_eval(p, Iv::point(g));
+    let c = midpoints(p);
+    let slope = c
+        .iter()
+        .enumerate()
+        .skip(1)
+        .rev()
+        .fold(0.0, |acc, (k, &x)| acc * g + k as f64 * x)
+        .abs();
+    let ulp = (g.abs() * f64::EPSILON).max(f64::MIN_POSITIVE);
+    let guess = (noise.hi - noise.lo) / slope;
+    let mut delta = if guess.is_finite() && guess > ulp {
+        guess
+    } else {
+        ulp
+    };
     for _ in 0..14 {
         let (a, b) = (g - delta, g + delta);
         if a > l && b < h && a < b {
@@ -1108,6 +1255,10 @@ fn certify_near(p: &[Iv], g: f64, l: f64, h: f64, rising: bool) -> Option<Iv> {
 /// A root bracket narrowed to a few ulps where the enclosures allow it (else as it
 /// was): the signs at its new ends are certified, so it still isolates the root.
 fn tighten(p: &[Iv], at: Iv, rising: bool) -> Iv {
+    let scale = at.lo.abs().max(at.hi.abs());
+    if at.hi - at.lo <= scale * (64.0 * f64::EPSILON) {
+        return at;
+    }
     let g = approx_root(&midpoints(p), at.lo, at.hi, rising);
     certify_near(p, g, at.lo, at.hi, rising).unwrap_or(at)
 }
@@ -1151,20 +1302,62 @@ pub fn tighten_alg(x: &mut RealAlg) -> Iv {
             }
         }
     }
-    // Exact bisection, a bounded number of steps.
-    for _ in 0..64 {
+    // Floats again with the origin of time moved to lo exactly.
+    if narrow_alg(x) {
+        let (lo, hi) = x.bounds();
+        return Iv::raw(enclose(lo).lo, enclose(hi).hi);
+    }
+    // Exact bisection: as many halvings as bring the width to a few ulps of the
+    // number (at most 200), the enclosure taken once at the end.
+    let width = outer.hi - outer.lo;
+    let target = (outer.lo.abs().max(outer.hi.abs()) * (4.0 * f64::EPSILON)).max(f64::MIN_POSITIVE);
+    let steps = if width.is_finite() && width > target {
+        ((width / target).log2().ceil() as usize).min(200)
+    } else {
+        64
+    };
+    for _ in 0..steps {
         x.refine();
         if let Some(q) = x.as_rational() {
             return enclose(q);
         }
-        let (lo, hi) = x.bounds();
-        let e = Iv::raw(enclose(lo).lo, enclose(hi).hi);
-        if is_tight(e) {
-            return e;
-        }
     }
     let (lo, hi) = x.bounds();
     Iv::raw(enclose(lo).lo, enclose(hi).hi)
+}
+
+/// Narrow a real algebraic number's isolating interval (lo, hi) in floats relative to
+/// its own width, far below the float resolution at the number: the polynomial is
+/// moved to the origin s = t − lo exactly (its coefficients exact, so nothing cancels
+/// between large terms) and the root bracketed in s with certified signs. Whether it
+/// narrowed (a rational, or floats that cannot certify, leave it as it was).
+/// (Paper A §II.C/§II.I's roots, told apart where they nearly coincide.)
+pub fn narrow_alg(x: &mut RealAlg) -> bool {
+    let Some(sign) = x.lo_sign() else {
+        return false;
+    };
+    let rising = sign == Ordering::Less;
+    let (lo, hi) = {
+        let (l, h) = x.bounds();
+        (l.clone(), h.clone())
+    };
+    let c = enclose_poly(&x.poly().shifted(&lo));
+    let b = enclose(&(&hi - &lo)).lo;
+    if !(b > 0.0 && c.iter().all(|v| v.finite())) {
+        return false;
+    }
+    let g = approx_root(&midpoints(&c), 0.0, b, rising);
+    let Some(br) = certify_near(&c, g, 0.0, b, rising) else {
+        return false;
+    };
+    let (Some(l), Some(h)) = (
+        br.lo_exact::<num_rational::BigRational>(),
+        br.hi_exact::<num_rational::BigRational>(),
+    ) else {
+        return false;
+    };
+    x.narrow_to(&lo + l, &lo + h);
+    true
 }
 
 /// A rigorous enclosure of a real algebraic number ([`tighten_alg`] on a copy).

@@ -530,7 +530,8 @@ pub fn enclose_scaled_int(m: &num_bigint::BigInt, e: i64) -> Iv {
         let v = mag.to_u64().map_or(f64::NAN, |v| v as f64);
         (v, v, 0i64)
     } else {
-        let s = bits - 60;
+        // 54 … 60 bits fit a u64 whole (s = 0): rounded to f64 below
+        let s = bits.saturating_sub(60);
         let h = (mag >> s).to_u64().unwrap_or(u64::MAX);
         let exact = mag.trailing_zeros().is_some_and(|z| z >= s);
         let down = |v: u64| {
@@ -1443,6 +1444,31 @@ mod broad_phase_tests {
 mod tests {
     use super::*;
     use crate::field::Q;
+
+    /// Integers of 54 to 60 bits (more than an f64 holds, fewer than the 60 leading bits
+    /// kept) are enclosed, not an overflow: found by the paper-A end-to-end tests.
+    #[test]
+    fn integers_of_54_to_60_bits_are_enclosed() {
+        for bits in 54..=64u32 {
+            for m in [(1u128 << (bits - 1)) + 1, (1u128 << bits) - 1] {
+                let big = num_bigint::BigInt::from(m);
+                for e in [-3i64, 0, 5] {
+                    let iv = enclose_scaled_int(&big, e);
+                    let exact = m as f64 * 2f64.powi(e as i32);
+                    // the f64 nearest m·2^e is within an ulp of the true value, which the
+                    // enclosure holds: so the enclosure meets [exact − ulp, exact + ulp]
+                    let ulp = exact * f64::EPSILON;
+                    assert!(
+                        iv.lo <= exact + ulp && exact - ulp <= iv.hi,
+                        "{bits} bits, e {e}: {iv:?}"
+                    );
+                    assert!(iv.hi - iv.lo <= 4.0 * ulp, "{bits} bits: {iv:?} too wide");
+                    let neg = enclose_scaled_int(&(-&big), e);
+                    assert_eq!((neg.lo, neg.hi), (-iv.hi, -iv.lo));
+                }
+            }
+        }
+    }
 
     #[test]
     fn decisions_abstain_on_overlap() {

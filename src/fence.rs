@@ -3,32 +3,38 @@
 //! is x(t) in P(t) at distance > D from ∂P(t), and in 3D bottom(t) + H < z(t) <
 //! top(t) − H; paper A §II's motion and §III's slab).
 //!
-//! # Statically shaped polygons: a closed form
-//! When every V_i is the same V (paper A §II.F, §II.H), in the polygon's frame the
-//! point moves along one segment, from s to s + T·(v − V) relative to P. It stays in the
-//! fence throughout exactly when
-//! 1. s is in the fence at t = 0 horizontally: inside P (winding number odd; §II.B's
+//! # The conditions
+//! The point stays in the fence throughout [0, T] exactly when
+//! 1. s is in the fence at t = 0 horizontally: inside P(0) (winding number odd; §II.B's
 //!    crossing count, certified) — its distance to ∂P is covered by 2.;
-//! 2. the relative path is at distance > D from every edge (closed: a distance equal
+//! 2. the point is at distance > D from every edge at every t (closed: a distance equal
 //!    to D is an exit);
 //! 3. in 3D, the height is strictly inside the shrunk slab at t = 0 and at t = T (the
 //!    slab lines are linear in t).
 //!
-//! (⇐: by 2 the path never meets ∂P, so its winding number stays that of s, odd; every
-//! point of it is farther than D from each edge, hence from ∂P. ⇒: each point of the
-//! path is inside at distance > D, and the distance from the path to an edge is attained
-//! at a point of the path.)
+//! (⇐: by 2 the point never meets ∂P(t), so its winding number stays that of t = 0,
+//! odd; at every t it is farther than D from each edge, hence from ∂P(t). ⇒: at each
+//! t the point is inside at distance > D from ∂P(t), so from each edge.) This holds for
+//! warping polygons too: the winding number changes only where the point is on an edge.
 //!
-//! The distance of two segments is ≤ D exactly when they cross or one's end is within D
-//! of the other (paper A §II.G's segments_close, closed): the engine's certified
-//! crossing test and a closed point–segment test on balls, |a|² ≤ D², |b|² ≤ D², or the
-//! foot of the perpendicular on the segment (h₁ ≥ 0, h₂ ≥ 0, |e|² > 0) with
-//! g² ≤ D²|e|². Two filters go first, each certain: bounding boxes apart by more than D,
-//! and both ends of an edge beyond D on one side of the path's line.
+//! # Statically shaped polygons: a closed form
+//! When every V_i is the same V (paper A §II.F, §II.H), in the polygon's frame the
+//! point moves along one segment, from s to s + T·(v − V) relative to P, and condition 2
+//! is: that segment is at distance > D from every edge. The distance of two segments is
+//! ≤ D exactly when they cross or one's end is within D of the other (paper A §II.G's
+//! segments_close, closed): the engine's certified crossing test and a closed
+//! point–segment test on balls, |a|² ≤ D², |b|² ≤ D², or the foot of the perpendicular
+//! on the segment (h₁ ≥ 0, h₂ ≥ 0, |e|² > 0) with g² ≤ D²|e|². Two filters go first,
+//! each certain: bounding boxes apart by more than D, and both ends of an edge beyond D
+//! on one side of the path's line.
 //!
-//! # Warping polygons: the interval scan
-//! The scan of breach_D ([`crate::intervals`]), stopped at the first piece on which the
-//! breach is certain.
+//! # Warping polygons: each edge's halving
+//! Condition 2 edge by edge, by the interval scan's machinery ([`crate::intervals`]):
+//! [0, T] is halved while the edge is neither certainly farther than D on a piece nor
+//! certainly within D on it (or certainly crossed), the edge the point heads for first.
+//!
+//! Condition 2 goes first (a point that leaves is usually settled there), the crossing
+//! count of condition 1 after it.
 //!
 //! Certified both ways: `No` only when the point certainly stays in the fence, `Yes`
 //! only when it certainly leaves; every decision is a `Ball` comparison (the error
@@ -36,7 +42,7 @@
 
 use crate::ball::{mx, nonnegative, positive, up, Ball, BallV, Tri};
 use crate::detect::statically_shaped;
-use crate::intervals::{Class, Heights, Pieces, Relation, Scan, Separation, Workspace};
+use crate::intervals::{Heights, Parts, Relation, Scan, Separation};
 use crate::motion::{winding, Frame, SlabLine, State};
 use crate::predicates::{self as pr, PathLine};
 use crate::vect2::Vect2;
@@ -83,63 +89,18 @@ pub fn detect_exit_tri(
     sep: Separation,
 ) -> Tri {
     let n = p.len().min(vels.len());
-    let (p, vels) = (&p[..n], &vels[..n]);
-    if n >= 3 && statically_shaped(vels) {
-        static_exit(t, s, v, p, vels, heights, sep)
-    } else {
-        scan_exit(t, s, v, p, vels, heights, sep)
-    }
-}
-
-/// The first certain breach, from the scan's pieces: the scan stops there.
-#[derive(Default)]
-struct FirstBreach {
-    found: bool,
-    unsure: bool,
-}
-
-impl Pieces for FirstBreach {
-    fn piece(&mut self, _a: f64, _b: f64, class: Class) -> bool {
-        match class {
-            Class::Holds => self.found = true,
-            Class::Unsure => self.unsure = true,
-            Class::Fails => {}
-        }
-        self.found
-    }
-}
-
-/// breach_D somewhere in [0, T], by the interval scan (the module doc's warping case).
-fn scan_exit(
-    t: f64,
-    s: Vect2,
-    v: Vect2,
-    p: &[Vect2],
-    vels: &[Vect2],
-    heights: Option<Heights>,
-    sep: Separation,
-) -> Tri {
-    let mut ws = Workspace::new();
-    let Some(mut scan) = Scan::new(t, s, v, p, vels, heights, Relation::Breach, sep, &mut ws)
-    else {
+    if n < 3 {
         return Tri::Unsure;
-    };
-    if scan.out_at_start() {
-        return Tri::Yes;
     }
-    let mut first = FirstBreach::default();
-    scan.run(&mut first);
-    if first.found {
-        Tri::Yes
-    } else if first.unsure {
-        Tri::Unsure
-    } else {
-        Tri::No
-    }
+    let (p, vels) = (&p[..n], &vels[..n]);
+    exit(t, s, v, p, vels, heights, sep, statically_shaped(vels))
 }
 
-/// The closed form for a statically shaped polygon (the module doc's conditions 1–3).
-fn static_exit(
+/// Keep-in exit detection (the module doc): the height against the shrunk slab and the
+/// start (conditions 3 and 1), then the edges (condition 2): the closed form when
+/// `closed` (the polygon is statically shaped), else each edge's halving of [0, T].
+#[allow(clippy::too_many_arguments)]
+fn exit(
     t: f64,
     s: Vect2,
     v: Vect2,
@@ -147,6 +108,7 @@ fn static_exit(
     vels: &[Vect2],
     heights: Option<Heights>,
     sep: Separation,
+    closed: bool,
 ) -> Tri {
     let h = if heights.is_some() { sep.h } else { 0.0 };
     let finite = |a: &Vect2| a.is_finite();
@@ -164,7 +126,6 @@ fn static_exit(
         return Tri::Unsure;
     }
     let frame = Frame::new(t, s, v, p, vels, heights, &[sep.d, h], true);
-    let (s, v, d) = (frame.pt(s), frame.pt(v), frame.len(sep.d));
     // 3. The height against the shrunk slab, at t = 0 and t = T.
     let mut acc = match heights {
         Some(z) => slab_exit(SlabLine::pair(frame.heights(z), -frame.len(h)), t),
@@ -173,25 +134,60 @@ fn static_exit(
     if acc == Tri::Yes {
         return Tri::Yes;
     }
+    // 2. Within D of an edge at some time, first for a statically shaped polygon (a
+    // point that leaves is usually settled there, before the O(n) crossing count);
+    // for a warping one, a quick look at the edge the point heads for.
+    let d = frame.len(sep.d);
+    // Each warping edge is halved on its own: no stored edges or candidates are needed.
+    let ws = Parts {
+        edges: &mut [],
+        reach: &mut [],
+        cands: &mut [],
+    };
+    let mut warping = match closed {
+        true => None,
+        false => Scan::new(t, s, v, p, vels, heights, Relation::Breach, sep, ws),
+    };
+    let (edges, first) = match &warping {
+        _ if closed => (static_edges(&frame, t, s, v, p, vels[0], d), 0),
+        Some(scan) => match scan.heads_for() {
+            (_, true) => return Tri::Yes,
+            (first, false) => (Tri::Unsure, first),
+        },
+        None => (Tri::Unsure, 0),
+    };
+    if edges == Tri::Yes {
+        return Tri::Yes;
+    }
     // 1. Inside P at t = 0.
-    let n = p.len();
-    let vertex = |i: usize| frame.pt(p[i]);
-    match winding(n, |i| (vertex(i), Vect2::ZERO), s, Vect2::ZERO, 0.0) {
+    let at_start = |i: usize| (frame.pt(p[i]), Vect2::ZERO);
+    match winding(p.len(), at_start, frame.pt(s), Vect2::ZERO, 0.0) {
         State::Outside => return Tri::Yes,
         State::Unknown | State::Undefined => acc = Tri::Unsure,
         State::Inside => {}
     }
-    // 2. The relative path 0 → T·(v − V) against every edge (a point when v = V or
-    // T = 0).
-    let still = t == 0.0 || frame.pt(vels[0]) == v;
-    let path = BallV::diff(v, frame.pt(vels[0])).scale(Ball::exact(t));
+    match warping.as_mut() {
+        Some(scan) => acc.or(scan.comes_within(first)),
+        None => acc.or(edges),
+    }
+}
+
+/// Condition 2 for a statically shaped polygon (all velocities `vel`): the relative
+/// path 0 → T·(v − V) against every edge (a point when v = V or T = 0), in the frame
+/// (`d` is D there).
+fn static_edges(frame: &Frame, t: f64, s: Vect2, v: Vect2, p: &[Vect2], vel: Vect2, d: f64) -> Tri {
+    let (s, v, vel) = (frame.pt(s), frame.pt(v), frame.pt(vel));
+    let still = t == 0.0 || vel == v;
+    let path = BallV::diff(v, vel).scale(Ball::exact(t));
     let line = PathLine::new(path, d);
     let rel = |i: usize| {
-        let q = BallV::diff(vertex(i), s);
+        let q = BallV::diff(frame.pt(p[i]), s);
         (q, line.side(q.v))
     };
+    let n = p.len();
     let first = rel(0);
     let (mut a, mut side_a) = first;
+    let mut acc = Tri::No;
     for i in 0..n {
         let j = if i + 1 == n { 0 } else { i + 1 };
         let (b, side_b) = if j == 0 { first } else { rel(j) };

@@ -112,7 +112,7 @@ use std::vec::Vec;
 use crate::error::CaseError;
 pub use crate::motion::Heights;
 use crate::vect2::Vect2;
-pub(crate) use scan::{Class, Pieces, Scan, Workspace};
+pub(crate) use scan::{Class, Parts, Pieces, Scan, Workspace};
 
 /// Which set of times a scan encloses (the module doc's definitions).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -339,7 +339,7 @@ fn scan_into(
     sink: &mut impl Sink,
 ) {
     let mut ws = Workspace::new();
-    match Scan::new(t, s, v, p, vels, heights, relation, sep, &mut ws) {
+    match Scan::new(t, s, v, p, vels, heights, relation, sep, ws.parts()) {
         Some(mut scan) => {
             let mut spans = Spans {
                 sink,

@@ -10,7 +10,7 @@
 //! [`CAND_CAP`] indices; when it is full, a piece's children test every edge.
 
 use super::{Relation, Separation};
-use crate::ball::{mx, round_down, round_up, Ball, BallV};
+use crate::ball::{mx, round_down, round_up, up, Ball, BallV, Tri};
 use crate::motion::{
     bracket, centre, sign, touch_possible, winding, Edge, Frame, Heights, SlabLine, State, Taylor,
     RESOLUTION, VISIT_BUDGET,
@@ -24,6 +24,10 @@ pub(crate) const EDGE_CAP: usize = 64;
 
 /// How many candidate indices the stack of open pieces holds.
 pub(crate) const CAND_CAP: usize = 1024;
+
+/// The pending pieces of one edge's halving ([`Scan::comes_within`]): at most one per
+/// level, and the resolution is reached within 40 levels.
+const DEPTH: usize = 64;
 
 /// What the scan certifies of the relation on a closed piece [a, b].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -185,6 +189,25 @@ impl Workspace {
             cands: [0; CAND_CAP],
         }
     }
+
+    /// All of it, for a scan.
+    pub(crate) fn parts(&mut self) -> Parts<'_> {
+        Parts {
+            edges: &mut self.edges,
+            reach: &mut self.reach,
+            cands: &mut self.cands,
+        }
+    }
+}
+
+/// The storage a scan works in: stored edges (and their D·|e| when rigid), and the
+/// stack of candidates. Any lengths will do (none: every edge is formed when used, and
+/// every piece tests every edge), so a caller that halves one edge at a time
+/// ([`Scan::comes_within`]) need not set up a [`Workspace`].
+pub(crate) struct Parts<'a> {
+    pub edges: &'a mut [Edge],
+    pub reach: &'a mut [Ball],
+    pub cands: &'a mut [u32],
 }
 
 /// The scan over [0, T] of one relation (see the module doc).
@@ -198,7 +221,7 @@ pub(crate) struct Scan<'a> {
     p: &'a [Vect2],
     vels: &'a [Vect2],
     /// The edges formed once (the first [`EDGE_CAP`]) and the candidates' stack.
-    ws: &'a mut Workspace,
+    ws: Parts<'a>,
     /// D and D², in the frame, and whether D = 0.
     d: Ball,
     d2: Ball,
@@ -228,7 +251,7 @@ impl<'a> Scan<'a> {
         heights: Option<Heights>,
         relation: Relation,
         sep: Separation,
-        ws: &'a mut Workspace,
+        ws: Parts<'a>,
     ) -> Option<Scan<'a>> {
         let n = p.len().min(vels.len());
         let (p, vels) = (&p[..n], &vels[..n]);
@@ -285,7 +308,7 @@ impl<'a> Scan<'a> {
             visits: 0,
             cluster_from: None,
         };
-        for i in 0..n.min(EDGE_CAP) {
+        for i in 0..n.min(scan.ws.edges.len()).min(scan.ws.reach.len()) {
             let e = scan.make_edge(i);
             if e.rigid() {
                 scan.ws.reach[i] = scan.d.mul(root(e.length(1, e.e0).range(0.0)));
@@ -295,13 +318,106 @@ impl<'a> Scan<'a> {
         Some(scan)
     }
 
-    /// At t = 0, certainly outside the polygon (a certified winding number 0), or
-    /// certainly past a slab line (≤ 0; for breach_D, whose lines are shrunk by H): a
-    /// quick certificate that breach_D holds at 0 (the module doc's conditions at one
-    /// time).
-    pub(crate) fn out_at_start(&self) -> bool {
-        let past = |line: &SlabLine| line.at(0.0).0.hi() <= 0.0;
-        self.slab.is_some_and(|lines| lines.iter().any(past)) || self.winding(0.0) == State::Outside
+    /// The edge the point heads for (a float estimate, for the order of the edges only)
+    /// and whether the point is certainly within D of it at the estimated time of the
+    /// crossing: a quick `true` for [`Scan::comes_within`], which then starts from that
+    /// edge.
+    pub(crate) fn heads_for(&self) -> (usize, bool) {
+        let n = self.p.len();
+        let (when, first) = (0..n)
+            .filter(|&i| live(self.p, self.vels, i))
+            .map(|i| (self.heading(i as u32), i))
+            .min_by(|x, y| x.0.total_cmp(&y.0))
+            .unwrap_or((f64::INFINITY, 0));
+        (first, when <= self.t && self.close_at(first as u32, when))
+    }
+
+    /// Does the point come within D of some edge at some t ∈ [0, T] (the horizontal
+    /// part of a keep-in exit, `crate::fence`)? `Yes` certainly (at some instant), `No`
+    /// certainly not, `Unsure` otherwise. Each edge on its own, from edge `first` on
+    /// (see [`Scan::heads_for`]), by halving [0, T]: a piece on which the edge is farther
+    /// than D is done, one on which it is within D throughout (or is crossed: g changes
+    /// sign while h₁, h₂ > 0) answers `Yes`.
+    pub(crate) fn comes_within(&mut self, first: usize) -> Tri {
+        let n = self.p.len();
+        let mut acc = Tri::No;
+        for k in 0..n {
+            let i = (first + k) % n;
+            if live(self.p, self.vels, i) {
+                match self.edge_within(i as u32) {
+                    Tri::Yes => return Tri::Yes,
+                    Tri::Unsure => acc = Tri::Unsure,
+                    Tri::No => {}
+                }
+            }
+        }
+        acc
+    }
+
+    /// Edge i certainly within D of the point at the float time t (the closeness test
+    /// of [`Scan::edge_within`] on the one-point piece [t, t]).
+    fn close_at(&self, i: u32, t: f64) -> bool {
+        self.ranges(i, t, 0.0, &[]).is_some_and(|r| close(&r))
+    }
+
+    /// When the point, moving as at t = 0 against the edge as it is at t = 0, crosses
+    /// edge i's segment (+∞ if it does not): a float estimate that orders the edges in
+    /// [`Scan::comes_within`], never a decision.
+    fn heading(&self, i: u32) -> f64 {
+        let f = &self.frame;
+        let (i, j) = (i as usize, next(self.p.len(), i as usize));
+        let (a, va) = (f.pt(self.p[i]), f.pt(self.vels[i]));
+        let (q0, q1, e0) = (self.s - a, self.v - va, f.pt(self.p[j]) - a);
+        let cross = |a: Vect2, b: Vect2| a.x * b.y - a.y * b.x;
+        let t = -cross(q0, e0) / cross(q1, e0);
+        let along = (q0 + q1.scale(t)).dot(e0) / e0.sq();
+        if t >= 0.0 && (0.0..=1.0).contains(&along) {
+            t
+        } else {
+            f64::INFINITY
+        }
+    }
+
+    /// [`Scan::comes_within`] for edge i: a depth-first halving of [0, T] with its
+    /// pending pieces on a stack (one per level, so [`DEPTH`] suffices).
+    fn edge_within(&mut self, i: u32) -> Tri {
+        let mut slot = None;
+        let edge = *self.edge(i, &mut slot);
+        let mut stack = [(0.0, 0.0); DEPTH];
+        stack[0] = (0.0, self.t);
+        let mut top = 1;
+        let mut acc = Tri::No;
+        while top > 0 {
+            top -= 1;
+            let (a, b) = stack[top];
+            self.visits += 1;
+            if self.visits > VISIT_BUDGET {
+                return Tri::Unsure;
+            }
+            let (m, h) = centre(a, b);
+            let Some(r) = self.ranges_of(i, &edge, m, h, &[]) else {
+                continue;
+            };
+            if (r.h1.hi() < 0.0 && r.head.lo() > 0.0) || (r.h2.hi() < 0.0 && r.tail.lo() > 0.0) {
+                continue;
+            }
+            let crossed = r.h1.lo() > 0.0 && r.h2.lo() > 0.0 && {
+                let g = |t: f64| self.eval(Fun::Cross(i), t).0;
+                let (ga, gb) = (sign(g(a)), sign(g(b)));
+                ga.is_some() && gb.is_some() && ga != gb
+            };
+            if close(&r) || crossed {
+                return Tri::Yes;
+            }
+            if b - a <= self.eps || m <= a || m >= b || top + 2 > DEPTH {
+                acc = Tri::Unsure;
+                continue;
+            }
+            stack[top] = (m, b);
+            stack[top + 1] = (a, m);
+            top += 2;
+        }
+        acc
     }
 
     /// Scans [0, T], sending every piece to `out` (until it asks to stop).
@@ -361,6 +477,23 @@ impl<'a> Scan<'a> {
         }
     }
 
+    /// A cheap certificate that the edge is farther than D throughout |t − m| ≤ h: both
+    /// of its ends, a − x = −q and b − x = w, stay beyond D on one side along x or along
+    /// y (each end's box: its value at m, widened by its radius and by its velocity
+    /// times h, all rounded up; §II.G's bounding-box filter, over time).
+    #[inline]
+    fn boxes_apart(&self, e: &Edge, q: BallV, w: BallV, h: f64) -> bool {
+        let d = self.d.z;
+        let reach = |x: BallV, x1: BallV, c1: f64| up(d + x.r + (c1.abs() + x1.r) * h);
+        let (qx, qy) = (reach(q, e.q1, e.q1.v.x), reach(q, e.q1, e.q1.v.y));
+        let (wx, wy) = (reach(w, e.w1, e.w1.v.x), reach(w, e.w1, e.w1.v.y));
+        // a − x = −q: beyond D to the right when −q.x > D + its widening, and so on.
+        (-q.v.x > qx && w.v.x > wx)
+            || (q.v.x > qx && -w.v.x > wx)
+            || (-q.v.y > qy && w.v.y > wy)
+            || (q.v.y > qy && -w.v.y > wy)
+    }
+
     /// The ranges of edge i's functions over |t − m| ≤ h, with `over`'s range put in for
     /// its function when it is one of this edge's (the monotone hull of a shortcut).
     /// `None` when the edge is out of play on the piece: it cannot be touched (inside),
@@ -369,7 +502,16 @@ impl<'a> Scan<'a> {
     fn ranges(&self, i: u32, m: f64, h: f64, over: &[(Fun, Ball)]) -> Option<Ranges> {
         let mut slot = None;
         let e = self.edge(i, &mut slot);
+        self.ranges_of(i, e, m, h, over)
+    }
+
+    /// [`Scan::ranges`] of edge i, given as `e`.
+    #[inline]
+    fn ranges_of(&self, i: u32, e: &Edge, m: f64, h: f64, over: &[(Fun, Ball)]) -> Option<Ranges> {
         let (q, ev, w) = e.at(m);
+        if over.is_empty() && self.boxes_apart(e, q, w, h) {
+            return None;
+        }
         let pick = |f: Fun, r: Ball| match over.iter().find(|(o, _)| *o == f) {
             Some(&(_, x)) => x,
             None => r,
@@ -461,7 +603,7 @@ impl<'a> Scan<'a> {
             };
             let keep = self.edge_assess(i, m, h, over, &mut sum);
             if keep && push {
-                if self.len < CAND_CAP {
+                if self.len < self.ws.cands.len() {
                     self.ws.cands[self.len] = i;
                     self.len += 1;
                 } else {
@@ -523,9 +665,7 @@ impl<'a> Scan<'a> {
         sum.all_far = false;
         // Within D of an end, or of the segment's interior (the foot of the perpendicular
         // on the segment: h₁ ≥ 0, h₂ ≥ 0, and g² ≤ D²|e|²).
-        sum.any_close |= r.head.hi() <= 0.0
-            || r.tail.hi() <= 0.0
-            || (r.h1.lo() >= 0.0 && r.h2.lo() >= 0.0 && r.minus.hi() <= 0.0 && r.plus.lo() >= 0.0);
+        sum.any_close |= close(&r);
         sum.touching |= touch;
         let j = next(self.p.len(), i as usize) as u32;
         // With D > 0 the point meets the edge only where it is within D of it, where the
@@ -734,6 +874,15 @@ impl<'a> Scan<'a> {
             }
         }
     }
+}
+
+/// Within D of the edge throughout the piece of these ranges: within D of an end, or of
+/// the segment's interior (the foot of the perpendicular on it, and the line within D).
+#[inline]
+fn close(r: &Ranges) -> bool {
+    r.head.hi() <= 0.0
+        || r.tail.hi() <= 0.0
+        || (r.h1.lo() >= 0.0 && r.h2.lo() >= 0.0 && r.minus.hi() <= 0.0 && r.plus.lo() >= 0.0)
 }
 
 /// The vertex after i, cyclically.

@@ -83,6 +83,31 @@ fn a_square_crossed_once_is_one_narrow_certain_span() {
     assert!(spans[0].certain);
     assert!(encloses(spans[0].start, 2.0, NARROW), "{spans:?}");
     assert!(encloses(spans[0].end, 4.0, NARROW), "{spans:?}");
+    // Within D = 0.5 from t = 1.5 to t = 4.5: one span, through the change of reason
+    // (within D of the bottom edge, inside, within D of the top edge).
+    let spans = at_rest(
+        10.0,
+        v(1.0, -2.0),
+        v(0.0, 1.0),
+        &square(2.0),
+        Relation::Near,
+        0.5,
+    );
+    assert_eq!(spans.len(), 1, "{spans:?}");
+    assert!(encloses(spans[0].start, 1.5, NARROW) && encloses(spans[0].end, 4.5, NARROW));
+    // breach_0.5: out of the fence until t = 2.5 and from t = 3.5 (1 from the edges).
+    let spans = at_rest(
+        10.0,
+        v(1.0, -2.0),
+        v(0.0, 1.0),
+        &square(2.0),
+        Relation::Breach,
+        0.5,
+    );
+    assert_eq!(spans.len(), 2, "{spans:?}");
+    assert_eq!(spans[0].start, End::at(0.0));
+    assert!(encloses(spans[0].end, 2.5, NARROW) && encloses(spans[1].start, 3.5, NARROW));
+    assert_eq!(spans[1].end, End::at(10.0));
     // Missing it by 0.5 to the east: nothing.
     let spans = at_rest(
         10.0,

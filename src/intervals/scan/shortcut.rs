@@ -140,16 +140,20 @@ impl Scan<'_> {
         }
         // A bracket joins its sides when both are decided alike and it is itself (as a
         // change of reason, from "within D" to "inside", or a crossing above the slab).
-        // The state found on the next sub-piece is the bracket's when neither has a
-        // contact; else it is unknown there.
+        // Without a contact on the bracket, the state found on a neighbouring sub-piece
+        // without one is the bracket's (no winding number changes between them).
         for s in (1..np - 1).step_by(2) {
             if class[s - 1] == class[s + 1] {
                 let (mid, half) = centre(at[s], at[s + 1]);
                 let (piece, _) = self.assess(mid, half, child, &over(s)[..k], false);
-                let state = if piece.touching || touched[s + 1] {
+                let state = if piece.touching {
                     State::Unknown
-                } else {
+                } else if !touched[s + 1] {
                     states[s + 1]
+                } else if !touched[s - 1] {
+                    states[s - 1]
+                } else {
+                    State::Unknown
                 };
                 if self.classify(&piece, state) == class[s + 1] {
                     class[s] = class[s + 1];

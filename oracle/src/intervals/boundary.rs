@@ -147,7 +147,12 @@ pub(crate) fn near_boundary<F: ExactField>(
             let Some(wi) = reach(sc, w, i, i) else {
                 continue;
             };
-            let s = sign_set(sc, &Lazy::new(sc, Kind::Vertex(i)), &wi, Ordering::Less);
+            let s = sign_set(
+                sc,
+                &Lazy::new(sc, Kind::Vertex(i), &wi),
+                &wi,
+                Ordering::Less,
+            );
             parts.extend(s.comps);
             if early && !parts.is_empty() {
                 return Set::union_of(sc, parts);
@@ -176,16 +181,16 @@ pub(crate) fn near_boundary<F: ExactField>(
 /// edge's line (paper A §II.C's quadratic in r has its minimum inside [0, 1] and
 /// below BUFF², as times).
 fn band<F: ExactField>(sc: &Scene<'_, F>, w: &Window, i: usize) -> Set {
-    let k = sign_set(sc, &Lazy::new(sc, Kind::Band(i)), w, Ordering::Less);
+    let k = sign_set(sc, &Lazy::new(sc, Kind::Band(i), w), w, Ordering::Less);
     if k.is_empty() {
         return k;
     }
-    let a = sign_set(sc, &Lazy::new(sc, Kind::Ahead(i)), w, Ordering::Greater);
+    let a = sign_set(sc, &Lazy::new(sc, Kind::Ahead(i), w), w, Ordering::Greater);
     let r = k.intersect(sc, &a);
     if r.is_empty() {
         return r;
     }
-    let b = sign_set(sc, &Lazy::new(sc, Kind::Behind(i)), w, Ordering::Greater);
+    let b = sign_set(sc, &Lazy::new(sc, Kind::Behind(i), w), w, Ordering::Greater);
     r.intersect(sc, &b)
 }
 
@@ -194,9 +199,9 @@ fn band<F: ExactField>(sc: &Scene<'_, F>, w: &Window, i: usize) -> Set {
 /// point slides along the edge's line (g ≡ 0), {h1 ≥ 0} ∩ {h2 ≥ 0}.
 /// (Paper A §II.C with BUFF = 0, the truth's contact test, as a set of times.)
 fn contacts<F: ExactField>(sc: &Scene<'_, F>, w: &Window, i: usize) -> Set {
-    let g = Lazy::new(sc, Kind::Cross(i));
-    let ahead = Lazy::new(sc, Kind::Ahead(i));
-    let behind = Lazy::new(sc, Kind::Behind(i));
+    let g = Lazy::new(sc, Kind::Cross(i), w);
+    let ahead = Lazy::new(sc, Kind::Ahead(i), w);
+    let behind = Lazy::new(sc, Kind::Behind(i), w);
     match roots_in(sc, &g, w) {
         None => {
             let a = sign_set(sc, &ahead, w, Ordering::Greater);
@@ -209,6 +214,7 @@ fn contacts<F: ExactField>(sc: &Scene<'_, F>, w: &Window, i: usize) -> Set {
             };
             let comps = roots
                 .into_iter()
+                .map(|(r, _)| r)
                 .filter(on)
                 .map(|r| (r.clone(), r))
                 .collect();
@@ -217,17 +223,29 @@ fn contacts<F: ExactField>(sc: &Scene<'_, F>, w: &Window, i: usize) -> Set {
     }
 }
 
-/// The winding number of P around the point at the sample time (not on the boundary):
-/// in floats when they certify it, else exactly. `None` if the point is on an edge.
+/// The winding number of P around the point at the sample time (not on the boundary),
+/// in the point's frame: the vertices relative to the point, q_i(τ) = (p_i − s) +
+/// τ·(v_i − v), winding around the origin (the differences are taken before the motion,
+/// so a polygon far from the origin loses no precision). In floats when they certify
+/// it, else exactly. `None` if the point is on an edge.
 /// (Paper A §II.D's ray crossings, exact and signed, at one time.)
 pub(crate) fn winding_at<F: ExactField>(sc: &Scene<'_, F>, at: &Sample) -> Option<i64> {
-    let (x, ps) = sc.fl.at(&at.iv);
-    let v2 = |c: [Iv; 2]| V2::new(c[0], c[1]);
-    let poly: Vec<V2<Iv>> = ps.into_iter().map(v2).collect();
-    if let Ok(w) = winding_number(&Intervals, &poly, &v2(x)) {
-        if w.is_some() {
-            return w;
-        }
+    let x = &sc.fl.x;
+    let poly: Vec<V2<Iv>> = sc
+        .fl
+        .p
+        .iter()
+        .map(|m| {
+            let c = |k: usize| {
+                let q0 = m.c0[k].sub(x.c0[k]);
+                let q1 = m.c1[k].sub(x.c1[k]);
+                q0.add(q1.mul(at.iv))
+            };
+            V2::new(c(0), c(1))
+        })
+        .collect();
+    if let Ok(Some(w)) = winding_number(&Intervals, &poly, &V2::new(Iv::ZERO, Iv::ZERO)) {
+        return Some(w);
     }
     let (x, ps) = sc.exact_at(at.exact());
     winding_number(&Exact, &ps, &x).decided()

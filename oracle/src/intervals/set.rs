@@ -23,28 +23,40 @@ use crate::kernel::interval::{
     enclose, enclose_poly, isolate_roots, narrow_alg, poly_eval, tighten_alg, Iv, RootPiece,
 };
 
-/// A polynomial of the scene: its float enclosure now, its exact form on demand.
+/// A polynomial of the scene: its float enclosure now, in s = t − origin (the start
+/// of the window it is worked on), its exact form in t on demand.
 #[derive(Debug)]
 pub(crate) struct Lazy {
     kind: Kind,
-    /// Enclosures of the coefficients of a positive multiple (lowest degree first).
+    /// Enclosures of the coefficients of a positive multiple, in s (lowest degree
+    /// first).
     pub fl: Vec<Iv>,
+    /// The origin of s, exactly and enclosed.
+    origin: BigRational,
+    origin_iv: Iv,
     exact: OnceCell<Poly>,
 }
 
 impl Lazy {
-    /// The polynomial `kind` of the scene.
-    pub fn new<F: ExactField>(sc: &Scene<'_, F>, kind: Kind) -> Rc<Self> {
+    /// The polynomial `kind` of the scene, to be worked on over the window w.
+    pub fn new<F: ExactField>(sc: &Scene<'_, F>, kind: Kind, w: &Window) -> Rc<Self> {
         Rc::new(Lazy {
             kind,
-            fl: sc.fl.poly(kind),
+            fl: sc.fl_poly(kind, w.lo_end.iv),
+            origin: w.lo.clone(),
+            origin_iv: w.lo_end.iv,
             exact: OnceCell::new(),
         })
     }
 
-    /// The exact polynomial (a positive multiple of the same one).
+    /// The exact polynomial in t (a positive multiple of the same one).
     pub fn exact<F: ExactField>(&self, sc: &Scene<'_, F>) -> &Poly {
         self.exact.get_or_init(|| sc.exact_poly(self.kind))
+    }
+
+    /// The float value at the time t (enclosed).
+    fn eval(&self, t: Iv) -> Iv {
+        poly_eval(&self.fl, t.sub(self.origin_iv))
     }
 }
 
@@ -53,8 +65,9 @@ impl Lazy {
 enum Value {
     /// Exactly.
     Known(RealAlg),
-    /// As the one root of `poly` in (at.lo, at.hi), certified in floats (negative at
-    /// at.lo when `rising`); the exact number is built on first use.
+    /// As the one root of `poly` at t = origin + s with s in (at.lo, at.hi), certified
+    /// in floats (negative at at.lo when `rising`); the exact number is built on first
+    /// use.
     Float {
         poly: Rc<Lazy>,
         at: Iv,
@@ -96,10 +109,10 @@ impl End {
         }
     }
 
-    /// The root of `poly` certified in floats in (at.lo, at.hi).
+    /// The root of `poly` certified in floats at s in (at.lo, at.hi).
     fn float(poly: &Rc<Lazy>, at: Iv, rising: bool) -> End {
         End {
-            iv: at,
+            iv: poly.origin_iv.add(at),
             value: Value::Float {
                 poly: Rc::clone(poly),
                 at,
@@ -123,8 +136,12 @@ impl End {
                 let p = poly.exact(sc).clone();
                 // A root bracket's ends are finite floats (isolate_roots works in a
                 // finite window only).
-                let lo = at.lo_exact().expect("a root bracket has finite ends");
-                let hi = at.hi_exact().expect("a root bracket has finite ends");
+                let lo = &poly.origin
+                    + at.lo_exact::<BigRational>()
+                        .expect("a root bracket has finite ends");
+                let hi = &poly.origin
+                    + at.hi_exact::<BigRational>()
+                        .expect("a root bracket has finite ends");
                 let s = if *rising {
                     Ordering::Less
                 } else {
@@ -266,7 +283,7 @@ pub(crate) fn sign_at_sample<F: ExactField>(
     poly: &Lazy,
     at: &Sample,
 ) -> Ordering {
-    match poly_eval(&poly.fl, at.iv).sign() {
+    match poly.eval(at.iv).sign() {
         Ok(s) => s,
         Err(_) => poly.exact(sc).sign_at(at.exact()),
     }
@@ -274,11 +291,15 @@ pub(crate) fn sign_at_sample<F: ExactField>(
 
 /// The exact sign of a scene polynomial at an end (floats first, over the enclosure).
 pub(crate) fn sign_at_end<F: ExactField>(sc: &Scene<'_, F>, poly: &Lazy, at: &End) -> Ordering {
-    match poly_eval(&poly.fl, at.iv).sign() {
+    match poly.eval(at.iv).sign() {
         Ok(s) => s,
         Err(_) => at.alg(sc).sign_of(poly.exact(sc)),
     }
 }
+
+/// A root of a scene polynomial, with the polynomial's sign just after it when floats
+/// certified it (the sign just before is the other one: a certified root is simple).
+pub(crate) type Root = (End, Option<Ordering>);
 
 /// The distinct roots of a scene polynomial in the closed window, increasing; `None`
 /// when the polynomial is identically 0. Roots certified in floats strictly inside the
@@ -288,18 +309,26 @@ pub(crate) fn roots_in<F: ExactField>(
     sc: &Scene<'_, F>,
     poly: &Rc<Lazy>,
     w: &Window,
-) -> Option<Vec<End>> {
+) -> Option<Vec<Root>> {
     let mut out = Vec::new();
-    for piece in isolate_roots(&poly.fl, w.iv()) {
+    // The window in s = t − w.lo (poly's origin is w.lo).
+    let width = w.hi_end.iv.sub(w.lo_end.iv);
+    let ws = Iv::ZERO.hull(Iv::point(width.hi));
+    for piece in isolate_roots(&poly.fl, ws) {
         match piece {
             RootPiece::Root { at, rising } => {
                 let e = End::float(poly, at, rising);
-                let inside = at.lo >= w.lo_end.iv.hi && at.hi <= w.hi_end.iv.lo;
+                let inside = at.lo >= 0.0 && at.hi <= width.lo;
                 if inside
                     || (cmp_end(sc, &e, &w.lo_end) != Ordering::Less
                         && cmp_end(sc, &e, &w.hi_end) != Ordering::Greater)
                 {
-                    out.push(e);
+                    let after = if rising {
+                        Ordering::Greater
+                    } else {
+                        Ordering::Less
+                    };
+                    out.push((e, Some(after)));
                 }
             }
             RootPiece::Unsure(at) => {
@@ -308,15 +337,15 @@ pub(crate) fn roots_in<F: ExactField>(
                     return None;
                 }
                 let lo = match at.lo_exact::<BigRational>() {
-                    Some(l) if l > w.lo => l,
+                    Some(l) if l > BigRational::zero() => &w.lo + l,
                     _ => w.lo.clone(),
                 };
                 let hi = match at.hi_exact::<BigRational>() {
-                    Some(h) if h < w.hi => h,
+                    Some(h) if &w.lo + &h < w.hi => &w.lo + h,
                     _ => w.hi.clone(),
                 };
                 if lo <= hi {
-                    out.extend(shifted_roots(p, &lo, &hi));
+                    out.extend(shifted_roots(p, &lo, &hi).into_iter().map(|e| (e, None)));
                 }
             }
         }
@@ -555,22 +584,30 @@ pub(crate) fn sign_set<F: ExactField>(
         return Set::all(w);
     };
     // The stretches between the window's ends and the roots, in order, each with its
-    // ends; a root at a window end leaves no stretch there.
+    // ends; a root at a window end leaves no stretch there. A stretch's sign is known
+    // from a float-certified root at either end, else taken at a sample.
     let mut pieces: Vec<(End, End, bool)> = Vec::with_capacity(2 * roots.len() + 1);
     let mut from = w.lo_end.clone();
-    for r in roots {
+    let mut after: Option<Ordering> = None;
+    for (r, r_after) in roots {
         if cmp_end(sc, &from, &r) == Ordering::Less {
-            let s = Sample::between(sc, &from, &r);
-            let keep = sign_at_sample(sc, poly, &s) == want;
-            pieces.push((from, r.clone(), keep));
+            let sign = match (after, r_after) {
+                (Some(s), _) => s,
+                (None, Some(s)) => s.reverse(),
+                (None, None) => sign_at_sample(sc, poly, &Sample::between(sc, &from, &r)),
+            };
+            pieces.push((from, r.clone(), sign == want));
         }
         pieces.push((r.clone(), r.clone(), true));
         from = r;
+        after = r_after;
     }
     if cmp_end(sc, &from, &w.hi_end) == Ordering::Less {
-        let s = Sample::between(sc, &from, &w.hi_end);
-        let keep = sign_at_sample(sc, poly, &s) == want;
-        pieces.push((from, w.hi_end.clone(), keep));
+        let sign = match after {
+            Some(s) => s,
+            None => sign_at_sample(sc, poly, &Sample::between(sc, &from, &w.hi_end)),
+        };
+        pieces.push((from, w.hi_end.clone(), sign == want));
     }
     // Runs of kept pieces are components (a kept stretch's ends are roots or window
     // ends, which belong to the closed set).

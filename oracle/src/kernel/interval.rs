@@ -817,29 +817,24 @@ impl Iv {
     }
 }
 
-/// The exponent k for which 2^k · max|x| over the enclosures lies in [1/2, 1) (0
-/// when they are all 0 or one is not finite): the exact scaling that keeps a
-/// computation's products inside the float range.
-pub fn balancing_exponent(xs: impl IntoIterator<Item = Iv>) -> i32 {
-    let mut m = 0.0f64;
-    for x in xs {
-        if !x.finite() {
-            return 0;
-        }
-        m = m.max(x.lo.abs()).max(x.hi.abs());
+/// The binary exponent e of an enclosure's magnitude, 2^(e−1) ≤ max|x| < 2^e
+/// (`None` for 0 or when an end is infinite): how the oracle scales a case into the
+/// float range without ever forming a product that could overflow.
+pub fn magnitude_exponent(x: Iv) -> Option<i32> {
+    if !x.finite() {
+        return None;
     }
-    if m == 0.0 || !m.is_finite() {
-        return 0;
+    let m = x.lo.abs().max(x.hi.abs());
+    if m == 0.0 {
+        return None;
     }
-    // m = f·2^e with f ∈ [1/2, 1): k = −e (a normal float's exponent field; the
-    // subnormals are first brought up by 2^64).
+    // A normal float's exponent field; the subnormals are first brought up by 2^64.
     let (m, extra) = if m < f64::MIN_POSITIVE {
         (m * 18446744073709551616.0, 64)
     } else {
         (m, 0)
     };
-    let e = ((m.to_bits() >> 52) & 0x7ff) as i32 - 1022;
-    extra - e
+    Some(((m.to_bits() >> 52) & 0x7ff) as i32 - 1022 - extra)
 }
 
 /// Σ c[k]·t^k by Horner's rule, enclosed (c lowest degree first).

@@ -77,6 +77,7 @@ pub(crate) fn point_edges<F: ExactField>(
 /// An outer float range of {t ∈ w : c0 + t·c1 ∈ band} (one coordinate moving linearly
 /// against a fixed band), `None` when certainly empty: the constraint solved for t in
 /// enclosures, each bound taken outward.
+/// (A cheap exclusion in front of paper A §II.C's quadratics.)
 fn clip(c0: Iv, c1: Iv, band: Iv, w: Iv) -> Option<Iv> {
     let (lo, hi) = (Iv::point(band.lo), Iv::point(band.hi));
     let (from, to) = match c1.sign() {
@@ -129,7 +130,7 @@ fn reach<F: ExactField>(sc: &Scene<'_, F>, w: &Window, i: usize, j: usize) -> Op
 
 /// B over the window: the times at which the point is within D of the boundary,
 /// a union of per-vertex and per-edge sets (see the module doc of
-/// [`crate::intervals`]). With `early`, it stops at the first nonempty part (enough to
+/// [`crate::intervals`](mod@crate::intervals)). With `early`, it stops at the first nonempty part (enough to
 /// know whether B is empty).
 /// (Paper A §II.C: near_edge's two tests, its end points and its quadratic, as sets of
 /// times; with D = 0 the contacts of the truth.)
@@ -254,7 +255,8 @@ pub(crate) fn winding_at<F: ExactField>(sc: &Scene<'_, F>, at: &Sample) -> Optio
 /// The horizontal relation over the window: B, and each gap of B whose winding number
 /// puts it in the relation (odd: inside; 0: outside); `Undefined` for an even, non-zero
 /// winding number or a degenerate edge (see [`point_edges`]).
-/// (The method of [`crate::intervals`], steps 1–3.)
+/// (The contract's inside / near_D / breach_D over a window, paper A §II: the method
+/// of [`crate::intervals`](mod@crate::intervals), steps 1–3.)
 pub(crate) fn horizontal<F: ExactField>(
     sc: &Scene<'_, F>,
     w: &Window,

@@ -49,6 +49,7 @@ pub(crate) enum Kind {
 
 impl Kind {
     /// The vertices the polynomial involves: (i, i + 1), or (i, i) for `Vertex(i)`.
+    /// (Paper A §II.C: an edge's two ends, or one vertex.)
     fn ends(self, n: usize) -> (usize, usize) {
         match self {
             Kind::Vertex(i) => (i, i),
@@ -100,6 +101,7 @@ impl Coef for BigInt {
 }
 
 /// a · b for coefficient lists (lowest degree first).
+/// (The products of paper A §II.C's quadratics.)
 fn pmul<C: Coef>(a: &[C], b: &[C]) -> Vec<C> {
     let mut c = vec![C::zero(); a.len() + b.len() - 1];
     for (i, x) in a.iter().enumerate() {
@@ -111,6 +113,7 @@ fn pmul<C: Coef>(a: &[C], b: &[C]) -> Vec<C> {
 }
 
 /// a − b for coefficient lists.
+/// (The products of paper A §II.C's quadratics.)
 fn psub<C: Coef>(a: &[C], b: &[C]) -> Vec<C> {
     (0..a.len().max(b.len()))
         .map(|k| {
@@ -121,6 +124,7 @@ fn psub<C: Coef>(a: &[C], b: &[C]) -> Vec<C> {
 }
 
 /// k · a for a coefficient list.
+/// (The products of paper A §II.C's quadratics.)
 fn pscale<C: Coef>(a: &[C], k: &C) -> Vec<C> {
     a.iter().map(|x| x.mul(k)).collect()
 }
@@ -136,6 +140,7 @@ pub(crate) struct Moving<C> {
 
 impl<C: Coef> Moving<C> {
     /// self − o.
+    /// (The products of paper A §II.C's quadratics.)
     fn minus(&self, o: &Self) -> Self {
         Moving {
             c0: [self.c0[0].sub(&o.c0[0]), self.c0[1].sub(&o.c0[1])],
@@ -144,6 +149,7 @@ impl<C: Coef> Moving<C> {
     }
 
     /// self · o as a polynomial in t (degree ≤ 2).
+    /// (The products of paper A §II.C's quadratics.)
     fn dot(&self, o: &Self) -> Vec<C> {
         let d = |a: &[C; 2], b: &[C; 2]| a[0].mul(&b[0]).add(&a[1].mul(&b[1]));
         vec![
@@ -154,6 +160,7 @@ impl<C: Coef> Moving<C> {
     }
 
     /// self × o as a polynomial in t (degree ≤ 2).
+    /// (The products of paper A §II.C's quadratics.)
     fn cross(&self, o: &Self) -> Vec<C> {
         let x = |a: &[C; 2], b: &[C; 2]| a[0].mul(&b[1]).sub(&a[1].mul(&b[0]));
         vec![
@@ -166,6 +173,7 @@ impl<C: Coef> Moving<C> {
 
 impl Moving<Iv> {
     /// The same motion with the clock started at τ (enclosed): c0 + τ·c1 and c1.
+    /// (Paper A §III's restart of a scene at a window's start.)
     fn restarted_at(&self, tau: Iv) -> Moving<Iv> {
         Moving {
             c0: [
@@ -216,6 +224,7 @@ pub(crate) struct Layout<C> {
 }
 
 /// The power of two a positive integer is, if it is one.
+/// (Making paper A §II–III's inputs integers.)
 fn power_of_two(x: &BigInt) -> Option<u64> {
     let k = x.trailing_zeros()?;
     (x.bits() == k + 1).then_some(k)
@@ -223,6 +232,7 @@ fn power_of_two(x: &BigInt) -> Option<u64> {
 
 /// lcm(a, b) of positive integers, by a comparison when both are powers of two (the
 /// denominators of binary floats).
+/// (Making paper A §II–III's inputs integers.)
 fn lcm(a: &BigInt, b: &BigInt) -> BigInt {
     match (power_of_two(a), power_of_two(b)) {
         (Some(x), Some(y)) => {
@@ -237,6 +247,7 @@ fn lcm(a: &BigInt, b: &BigInt) -> BigInt {
 }
 
 /// a / b for a positive b dividing a, by a shift when b is a power of two.
+/// (Making paper A §II–III's inputs integers.)
 fn quotient(a: &BigInt, b: &BigInt) -> BigInt {
     match power_of_two(b) {
         Some(k) => a >> k,
@@ -263,6 +274,7 @@ pub(crate) struct Scene<'a, F> {
 impl<'a, F: ExactField> Scene<'a, F> {
     /// The scene of s + t·v and P + t·V (n = |p| = |vels| vertices) at separation D,
     /// over the lookahead t (for the float scaling only).
+    /// (The contract's case: paper A §II–III's moving point and polygon.)
     pub fn new(
         t: &F,
         s: &'a V2<F>,
@@ -316,11 +328,13 @@ impl<'a, F: ExactField> Scene<'a, F> {
     }
 
     /// The number of vertices.
+    /// (The contract's case: paper A §II–III's moving point and polygon.)
     pub fn len(&self) -> usize {
         self.p.len()
     }
 
     /// Whether D = 0 (the contacts of the truth instead of bands).
+    /// (The contract's case: paper A §II–III's moving point and polygon.)
     pub fn d_is_zero(&self) -> bool {
         self.d.is_zero_()
     }
@@ -330,6 +344,7 @@ impl<'a, F: ExactField> Scene<'a, F> {
     /// t = 0 loses little to cancellation. A positive multiple of the true polynomial
     /// in s. (Where it still cannot settle a root, the exact polynomial is shifted
     /// exactly: `intervals::set`'s shifted roots.)
+    /// (Paper A §II.C/§II.I's polynomials, in floats.)
     pub fn fl_poly(&self, kind: Kind, tau: Iv) -> Vec<Iv> {
         let (i, j) = kind.ends(self.p.len());
         let fl = &self.fl;
@@ -346,6 +361,7 @@ impl<'a, F: ExactField> Scene<'a, F> {
     /// The inputs polynomial `kind` involves, made integers by their common
     /// denominator L: the point and vertices i and j (see [`Kind::ends`]) as integer
     /// motions, and (L·D)².
+    /// (Making paper A §II–III's inputs integers.)
     fn local(&self, kind: Kind) -> ([Moving<BigInt>; 3], BigRational) {
         let (i, j) = kind.ends(self.p.len());
         let big = |x: &F| x.to_big();
@@ -373,6 +389,7 @@ impl<'a, F: ExactField> Scene<'a, F> {
     }
 
     /// The exact polynomial `kind` in t (common powers of two divided out).
+    /// (Paper A §II.C/§II.I's polynomials, exactly.)
     pub fn exact_poly(&self, kind: Kind) -> Poly {
         let ([x, a, b], ld2) = self.local(kind);
         let c = poly_of(kind, &x, &a, &b, ld2.numer(), ld2.denom());
@@ -381,6 +398,7 @@ impl<'a, F: ExactField> Scene<'a, F> {
 
     /// The integer layout of the whole scene (built on first use): every horizontal
     /// length times the common denominator L of the inputs.
+    /// (Making paper A §II–III's inputs integers.)
     pub fn exact(&self) -> &Layout<BigInt> {
         self.exact.get_or_init(|| {
             let big = |x: &F| x.to_big();
@@ -413,6 +431,7 @@ impl<'a, F: ExactField> Scene<'a, F> {
 
     /// The exact point and vertices at the rational time τ = num/den, all times den·L
     /// (a positive factor: the same winding number).
+    /// (Paper A §II.D's crossings at one time, exactly.)
     pub fn exact_at(&self, tau: &BigRational) -> (V2<BigRational>, Vec<V2<BigRational>>) {
         let e = self.exact();
         let (num, den) = (tau.numer(), tau.denom());

@@ -39,6 +39,7 @@ pub(crate) struct Lazy {
 
 impl Lazy {
     /// The polynomial `kind` of the scene, to be worked on over the window w.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn new<F: ExactField>(sc: &Scene<'_, F>, kind: Kind, w: &Window) -> Rc<Self> {
         Rc::new(Lazy {
             kind,
@@ -50,11 +51,13 @@ impl Lazy {
     }
 
     /// The exact polynomial in t (a positive multiple of the same one).
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn exact<F: ExactField>(&self, sc: &Scene<'_, F>) -> &Poly {
         self.exact.get_or_init(|| sc.exact_poly(self.kind))
     }
 
     /// The float value at the time t (enclosed).
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     fn eval(&self, t: Iv) -> Iv {
         poly_eval(&self.fl, t.sub(self.origin_iv))
     }
@@ -89,6 +92,7 @@ pub(crate) struct End {
 
 impl End {
     /// The exact number x with an enclosure of it (a rational is enclosed anew).
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     fn with_enclosure(x: RealAlg, iv: Iv) -> End {
         if let Some(q) = x.as_rational() {
             return End::rational(q.clone());
@@ -101,6 +105,7 @@ impl End {
     }
 
     /// The rational x.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn rational(x: BigRational) -> End {
         End {
             iv: enclose(&x),
@@ -110,6 +115,7 @@ impl End {
     }
 
     /// The root of `poly` certified in floats at s in (at.lo, at.hi).
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     fn float(poly: &Rc<Lazy>, at: Iv, rising: bool) -> End {
         End {
             iv: poly.origin_iv.add(at),
@@ -124,6 +130,7 @@ impl End {
     }
 
     /// The exact value (built on first use).
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn alg<F: ExactField>(&self, sc: &Scene<'_, F>) -> &RealAlg {
         match &self.value {
             Value::Known(x) => x,
@@ -153,6 +160,7 @@ impl End {
     }
 
     /// The exact value, owned.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn into_alg<F: ExactField>(self, sc: &Scene<'_, F>) -> RealAlg {
         match self.value {
             Value::Known(x) => x,
@@ -161,6 +169,7 @@ impl End {
     }
 
     /// The exact value, its isolating interval narrowed below float resolution.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     fn narrowed<F: ExactField>(&self, sc: &Scene<'_, F>) -> &RealAlg {
         self.narrow.get_or_init(|| {
             let mut x = self.alg(sc).clone();
@@ -170,6 +179,7 @@ impl End {
     }
 
     /// Whether both are the same root of the same polynomial (then equal).
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     fn same_root(&self, o: &End) -> bool {
         match (&self.value, &o.value) {
             (Value::Float { poly: a, at: x, .. }, Value::Float { poly: b, at: y, .. }) => {
@@ -181,6 +191,7 @@ impl End {
 }
 
 /// The exact order of two ends: by their enclosures when they are apart, else exactly.
+/// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
 pub(crate) fn cmp_end<F: ExactField>(sc: &Scene<'_, F>, a: &End, b: &End) -> Ordering {
     if a.iv.hi < b.iv.lo {
         return Ordering::Less;
@@ -209,6 +220,7 @@ pub(crate) struct Window {
 
 impl Window {
     /// [lo, hi] (lo ≤ hi).
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn new(lo: BigRational, hi: BigRational) -> Self {
         Window {
             lo_end: End::rational(lo.clone()),
@@ -219,11 +231,13 @@ impl Window {
     }
 
     /// The float hull of the window.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn iv(&self) -> Iv {
         self.lo_end.iv.hull(self.hi_end.iv)
     }
 
     /// Whether the window is a single time.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn is_point(&self) -> bool {
         self.lo == self.hi
     }
@@ -240,6 +254,7 @@ pub(crate) struct Sample {
 
 impl Sample {
     /// The exact value.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn exact(&self) -> &BigRational {
         self.exact
             .get_or_init(|| self.iv.lo_exact().expect("a float sample is finite"))
@@ -247,6 +262,7 @@ impl Sample {
 
     /// A time strictly between the ends a < b: a float between their enclosures, or the
     /// midpoint of their isolating intervals refined apart.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn between<F: ExactField>(sc: &Scene<'_, F>, a: &End, b: &End) -> Sample {
         if let Some(m) = Iv::point_between(a.iv, b.iv) {
             return Sample {
@@ -264,11 +280,13 @@ impl Sample {
     }
 
     /// The time in decimal (9 digits, toward −∞), for messages.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn exact_text(&self) -> String {
         RealAlg::rational(self.exact().clone()).to_decimal_string(9)
     }
 
     /// The rational time m.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn rational(m: BigRational) -> Sample {
         Sample {
             iv: enclose(&m),
@@ -278,6 +296,7 @@ impl Sample {
 }
 
 /// The exact sign of a scene polynomial at a sample (floats first).
+/// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
 pub(crate) fn sign_at_sample<F: ExactField>(
     sc: &Scene<'_, F>,
     poly: &Lazy,
@@ -290,6 +309,7 @@ pub(crate) fn sign_at_sample<F: ExactField>(
 }
 
 /// The exact sign of a scene polynomial at an end (floats first, over the enclosure).
+/// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
 pub(crate) fn sign_at_end<F: ExactField>(sc: &Scene<'_, F>, poly: &Lazy, at: &End) -> Ordering {
     match poly.eval(at.iv).sign() {
         Ok(s) => s,
@@ -305,6 +325,7 @@ pub(crate) type Root = (End, Option<Ordering>);
 /// when the polynomial is identically 0. Roots certified in floats strictly inside the
 /// window cost no exact work; the rest (a root bracket over a window end, a stretch the
 /// floats could not settle) is done exactly.
+/// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
 pub(crate) fn roots_in<F: ExactField>(
     sc: &Scene<'_, F>,
     poly: &Rc<Lazy>,
@@ -363,6 +384,7 @@ const SHIFTS: u32 = 3;
 /// move gains about half the float precision around a near-double root), then in
 /// floats on p's squarefree part (where an exact double root is a simple one), and
 /// exactly (Sturm) where they still cannot tell.
+/// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
 fn shifted_roots(p: &Poly, lo: &BigRational, hi: &BigRational) -> Vec<End> {
     let mut out: Vec<(RealAlg, Iv)> = Vec::new();
     let mut stack = vec![(lo.clone(), hi.clone(), 0u32)];
@@ -409,6 +431,7 @@ fn shifted_roots(p: &Poly, lo: &BigRational, hi: &BigRational) -> Vec<End> {
 /// The roots of q in [lo, hi] isolated in floats after moving the origin to lo: each a
 /// root with its enclosure (`Ok`), or a stretch [l, h] ⊆ [lo, hi] that floats could
 /// not settle.
+/// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
 fn float_roots(
     q: &Poly,
     lo: &BigRational,
@@ -472,11 +495,13 @@ pub(crate) struct Set {
 
 impl Set {
     /// The empty set.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn empty() -> Set {
         Set { comps: Vec::new() }
     }
 
     /// The whole window.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn all(w: &Window) -> Set {
         Set {
             comps: vec![(w.lo_end.clone(), w.hi_end.clone())],
@@ -484,6 +509,7 @@ impl Set {
     }
 
     /// Whether it has no point.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn is_empty(&self) -> bool {
         self.comps.is_empty()
     }
@@ -491,6 +517,7 @@ impl Set {
     /// The union of closed intervals, in any order: sorted by start, and merged where
     /// one starts at or before the other's end (closed sets that touch are one
     /// component).
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn union_of<F: ExactField>(sc: &Scene<'_, F>, mut parts: Vec<(End, End)>) -> Set {
         parts.sort_by(|a, b| cmp_end(sc, &a.0, &b.0));
         let mut comps: Vec<(End, End)> = Vec::with_capacity(parts.len());
@@ -509,6 +536,7 @@ impl Set {
     }
 
     /// self ∩ o.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn intersect<F: ExactField>(&self, sc: &Scene<'_, F>, o: &Set) -> Set {
         let mut comps = Vec::new();
         let (mut i, mut j) = (0, 0);
@@ -536,6 +564,7 @@ impl Set {
     /// The stretches of the window outside the set, each with a time strictly inside it
     /// (or the window's one time): the relatively open gaps [w0, a1), (b_k, a_k+1),
     /// (b_m, w1] around the components.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn gaps<F: ExactField>(&self, sc: &Scene<'_, F>, w: &Window) -> Vec<(End, End, Sample)> {
         let mut out = Vec::new();
         let (Some(first), Some(last)) = (self.comps.first(), self.comps.last()) else {
@@ -566,6 +595,7 @@ impl Set {
 /// {t ∈ W : P(t) ≤ 0} (`want` Less) or {P(t) ≥ 0} (`want` Greater) for a scene
 /// polynomial P: its roots in W, and P's sign on each stretch between them taken at a
 /// sample (a root always belongs to the set; a stretch when P has the wanted sign).
+/// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
 pub(crate) fn sign_set<F: ExactField>(
     sc: &Scene<'_, F>,
     poly: &Rc<Lazy>,

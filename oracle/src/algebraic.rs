@@ -47,7 +47,7 @@ fn sign_of(x: &BigInt) -> Ordering {
 }
 
 impl Poly {
-    /// The polynomial Σ c[k]·t^k (trailing zeros dropped).
+    /// The polynomial Σ c_k·t^k (trailing zeros dropped).
     pub fn new(mut c: Vec<BigInt>) -> Self {
         while c.last().is_some_and(Zero::is_zero) {
             c.pop();
@@ -60,8 +60,9 @@ impl Poly {
         Poly { c: Vec::new() }
     }
 
-    /// The primitive integer polynomial that is a positive multiple of Σ c[k]·t^k with
+    /// The primitive integer polynomial that is a positive multiple of Σ c_k·t^k with
     /// rational coefficients (the denominators cleared, the content divided out).
+    /// (The ends of paper A §II.C's and §II.I's sets of times are roots of such polynomials.)
     pub fn from_rationals(c: &[BigRational]) -> Self {
         let den = c.iter().fold(BigInt::one(), |acc, x| acc.lcm(x.denom()));
         let ints = c.iter().map(|x| x.numer() * (&den / x.denom())).collect();
@@ -173,6 +174,7 @@ impl Poly {
     /// self divided by the largest power of two dividing every coefficient: a positive
     /// multiple found by shifts alone (inputs made of binary floats share large powers
     /// of two, and a full gcd of the coefficients costs far more).
+    /// (The ends of paper A §II.C's and §II.I's sets of times are roots of such polynomials.)
     pub fn without_common_twos(&self) -> Poly {
         let k = self
             .c
@@ -202,6 +204,7 @@ impl Poly {
     /// Pseudo-division by d ≠ 0: (q, r) with |lc(d)|^m · self = q·d + r and
     /// deg r < deg d; the factor is positive, so q and r are positive multiples of the
     /// quotient and the remainder over Q.
+    /// (The ends of paper A §II.C's and §II.I's sets of times are roots of such polynomials.)
     fn pseudo_div(&self, d: &Poly) -> (Poly, Poly) {
         let (Some(dd), Some(lc)) = (d.degree(), d.lead()) else {
             return (Poly::zero(), self.clone());
@@ -224,12 +227,14 @@ impl Poly {
 
     /// The remainder of self by d ≠ 0 over Q, as a primitive positive multiple (the
     /// Sturm sequence keeps its signs).
+    /// (The ends of paper A §II.C's and §II.I's sets of times are roots of such polynomials.)
     pub fn rem(&self, d: &Poly) -> Poly {
         self.pseudo_div(d).1.primitive()
     }
 
     /// self / d over Q when d divides self (a primitive positive multiple of the
     /// quotient), `None` otherwise or when d = 0.
+    /// (The ends of paper A §II.C's and §II.I's sets of times are roots of such polynomials.)
     pub fn div_exact(&self, d: &Poly) -> Option<Poly> {
         if d.is_zero() {
             return None;
@@ -240,6 +245,7 @@ impl Poly {
 
     /// The greatest common divisor over Q, primitive with a positive leading
     /// coefficient (0 when both are 0).
+    /// (The ends of paper A §II.C's and §II.I's sets of times are roots of such polynomials.)
     pub fn gcd(&self, o: &Poly) -> Poly {
         let (mut a, mut b) = (self.normalized(), o.normalized());
         while !b.is_zero() {
@@ -252,6 +258,7 @@ impl Poly {
 
     /// The squarefree part self / gcd(self, self′): the same roots, each simple
     /// (a primitive multiple; its sign may differ from self's).
+    /// (The ends of paper A §II.C's and §II.I's sets of times are roots of such polynomials.)
     pub fn squarefree(&self) -> Poly {
         if self.degree().unwrap_or(0) <= 1 {
             return self.primitive();
@@ -266,6 +273,7 @@ impl Poly {
     /// A positive multiple of self(x + s) as a polynomial in s (a Taylor shift by the
     /// rational x = a/b): b^n·self(a/b + s) = P̃(a + b·s) with P̃(y) = b^n·self(y/b), an
     /// integer polynomial shifted by the integer a, then scaled.
+    /// (The ends of paper A §II.C's and §II.I's sets of times are roots of such polynomials.)
     pub fn shifted(&self, x: &BigRational) -> Poly {
         let Some(n) = self.degree() else {
             return Poly::zero();
@@ -296,6 +304,7 @@ impl Poly {
     }
 
     /// The exact value at a rational x.
+    /// (The ends of paper A §II.C's and §II.I's sets of times are roots of such polynomials.)
     pub fn eval(&self, x: &BigRational) -> BigRational {
         self.c.iter().rev().fold(BigRational::zero(), |acc, c| {
             acc * x + BigRational::from_integer(c.clone())
@@ -304,6 +313,7 @@ impl Poly {
 
     /// The sign of self at a rational x = num/den, from the integer
     /// den^n · self(x) = Σ c_k · num^k · den^(n−k) (den > 0).
+    /// (The ends of paper A §II.C's and §II.I's sets of times are roots of such polynomials.)
     pub fn sign_at(&self, x: &BigRational) -> Ordering {
         let Some(n) = self.degree() else {
             return Ordering::Equal;
@@ -320,6 +330,7 @@ impl Poly {
 
     /// The Sturm sequence of a squarefree polynomial: p, p′, then the negated
     /// remainders (primitive positive multiples of them, which keep every sign).
+    /// (The ends of paper A §II.C's and §II.I's sets of times are roots of such polynomials.)
     pub fn sturm(&self) -> Sturm {
         let mut seq = vec![self.clone()];
         let d = self.derivative();
@@ -343,6 +354,7 @@ impl Poly {
     /// The distinct real roots of self (not the zero polynomial) in the closed interval
     /// [lo, hi], increasing: rational ones as rationals, the others with an isolating
     /// interval of self's squarefree part. Empty for the zero polynomial.
+    /// (The ends of paper A §II.C's and §II.I's sets of times are roots of such polynomials.)
     pub fn roots_in(&self, lo: &BigRational, hi: &BigRational) -> Vec<RealAlg> {
         let mut out = Vec::new();
         if self.is_zero() || lo > hi {
@@ -377,6 +389,7 @@ impl Poly {
 /// exact discriminant: none, a double root −b/2a, two rational roots when it is a
 /// perfect square, else one on each side of the vertex −b/2a, where p is monotone, so
 /// that a sign change between the window's end and the vertex isolates it.
+/// (The ends of paper A §II.C's and §II.I's sets of times are roots of such polynomials.)
 fn quadratic_roots_in(p: &Poly, lo: &BigRational, hi: &BigRational) -> Vec<RealAlg> {
     let (c, b, a) = (&p.c[0], &p.c[1], &p.c[2]);
     let disc = b * b - BigInt::from(4) * a * c;
@@ -424,6 +437,7 @@ fn quadratic_roots_in(p: &Poly, lo: &BigRational, hi: &BigRational) -> Vec<RealA
 
 /// The n roots of the squarefree sf in (a, b], isolated by bisection and appended in
 /// increasing order (Sturm counts on each half).
+/// (The ends of paper A §II.C's and §II.I's sets of times are roots of such polynomials.)
 fn isolate(
     sf: &Poly,
     st: &Sturm,
@@ -485,6 +499,7 @@ impl Sturm {
     }
 
     /// The number of distinct real roots in (a, b] (0 when a ≥ b): V(a) − V(b).
+    /// (The ends of paper A §II.C's and §II.I's sets of times are roots of such polynomials.)
     pub fn count(&self, a: &BigRational, b: &BigRational) -> usize {
         if a >= b {
             return 0;
@@ -493,6 +508,9 @@ impl Sturm {
     }
 }
 
+/// One term c·t^k of a polynomial's text, with its sign (" − " or " + " between
+/// terms, a leading "−" for the first). (How [`RealAlg::exact_text`] prints paper
+/// A §II.C/§II.I's polynomials.)
 fn fmt_coeff_term(out: &mut String, c: &BigInt, k: usize, first: bool) {
     let neg = c.is_negative();
     let a = c.abs();
@@ -563,6 +581,7 @@ struct Root {
 
 /// √n when the integer n ≥ 0 is a perfect square (squares have few residues modulo
 /// 64 and 63·65·11: most non-squares are rejected before the root is taken).
+/// (The ends of paper A §II.C's and §II.I's sets of times are roots of such polynomials.)
 fn exact_sqrt(n: &BigInt) -> Option<BigInt> {
     if n.is_negative() {
         return None;
@@ -596,6 +615,7 @@ impl RealAlg {
     /// The one root of p in (lo, hi), checked exactly: `None` unless p(lo) and p(hi)
     /// have opposite signs and p's squarefree part has exactly one root there. A root
     /// of a linear or quadratic p that is rational comes back as a rational.
+    /// (Paper A §II.C/§II.I: the exact ends of the sets of times.)
     pub fn isolated(p: &Poly, lo: BigRational, hi: BigRational) -> Option<Self> {
         let (sl, sh) = (p.sign_at(&lo), p.sign_at(&hi));
         if lo >= hi || sl == Ordering::Equal || sh == Ordering::Equal || sl == sh {
@@ -613,6 +633,7 @@ impl RealAlg {
     /// sign `lo_sign` (not Equal), p(hi) the opposite one, and that p has exactly one
     /// root there (then simple). A linear or quadratic p with a rational root gives the
     /// rational. (Debug builds check the claim.)
+    /// (Paper A §II.C/§II.I: the exact ends of the sets of times.)
     pub(crate) fn certified(p: Poly, lo: BigRational, hi: BigRational, lo_sign: Ordering) -> Self {
         debug_assert!(lo < hi && lo_sign != Ordering::Equal);
         debug_assert_eq!(p.sign_at(&lo), lo_sign);
@@ -640,6 +661,7 @@ impl RealAlg {
     }
 
     /// The distinct real roots of p in [lo, hi], increasing ([`Poly::roots_in`]).
+    /// (Paper A §II.C/§II.I: the exact ends of the sets of times.)
     pub fn roots_of(p: &Poly, lo: &BigRational, hi: &BigRational) -> Vec<RealAlg> {
         p.roots_in(lo, hi)
     }
@@ -686,6 +708,7 @@ impl RealAlg {
     /// Replace the isolating interval by a narrower one (lo′, hi′) ⊆ (lo, hi) that the
     /// caller has proved to hold the root (p(lo′) has the sign of p(lo), p(hi′) the
     /// other). No effect on a rational.
+    /// (Paper A §II.C/§II.I: the exact ends of the sets of times.)
     pub(crate) fn narrow_to(&mut self, lo: BigRational, hi: BigRational) {
         if let Repr::Root(r) = &mut self.0 {
             debug_assert!(r.lo <= lo && lo < hi && hi <= r.hi);
@@ -698,6 +721,7 @@ impl RealAlg {
 
     /// Halve the isolating interval (exact bisection); the number becomes a rational
     /// when the midpoint is the root.
+    /// (Paper A §II.C/§II.I: the exact ends of the sets of times.)
     pub fn refine(&mut self) {
         let Repr::Root(r) = &mut self.0 else {
             return;
@@ -711,6 +735,7 @@ impl RealAlg {
     }
 
     /// Refine until the isolating interval is no wider than `width` (> 0).
+    /// (Paper A §II.C/§II.I: the exact ends of the sets of times.)
     pub fn refine_to(&mut self, width: &BigRational) {
         if !width.is_positive() {
             return;
@@ -724,6 +749,7 @@ impl RealAlg {
     }
 
     /// The order of the number and a rational x, exactly.
+    /// (Paper A §II.C/§II.I: the exact ends of the sets of times.)
     pub fn cmp_rational(&self, x: &BigRational) -> Ordering {
         match &self.0 {
             Repr::Rational(a) => a.cmp(x),
@@ -747,6 +773,7 @@ impl RealAlg {
     /// The sign of f at the number, exactly: 0 when f and p share the root (their gcd
     /// changes sign on the interval), else the sign of f at the interval's upper end
     /// once the interval holds no root of f (Sturm count of f's squarefree part).
+    /// (Paper A §II.C/§II.I: the exact ends of the sets of times.)
     pub fn sign_of(&self, f: &Poly) -> Ordering {
         if f.is_zero() {
             return Ordering::Equal;
@@ -778,6 +805,7 @@ impl RealAlg {
     }
 
     /// The exact order of two real algebraic numbers.
+    /// (Paper A §II.C/§II.I: the exact ends of the sets of times.)
     fn cmp_alg(&self, o: &RealAlg) -> Ordering {
         let (a, b) = match (&self.0, &o.0) {
             (Repr::Rational(x), _) => return o.cmp_rational(x).reverse(),
@@ -823,6 +851,7 @@ impl RealAlg {
 
     /// The decimal expansion with `digits` digits after the point, rounded toward −∞
     /// (exact: no digit is ever wrong), as [`ExactTime::to_decimal_string`] prints.
+    /// (Paper A §II.C/§II.I: the exact ends of the sets of times.)
     pub fn to_decimal_string(&self, digits: usize) -> String {
         let scale = BigInt::from(10u32).pow(u32::try_from(digits).unwrap_or(u32::MAX));
         let sr = BigRational::from_integer(scale.clone());
@@ -853,6 +882,7 @@ impl RealAlg {
     /// The exact value as text: "p/q" for a rational (lowest terms, q ≥ 1, as
     /// [`ExactTime::exact_text`]), else "root of P in (lo, hi)" with P the squarefree
     /// polynomial in t and lo, hi rationals.
+    /// (Paper A §II.C/§II.I: the exact ends of the sets of times.)
     pub fn exact_text(&self) -> String {
         match &self.0 {
             Repr::Rational(x) => format!("{}/{}", x.numer(), x.denom()),
@@ -884,6 +914,7 @@ fn dyadic(n: BigInt, k: u64) -> BigRational {
 /// midpoint by shifts when both are dyadic, else the midpoint rounded down to a
 /// multiple of 2^−j ≤ (b − a)/4. Bisection points stay dyadic, so no gcd reduction is
 /// ever needed (it would dominate the cost).
+/// (Paper A §II.C/§II.I: the exact ends of the sets of times.)
 fn midpoint(a: &BigRational, b: &BigRational) -> BigRational {
     if let (Some(ka), Some(kb)) = (power_of_two(a.denom()), power_of_two(b.denom())) {
         let k = ka.max(kb);

@@ -1,7 +1,7 @@
 //! Keep-in exit detection, exactly: does the point breach the fence — leave the
 //! polygon, come within D of its boundary, or (3D) come within H of the slab's bottom
 //! or top — at some t ∈ [0, T]? (The contract's breach_D ≠ ∅ on [0, T], over paper A
-//! §II–III's cases; [`crate::intervals`] computes the whole set.)
+//! §II–III's cases; [`crate::intervals`](mod@crate::intervals) computes the whole set.)
 //!
 //! It stops at the first evidence: a time where the height is within H of the slab's
 //! ends (3D, rational windows of §III), a vertex or an edge the point comes within D of

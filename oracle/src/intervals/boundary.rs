@@ -77,6 +77,7 @@ pub(crate) fn point_edges<F: ExactField>(
 /// An outer float range of {t ∈ w : c0 + t·c1 ∈ band} (one coordinate moving linearly
 /// against a fixed band), `None` when certainly empty: the constraint solved for t in
 /// enclosures, each bound taken outward.
+/// (A cheap exclusion in front of paper A §II.C's quadratics.)
 fn clip(c0: Iv, c1: Iv, band: Iv, w: Iv) -> Option<Iv> {
     let (lo, hi) = (Iv::point(band.lo), Iv::point(band.hi));
     let (from, to) = match c1.sign() {
@@ -129,7 +130,7 @@ fn reach<F: ExactField>(sc: &Scene<'_, F>, w: &Window, i: usize, j: usize) -> Op
 
 /// B over the window: the times at which the point is within D of the boundary,
 /// a union of per-vertex and per-edge sets (see the module doc of
-/// [`crate::intervals`]). With `early`, it stops at the first nonempty part (enough to
+/// [`crate::intervals`](mod@crate::intervals)). With `early`, it stops at the first nonempty part (enough to
 /// know whether B is empty).
 /// (Paper A §II.C: near_edge's two tests, its end points and its quadratic, as sets of
 /// times; with D = 0 the contacts of the truth.)
@@ -147,7 +148,12 @@ pub(crate) fn near_boundary<F: ExactField>(
             let Some(wi) = reach(sc, w, i, i) else {
                 continue;
             };
-            let s = sign_set(sc, &Lazy::new(sc, Kind::Vertex(i)), &wi, Ordering::Less);
+            let s = sign_set(
+                sc,
+                &Lazy::new(sc, Kind::Vertex(i), &wi),
+                &wi,
+                Ordering::Less,
+            );
             parts.extend(s.comps);
             if early && !parts.is_empty() {
                 return Set::union_of(sc, parts);
@@ -176,16 +182,16 @@ pub(crate) fn near_boundary<F: ExactField>(
 /// edge's line (paper A §II.C's quadratic in r has its minimum inside [0, 1] and
 /// below BUFF², as times).
 fn band<F: ExactField>(sc: &Scene<'_, F>, w: &Window, i: usize) -> Set {
-    let k = sign_set(sc, &Lazy::new(sc, Kind::Band(i)), w, Ordering::Less);
+    let k = sign_set(sc, &Lazy::new(sc, Kind::Band(i), w), w, Ordering::Less);
     if k.is_empty() {
         return k;
     }
-    let a = sign_set(sc, &Lazy::new(sc, Kind::Ahead(i)), w, Ordering::Greater);
+    let a = sign_set(sc, &Lazy::new(sc, Kind::Ahead(i), w), w, Ordering::Greater);
     let r = k.intersect(sc, &a);
     if r.is_empty() {
         return r;
     }
-    let b = sign_set(sc, &Lazy::new(sc, Kind::Behind(i)), w, Ordering::Greater);
+    let b = sign_set(sc, &Lazy::new(sc, Kind::Behind(i), w), w, Ordering::Greater);
     r.intersect(sc, &b)
 }
 
@@ -194,9 +200,9 @@ fn band<F: ExactField>(sc: &Scene<'_, F>, w: &Window, i: usize) -> Set {
 /// point slides along the edge's line (g ≡ 0), {h1 ≥ 0} ∩ {h2 ≥ 0}.
 /// (Paper A §II.C with BUFF = 0, the truth's contact test, as a set of times.)
 fn contacts<F: ExactField>(sc: &Scene<'_, F>, w: &Window, i: usize) -> Set {
-    let g = Lazy::new(sc, Kind::Cross(i));
-    let ahead = Lazy::new(sc, Kind::Ahead(i));
-    let behind = Lazy::new(sc, Kind::Behind(i));
+    let g = Lazy::new(sc, Kind::Cross(i), w);
+    let ahead = Lazy::new(sc, Kind::Ahead(i), w);
+    let behind = Lazy::new(sc, Kind::Behind(i), w);
     match roots_in(sc, &g, w) {
         None => {
             let a = sign_set(sc, &ahead, w, Ordering::Greater);
@@ -209,6 +215,7 @@ fn contacts<F: ExactField>(sc: &Scene<'_, F>, w: &Window, i: usize) -> Set {
             };
             let comps = roots
                 .into_iter()
+                .map(|(r, _)| r)
                 .filter(on)
                 .map(|r| (r.clone(), r))
                 .collect();
@@ -217,17 +224,29 @@ fn contacts<F: ExactField>(sc: &Scene<'_, F>, w: &Window, i: usize) -> Set {
     }
 }
 
-/// The winding number of P around the point at the sample time (not on the boundary):
-/// in floats when they certify it, else exactly. `None` if the point is on an edge.
+/// The winding number of P around the point at the sample time (not on the boundary),
+/// in the point's frame: the vertices relative to the point, q_i(τ) = (p_i − s) +
+/// τ·(v_i − v), winding around the origin (the differences are taken before the motion,
+/// so a polygon far from the origin loses no precision). In floats when they certify
+/// it, else exactly. `None` if the point is on an edge.
 /// (Paper A §II.D's ray crossings, exact and signed, at one time.)
 pub(crate) fn winding_at<F: ExactField>(sc: &Scene<'_, F>, at: &Sample) -> Option<i64> {
-    let (x, ps) = sc.fl.at(&at.iv);
-    let v2 = |c: [Iv; 2]| V2::new(c[0], c[1]);
-    let poly: Vec<V2<Iv>> = ps.into_iter().map(v2).collect();
-    if let Ok(w) = winding_number(&Intervals, &poly, &v2(x)) {
-        if w.is_some() {
-            return w;
-        }
+    let x = &sc.fl.x;
+    let poly: Vec<V2<Iv>> = sc
+        .fl
+        .p
+        .iter()
+        .map(|m| {
+            let c = |k: usize| {
+                let q0 = m.c0[k].sub(x.c0[k]);
+                let q1 = m.c1[k].sub(x.c1[k]);
+                q0.add(q1.mul(at.iv))
+            };
+            V2::new(c(0), c(1))
+        })
+        .collect();
+    if let Ok(Some(w)) = winding_number(&Intervals, &poly, &V2::new(Iv::ZERO, Iv::ZERO)) {
+        return Some(w);
     }
     let (x, ps) = sc.exact_at(at.exact());
     winding_number(&Exact, &ps, &x).decided()
@@ -236,7 +255,8 @@ pub(crate) fn winding_at<F: ExactField>(sc: &Scene<'_, F>, at: &Sample) -> Optio
 /// The horizontal relation over the window: B, and each gap of B whose winding number
 /// puts it in the relation (odd: inside; 0: outside); `Undefined` for an even, non-zero
 /// winding number or a degenerate edge (see [`point_edges`]).
-/// (The method of [`crate::intervals`], steps 1–3.)
+/// (The contract's inside / near_D / breach_D over a window, paper A §II: the method
+/// of [`crate::intervals`](mod@crate::intervals), steps 1–3.)
 pub(crate) fn horizontal<F: ExactField>(
     sc: &Scene<'_, F>,
     w: &Window,

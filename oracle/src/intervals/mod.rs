@@ -15,7 +15,7 @@
 //! - fence_D(t): x(t) in P(t) at distance > D from its boundary ∂P(t), and in 3D
 //!   bottom(t) + H < z(t) < top(t) − H; breach_D(t) := not fence_D(t).
 //!
-//! "In the closed polygon" is as in the truth ([`crate::truth`]): on an edge, or of
+//! "In the closed polygon" is as in the truth ([`crate::truth`](mod@crate::truth)): on an edge, or of
 //! non-zero winding number; where the winding number is even and non-zero (a polygon
 //! that is not simple) the relation depends on the fill rule and the answer is
 //! [`Undefined`], as it is when an edge shrinks to a point during the window.
@@ -98,6 +98,7 @@ pub enum Relation {
 
 impl Relation {
     /// "inside", "near" or "breach".
+    /// (The contract's relations.)
     pub fn name(self) -> &'static str {
         match self {
             Relation::Inside => "inside",
@@ -118,6 +119,7 @@ pub struct Separation<F> {
 
 impl<F: ExactField> Separation<F> {
     /// D = H = 0.
+    /// (The contract's separations.)
     pub fn none() -> Self {
         Separation {
             d: F::zero(),
@@ -135,6 +137,7 @@ pub struct Undefined {
 }
 
 impl fmt::Display for Undefined {
+    /// The reason. (The contract's undefined cases.)
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(&self.reason)
     }
@@ -212,6 +215,7 @@ pub(crate) fn heights_of<F: ExactField>(z: &Heights<F>) -> [(BigRational, BigRat
 }
 
 /// The set of times of `relation` in the scene (see the module doc, steps 1–4).
+/// (The contract's inside / near_D / breach_D, paper A §II–III.)
 fn set_of<F: ExactField>(
     sc: &Scene<'_, F>,
     t: &BigRational,

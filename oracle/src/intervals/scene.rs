@@ -12,11 +12,14 @@
 //! - `Band(i)`: g² − D²·|e|², within D of the edge's line (degree ≤ 4; ≤ 2 when the
 //!   edge does not warp, for then e is constant and g linear).
 //!
-//! The exact polynomials are in integers: every length is multiplied by the common
-//! denominator L of the horizontal inputs, and D² = num/den after the same scaling,
-//! so `Vertex` is den·|q|² − num and `Band` den·g² − num·|e|², positive multiples of the
-//! true ones (the same roots and signs). The float ones are enclosures of the true
-//! ones with every length scaled by a power of two (again a positive multiple).
+//! The exact polynomials are in integers, in t: the inputs a polynomial involves (the
+//! point, one or two vertices, D) are multiplied by their common denominator L, and
+//! D² = num/den after the same scaling, so `Vertex` is den·|q|² − num and `Band`
+//! den·g² − num·|e|², positive multiples of the true ones (the same roots and signs).
+//! The float ones are enclosures of the true ones in s = t − τ for the start τ of the
+//! window they are worked on, every length scaled by a power of two (again a positive
+//! multiple): restarting the motions at τ before the products keeps a window far from
+//! t = 0 clear of most cancellation between large terms.
 
 use core::cell::OnceCell;
 
@@ -27,7 +30,7 @@ use num_traits::{One, Zero};
 
 use crate::algebraic::Poly;
 use crate::field::{ExactField, V2};
-use crate::kernel::interval::{balancing_exponent, enclose, Iv};
+use crate::kernel::interval::{enclose, magnitude_exponent, Iv};
 
 /// Which polynomial of the scene (see the module doc).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -42,6 +45,17 @@ pub(crate) enum Kind {
     Behind(usize),
     /// g² − D²·|p_{i+1} − p_i|².
     Band(usize),
+}
+
+impl Kind {
+    /// The vertices the polynomial involves: (i, i + 1), or (i, i) for `Vertex(i)`.
+    /// (Paper A §II.C: an edge's two ends, or one vertex.)
+    fn ends(self, n: usize) -> (usize, usize) {
+        match self {
+            Kind::Vertex(i) => (i, i),
+            Kind::Cross(i) | Kind::Ahead(i) | Kind::Behind(i) | Kind::Band(i) => (i, (i + 1) % n),
+        }
+    }
 }
 
 /// The ring operations the polynomials are written with (float enclosures or integers).
@@ -87,6 +101,7 @@ impl Coef for BigInt {
 }
 
 /// a · b for coefficient lists (lowest degree first).
+/// (The products of paper A §II.C's quadratics.)
 fn pmul<C: Coef>(a: &[C], b: &[C]) -> Vec<C> {
     let mut c = vec![C::zero(); a.len() + b.len() - 1];
     for (i, x) in a.iter().enumerate() {
@@ -98,6 +113,7 @@ fn pmul<C: Coef>(a: &[C], b: &[C]) -> Vec<C> {
 }
 
 /// a − b for coefficient lists.
+/// (The products of paper A §II.C's quadratics.)
 fn psub<C: Coef>(a: &[C], b: &[C]) -> Vec<C> {
     (0..a.len().max(b.len()))
         .map(|k| {
@@ -108,6 +124,7 @@ fn psub<C: Coef>(a: &[C], b: &[C]) -> Vec<C> {
 }
 
 /// k · a for a coefficient list.
+/// (The products of paper A §II.C's quadratics.)
 fn pscale<C: Coef>(a: &[C], k: &C) -> Vec<C> {
     a.iter().map(|x| x.mul(k)).collect()
 }
@@ -123,6 +140,7 @@ pub(crate) struct Moving<C> {
 
 impl<C: Coef> Moving<C> {
     /// self − o.
+    /// (The products of paper A §II.C's quadratics.)
     fn minus(&self, o: &Self) -> Self {
         Moving {
             c0: [self.c0[0].sub(&o.c0[0]), self.c0[1].sub(&o.c0[1])],
@@ -131,6 +149,7 @@ impl<C: Coef> Moving<C> {
     }
 
     /// self · o as a polynomial in t (degree ≤ 2).
+    /// (The products of paper A §II.C's quadratics.)
     fn dot(&self, o: &Self) -> Vec<C> {
         let d = |a: &[C; 2], b: &[C; 2]| a[0].mul(&b[0]).add(&a[1].mul(&b[1]));
         vec![
@@ -141,6 +160,7 @@ impl<C: Coef> Moving<C> {
     }
 
     /// self × o as a polynomial in t (degree ≤ 2).
+    /// (The products of paper A §II.C's quadratics.)
     fn cross(&self, o: &Self) -> Vec<C> {
         let x = |a: &[C; 2], b: &[C; 2]| a[0].mul(&b[1]).sub(&a[1].mul(&b[0]));
         vec![
@@ -151,76 +171,60 @@ impl<C: Coef> Moving<C> {
     }
 }
 
-/// A scene in one coefficient type: the point, the vertices, D² = num/den.
+impl Moving<Iv> {
+    /// The same motion with the clock started at τ (enclosed): c0 + τ·c1 and c1.
+    /// (Paper A §III's restart of a scene at a window's start.)
+    fn restarted_at(&self, tau: Iv) -> Moving<Iv> {
+        Moving {
+            c0: [
+                self.c0[0].add(tau.mul(self.c1[0])),
+                self.c0[1].add(tau.mul(self.c1[1])),
+            ],
+            c1: self.c1,
+        }
+    }
+}
+
+/// The polynomial `kind` (see the module doc) of the point x and the vertices a, b
+/// (b = a for `Vertex`), with D² = d2_num / d2_den, lowest degree first.
+/// (Paper A §II.C's quadratics for a moving point and edge, §II.I's warping edge.)
+fn poly_of<C: Coef>(
+    kind: Kind,
+    x: &Moving<C>,
+    a: &Moving<C>,
+    b: &Moving<C>,
+    d2_num: &C,
+    d2_den: &C,
+) -> Vec<C> {
+    let q = x.minus(a);
+    let e = b.minus(a);
+    match kind {
+        Kind::Vertex(_) => {
+            let mut r = pscale(&q.dot(&q), d2_den);
+            r[0] = r[0].sub(d2_num);
+            r
+        }
+        Kind::Cross(_) => q.cross(&e),
+        Kind::Ahead(_) => q.dot(&e),
+        Kind::Behind(_) => e.minus(&q).dot(&e),
+        Kind::Band(_) => {
+            let g = q.cross(&e);
+            psub(&pscale(&pmul(&g, &g), d2_den), &pscale(&e.dot(&e), d2_num))
+        }
+    }
+}
+
+/// A scene in one coefficient type: the point and the vertices.
 #[derive(Clone, Debug)]
 pub(crate) struct Layout<C> {
     /// The point, s + t·v.
     pub x: Moving<C>,
     /// The vertices, p_i + t·v_i.
     pub p: Vec<Moving<C>>,
-    /// D² = d2_num / d2_den (d2_den > 0).
-    pub d2_num: C,
-    /// See `d2_num`.
-    pub d2_den: C,
 }
-
-impl<C: Coef> Layout<C> {
-    /// The polynomial `kind` (see the module doc), lowest degree first.
-    /// (Paper A §II.C's quadratics for a moving point and edge, §II.I's warping edge.)
-    pub fn poly(&self, kind: Kind) -> Vec<C> {
-        let n = self.p.len();
-        let edge = |i: usize| {
-            (
-                self.x.minus(&self.p[i]),
-                self.p[(i + 1) % n].minus(&self.p[i]),
-            )
-        };
-        match kind {
-            Kind::Vertex(i) => {
-                let q = self.x.minus(&self.p[i]);
-                let mut r = pscale(&q.dot(&q), &self.d2_den);
-                r[0] = r[0].sub(&self.d2_num);
-                r
-            }
-            Kind::Cross(i) => {
-                let (q, e) = edge(i);
-                q.cross(&e)
-            }
-            Kind::Ahead(i) => {
-                let (q, e) = edge(i);
-                q.dot(&e)
-            }
-            Kind::Behind(i) => {
-                let (q, e) = edge(i);
-                e.minus(&q).dot(&e)
-            }
-            Kind::Band(i) => {
-                let (q, e) = edge(i);
-                let g = q.cross(&e);
-                psub(
-                    &pscale(&pmul(&g, &g), &self.d2_den),
-                    &pscale(&e.dot(&e), &self.d2_num),
-                )
-            }
-        }
-    }
-
-    /// Where the point and the vertices are at time τ (a coefficient).
-    pub fn at(&self, tau: &C) -> (V2Of<C>, Vec<V2Of<C>>) {
-        let pos = |m: &Moving<C>| {
-            [
-                m.c0[0].add(&m.c1[0].mul(tau)),
-                m.c0[1].add(&m.c1[1].mul(tau)),
-            ]
-        };
-        (pos(&self.x), self.p.iter().map(pos).collect())
-    }
-}
-
-/// A position as two coefficients.
-pub(crate) type V2Of<C> = [C; 2];
 
 /// The power of two a positive integer is, if it is one.
+/// (Making paper A §II–III's inputs integers.)
 fn power_of_two(x: &BigInt) -> Option<u64> {
     let k = x.trailing_zeros()?;
     (x.bits() == k + 1).then_some(k)
@@ -228,6 +232,7 @@ fn power_of_two(x: &BigInt) -> Option<u64> {
 
 /// lcm(a, b) of positive integers, by a comparison when both are powers of two (the
 /// denominators of binary floats).
+/// (Making paper A §II–III's inputs integers.)
 fn lcm(a: &BigInt, b: &BigInt) -> BigInt {
     match (power_of_two(a), power_of_two(b)) {
         (Some(x), Some(y)) => {
@@ -242,6 +247,7 @@ fn lcm(a: &BigInt, b: &BigInt) -> BigInt {
 }
 
 /// a / b for a positive b dividing a, by a shift when b is a power of two.
+/// (Making paper A §II–III's inputs integers.)
 fn quotient(a: &BigInt, b: &BigInt) -> BigInt {
     match power_of_two(b) {
         Some(k) => a >> k,
@@ -258,7 +264,9 @@ pub(crate) struct Scene<'a, F> {
     d: &'a F,
     /// Enclosures of the true scene, every length times 2^k.
     pub fl: Layout<Iv>,
-    /// D, times the same 2^k.
+    /// D², times 2^2k.
+    d2_fl: Iv,
+    /// D, times 2^k.
     pub d_fl: Iv,
     exact: OnceCell<Layout<BigInt>>,
 }
@@ -266,6 +274,7 @@ pub(crate) struct Scene<'a, F> {
 impl<'a, F: ExactField> Scene<'a, F> {
     /// The scene of s + t·v and P + t·V (n = |p| = |vels| vertices) at separation D,
     /// over the lookahead t (for the float scaling only).
+    /// (The contract's case: paper A §II–III's moving point and polygon.)
     pub fn new(
         t: &F,
         s: &'a V2<F>,
@@ -274,20 +283,27 @@ impl<'a, F: ExactField> Scene<'a, F> {
         vels: &'a [V2<F>],
         d: &'a F,
     ) -> Self {
-        let tt = enclose(t);
         let e2 = |a: &V2<F>| [enclose(&a.x), enclose(&a.y)];
         let (s_iv, v_iv) = (e2(s), e2(v));
         let p_iv: Vec<[Iv; 2]> = p.iter().map(e2).collect();
         let w_iv: Vec<[Iv; 2]> = vels.iter().map(e2).collect();
         let d_iv = enclose(d);
-        let mags = s_iv
+        // Lengths times 2^k with k the negated largest exponent among the positions,
+        // the distances moved over T (the exponent of T plus that of a speed) and D:
+        // exponents, so that no product can overflow on the way.
+        let et = magnitude_exponent(enclose(t)).unwrap_or(0);
+        let k = -s_iv
             .iter()
-            .copied()
-            .chain(v_iv.iter().map(|&c| Iv::mul(c, tt)))
-            .chain(p_iv.iter().flatten().copied())
-            .chain(w_iv.iter().flatten().map(|&c| Iv::mul(c, tt)))
-            .chain([d_iv]);
-        let k = balancing_exponent(mags);
+            .chain(p_iv.iter().flatten())
+            .filter_map(|&x| magnitude_exponent(x))
+            .chain(
+                v_iv.iter()
+                    .chain(w_iv.iter().flatten())
+                    .filter_map(|&x| magnitude_exponent(x).map(|m| m + et)),
+            )
+            .chain(magnitude_exponent(d_iv))
+            .max()
+            .unwrap_or(0);
         let sc = |a: [Iv; 2]| [a[0].scaled_pow2(k), a[1].scaled_pow2(k)];
         let mv = |a: [Iv; 2], b: [Iv; 2]| Moving {
             c0: sc(a),
@@ -297,8 +313,6 @@ impl<'a, F: ExactField> Scene<'a, F> {
         let fl = Layout {
             x: mv(s_iv, v_iv),
             p: p_iv.into_iter().zip(w_iv).map(|(a, b)| mv(a, b)).collect(),
-            d2_num: ds.sq(),
-            d2_den: Iv::ONE,
         };
         Scene {
             s,
@@ -307,23 +321,84 @@ impl<'a, F: ExactField> Scene<'a, F> {
             vels,
             d,
             fl,
+            d2_fl: ds.sq(),
             d_fl: ds,
             exact: OnceCell::new(),
         }
     }
 
     /// The number of vertices.
+    /// (The contract's case: paper A §II–III's moving point and polygon.)
     pub fn len(&self) -> usize {
         self.p.len()
     }
 
     /// Whether D = 0 (the contacts of the truth instead of bands).
+    /// (The contract's case: paper A §II–III's moving point and polygon.)
     pub fn d_is_zero(&self) -> bool {
         self.d.is_zero_()
     }
 
-    /// The integer layout (built on first use): every horizontal length times the
-    /// common denominator L of the inputs, D² = (L·D)² as num/den.
+    /// The float polynomial `kind` in s = t − τ (τ enclosed by `tau`): the motions
+    /// restarted at τ in enclosures before the products, so that a window far from
+    /// t = 0 loses little to cancellation. A positive multiple of the true polynomial
+    /// in s. (Where it still cannot settle a root, the exact polynomial is shifted
+    /// exactly: `intervals::set`'s shifted roots.)
+    /// (Paper A §II.C/§II.I's polynomials, in floats.)
+    pub fn fl_poly(&self, kind: Kind, tau: Iv) -> Vec<Iv> {
+        let (i, j) = kind.ends(self.p.len());
+        let fl = &self.fl;
+        poly_of(
+            kind,
+            &fl.x.restarted_at(tau),
+            &fl.p[i].restarted_at(tau),
+            &fl.p[j].restarted_at(tau),
+            &self.d2_fl,
+            &Iv::ONE,
+        )
+    }
+
+    /// The inputs polynomial `kind` involves, made integers by their common
+    /// denominator L: the point and vertices i and j (see [`Kind::ends`]) as integer
+    /// motions, and (L·D)².
+    /// (Making paper A §II–III's inputs integers.)
+    fn local(&self, kind: Kind) -> ([Moving<BigInt>; 3], BigRational) {
+        let (i, j) = kind.ends(self.p.len());
+        let big = |x: &F| x.to_big();
+        let all: Vec<BigRational> = [
+            self.s,
+            self.v,
+            &self.p[i],
+            &self.vels[i],
+            &self.p[j],
+            &self.vels[j],
+        ]
+        .into_iter()
+        .flat_map(|a| [big(&a.x), big(&a.y)])
+        .collect();
+        let l = all
+            .iter()
+            .fold(BigInt::one(), |acc, x| lcm(&acc, x.denom()));
+        let int = |x: &BigRational| x.numer() * quotient(&l, x.denom());
+        let mv = |k: usize| Moving {
+            c0: [int(&all[4 * k]), int(&all[4 * k + 1])],
+            c1: [int(&all[4 * k + 2]), int(&all[4 * k + 3])],
+        };
+        let ld = big(self.d) * BigRational::from_integer(l.clone());
+        ([mv(0), mv(1), mv(2)], &ld * &ld)
+    }
+
+    /// The exact polynomial `kind` in t (common powers of two divided out).
+    /// (Paper A §II.C/§II.I's polynomials, exactly.)
+    pub fn exact_poly(&self, kind: Kind) -> Poly {
+        let ([x, a, b], ld2) = self.local(kind);
+        let c = poly_of(kind, &x, &a, &b, ld2.numer(), ld2.denom());
+        Poly::new(c).without_common_twos()
+    }
+
+    /// The integer layout of the whole scene (built on first use): every horizontal
+    /// length times the common denominator L of the inputs.
+    /// (Making paper A §II–III's inputs integers.)
     pub fn exact(&self) -> &Layout<BigInt> {
         self.exact.get_or_init(|| {
             let big = |x: &F| x.to_big();
@@ -339,8 +414,6 @@ impl<'a, F: ExactField> Scene<'a, F> {
             let int = |x: &BigRational| x.numer() * quotient(&l, x.denom());
             let at = |i: usize| [int(&all[2 * i]), int(&all[2 * i + 1])];
             let n = self.p.len();
-            let ld = big(self.d) * BigRational::from_integer(l.clone());
-            let ld2 = &ld * &ld;
             Layout {
                 x: Moving {
                     c0: at(0),
@@ -352,19 +425,13 @@ impl<'a, F: ExactField> Scene<'a, F> {
                         c1: at(2 + n + i),
                     })
                     .collect(),
-                d2_num: ld2.numer().clone(),
-                d2_den: ld2.denom().clone(),
             }
         })
     }
 
-    /// The exact polynomial `kind` (common powers of two divided out).
-    pub fn exact_poly(&self, kind: Kind) -> Poly {
-        Poly::new(self.exact().poly(kind)).without_common_twos()
-    }
-
     /// The exact point and vertices at the rational time τ = num/den, all times den·L
     /// (a positive factor: the same winding number).
+    /// (Paper A §II.D's crossings at one time, exactly.)
     pub fn exact_at(&self, tau: &BigRational) -> (V2<BigRational>, Vec<V2<BigRational>>) {
         let e = self.exact();
         let (num, den) = (tau.numer(), tau.denom());

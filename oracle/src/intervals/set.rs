@@ -23,28 +23,43 @@ use crate::kernel::interval::{
     enclose, enclose_poly, isolate_roots, narrow_alg, poly_eval, tighten_alg, Iv, RootPiece,
 };
 
-/// A polynomial of the scene: its float enclosure now, its exact form on demand.
+/// A polynomial of the scene: its float enclosure now, in s = t − origin (the start
+/// of the window it is worked on), its exact form in t on demand.
 #[derive(Debug)]
 pub(crate) struct Lazy {
     kind: Kind,
-    /// Enclosures of the coefficients of a positive multiple (lowest degree first).
+    /// Enclosures of the coefficients of a positive multiple, in s (lowest degree
+    /// first).
     pub fl: Vec<Iv>,
+    /// The origin of s, exactly and enclosed.
+    origin: BigRational,
+    origin_iv: Iv,
     exact: OnceCell<Poly>,
 }
 
 impl Lazy {
-    /// The polynomial `kind` of the scene.
-    pub fn new<F: ExactField>(sc: &Scene<'_, F>, kind: Kind) -> Rc<Self> {
+    /// The polynomial `kind` of the scene, to be worked on over the window w.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
+    pub fn new<F: ExactField>(sc: &Scene<'_, F>, kind: Kind, w: &Window) -> Rc<Self> {
         Rc::new(Lazy {
             kind,
-            fl: sc.fl.poly(kind),
+            fl: sc.fl_poly(kind, w.lo_end.iv),
+            origin: w.lo.clone(),
+            origin_iv: w.lo_end.iv,
             exact: OnceCell::new(),
         })
     }
 
-    /// The exact polynomial (a positive multiple of the same one).
+    /// The exact polynomial in t (a positive multiple of the same one).
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn exact<F: ExactField>(&self, sc: &Scene<'_, F>) -> &Poly {
         self.exact.get_or_init(|| sc.exact_poly(self.kind))
+    }
+
+    /// The float value at the time t (enclosed).
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
+    fn eval(&self, t: Iv) -> Iv {
+        poly_eval(&self.fl, t.sub(self.origin_iv))
     }
 }
 
@@ -53,8 +68,9 @@ impl Lazy {
 enum Value {
     /// Exactly.
     Known(RealAlg),
-    /// As the one root of `poly` in (at.lo, at.hi), certified in floats (negative at
-    /// at.lo when `rising`); the exact number is built on first use.
+    /// As the one root of `poly` at t = origin + s with s in (at.lo, at.hi), certified
+    /// in floats (negative at at.lo when `rising`); the exact number is built on first
+    /// use.
     Float {
         poly: Rc<Lazy>,
         at: Iv,
@@ -76,6 +92,7 @@ pub(crate) struct End {
 
 impl End {
     /// The exact number x with an enclosure of it (a rational is enclosed anew).
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     fn with_enclosure(x: RealAlg, iv: Iv) -> End {
         if let Some(q) = x.as_rational() {
             return End::rational(q.clone());
@@ -88,6 +105,7 @@ impl End {
     }
 
     /// The rational x.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn rational(x: BigRational) -> End {
         End {
             iv: enclose(&x),
@@ -96,10 +114,11 @@ impl End {
         }
     }
 
-    /// The root of `poly` certified in floats in (at.lo, at.hi).
+    /// The root of `poly` certified in floats at s in (at.lo, at.hi).
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     fn float(poly: &Rc<Lazy>, at: Iv, rising: bool) -> End {
         End {
-            iv: at,
+            iv: poly.origin_iv.add(at),
             value: Value::Float {
                 poly: Rc::clone(poly),
                 at,
@@ -111,6 +130,7 @@ impl End {
     }
 
     /// The exact value (built on first use).
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn alg<F: ExactField>(&self, sc: &Scene<'_, F>) -> &RealAlg {
         match &self.value {
             Value::Known(x) => x,
@@ -123,8 +143,12 @@ impl End {
                 let p = poly.exact(sc).clone();
                 // A root bracket's ends are finite floats (isolate_roots works in a
                 // finite window only).
-                let lo = at.lo_exact().expect("a root bracket has finite ends");
-                let hi = at.hi_exact().expect("a root bracket has finite ends");
+                let lo = &poly.origin
+                    + at.lo_exact::<BigRational>()
+                        .expect("a root bracket has finite ends");
+                let hi = &poly.origin
+                    + at.hi_exact::<BigRational>()
+                        .expect("a root bracket has finite ends");
                 let s = if *rising {
                     Ordering::Less
                 } else {
@@ -136,6 +160,7 @@ impl End {
     }
 
     /// The exact value, owned.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn into_alg<F: ExactField>(self, sc: &Scene<'_, F>) -> RealAlg {
         match self.value {
             Value::Known(x) => x,
@@ -144,6 +169,7 @@ impl End {
     }
 
     /// The exact value, its isolating interval narrowed below float resolution.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     fn narrowed<F: ExactField>(&self, sc: &Scene<'_, F>) -> &RealAlg {
         self.narrow.get_or_init(|| {
             let mut x = self.alg(sc).clone();
@@ -153,6 +179,7 @@ impl End {
     }
 
     /// Whether both are the same root of the same polynomial (then equal).
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     fn same_root(&self, o: &End) -> bool {
         match (&self.value, &o.value) {
             (Value::Float { poly: a, at: x, .. }, Value::Float { poly: b, at: y, .. }) => {
@@ -164,6 +191,7 @@ impl End {
 }
 
 /// The exact order of two ends: by their enclosures when they are apart, else exactly.
+/// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
 pub(crate) fn cmp_end<F: ExactField>(sc: &Scene<'_, F>, a: &End, b: &End) -> Ordering {
     if a.iv.hi < b.iv.lo {
         return Ordering::Less;
@@ -192,6 +220,7 @@ pub(crate) struct Window {
 
 impl Window {
     /// [lo, hi] (lo ≤ hi).
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn new(lo: BigRational, hi: BigRational) -> Self {
         Window {
             lo_end: End::rational(lo.clone()),
@@ -202,11 +231,13 @@ impl Window {
     }
 
     /// The float hull of the window.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn iv(&self) -> Iv {
         self.lo_end.iv.hull(self.hi_end.iv)
     }
 
     /// Whether the window is a single time.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn is_point(&self) -> bool {
         self.lo == self.hi
     }
@@ -223,6 +254,7 @@ pub(crate) struct Sample {
 
 impl Sample {
     /// The exact value.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn exact(&self) -> &BigRational {
         self.exact
             .get_or_init(|| self.iv.lo_exact().expect("a float sample is finite"))
@@ -230,6 +262,7 @@ impl Sample {
 
     /// A time strictly between the ends a < b: a float between their enclosures, or the
     /// midpoint of their isolating intervals refined apart.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn between<F: ExactField>(sc: &Scene<'_, F>, a: &End, b: &End) -> Sample {
         if let Some(m) = Iv::point_between(a.iv, b.iv) {
             return Sample {
@@ -247,11 +280,13 @@ impl Sample {
     }
 
     /// The time in decimal (9 digits, toward −∞), for messages.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn exact_text(&self) -> String {
         RealAlg::rational(self.exact().clone()).to_decimal_string(9)
     }
 
     /// The rational time m.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn rational(m: BigRational) -> Sample {
         Sample {
             iv: enclose(&m),
@@ -261,45 +296,60 @@ impl Sample {
 }
 
 /// The exact sign of a scene polynomial at a sample (floats first).
+/// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
 pub(crate) fn sign_at_sample<F: ExactField>(
     sc: &Scene<'_, F>,
     poly: &Lazy,
     at: &Sample,
 ) -> Ordering {
-    match poly_eval(&poly.fl, at.iv).sign() {
+    match poly.eval(at.iv).sign() {
         Ok(s) => s,
         Err(_) => poly.exact(sc).sign_at(at.exact()),
     }
 }
 
 /// The exact sign of a scene polynomial at an end (floats first, over the enclosure).
+/// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
 pub(crate) fn sign_at_end<F: ExactField>(sc: &Scene<'_, F>, poly: &Lazy, at: &End) -> Ordering {
-    match poly_eval(&poly.fl, at.iv).sign() {
+    match poly.eval(at.iv).sign() {
         Ok(s) => s,
         Err(_) => at.alg(sc).sign_of(poly.exact(sc)),
     }
 }
 
+/// A root of a scene polynomial, with the polynomial's sign just after it when floats
+/// certified it (the sign just before is the other one: a certified root is simple).
+pub(crate) type Root = (End, Option<Ordering>);
+
 /// The distinct roots of a scene polynomial in the closed window, increasing; `None`
 /// when the polynomial is identically 0. Roots certified in floats strictly inside the
 /// window cost no exact work; the rest (a root bracket over a window end, a stretch the
 /// floats could not settle) is done exactly.
+/// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
 pub(crate) fn roots_in<F: ExactField>(
     sc: &Scene<'_, F>,
     poly: &Rc<Lazy>,
     w: &Window,
-) -> Option<Vec<End>> {
+) -> Option<Vec<Root>> {
     let mut out = Vec::new();
-    for piece in isolate_roots(&poly.fl, w.iv()) {
+    // The window in s = t − w.lo (poly's origin is w.lo).
+    let width = w.hi_end.iv.sub(w.lo_end.iv);
+    let ws = Iv::ZERO.hull(Iv::point(width.hi));
+    for piece in isolate_roots(&poly.fl, ws) {
         match piece {
             RootPiece::Root { at, rising } => {
                 let e = End::float(poly, at, rising);
-                let inside = at.lo >= w.lo_end.iv.hi && at.hi <= w.hi_end.iv.lo;
+                let inside = at.lo >= 0.0 && at.hi <= width.lo;
                 if inside
                     || (cmp_end(sc, &e, &w.lo_end) != Ordering::Less
                         && cmp_end(sc, &e, &w.hi_end) != Ordering::Greater)
                 {
-                    out.push(e);
+                    let after = if rising {
+                        Ordering::Greater
+                    } else {
+                        Ordering::Less
+                    };
+                    out.push((e, Some(after)));
                 }
             }
             RootPiece::Unsure(at) => {
@@ -308,15 +358,15 @@ pub(crate) fn roots_in<F: ExactField>(
                     return None;
                 }
                 let lo = match at.lo_exact::<BigRational>() {
-                    Some(l) if l > w.lo => l,
+                    Some(l) if l > BigRational::zero() => &w.lo + l,
                     _ => w.lo.clone(),
                 };
                 let hi = match at.hi_exact::<BigRational>() {
-                    Some(h) if h < w.hi => h,
+                    Some(h) if &w.lo + &h < w.hi => &w.lo + h,
                     _ => w.hi.clone(),
                 };
                 if lo <= hi {
-                    out.extend(shifted_roots(p, &lo, &hi));
+                    out.extend(shifted_roots(p, &lo, &hi).into_iter().map(|e| (e, None)));
                 }
             }
         }
@@ -334,6 +384,7 @@ const SHIFTS: u32 = 3;
 /// move gains about half the float precision around a near-double root), then in
 /// floats on p's squarefree part (where an exact double root is a simple one), and
 /// exactly (Sturm) where they still cannot tell.
+/// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
 fn shifted_roots(p: &Poly, lo: &BigRational, hi: &BigRational) -> Vec<End> {
     let mut out: Vec<(RealAlg, Iv)> = Vec::new();
     let mut stack = vec![(lo.clone(), hi.clone(), 0u32)];
@@ -380,6 +431,7 @@ fn shifted_roots(p: &Poly, lo: &BigRational, hi: &BigRational) -> Vec<End> {
 /// The roots of q in [lo, hi] isolated in floats after moving the origin to lo: each a
 /// root with its enclosure (`Ok`), or a stretch [l, h] ⊆ [lo, hi] that floats could
 /// not settle.
+/// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
 fn float_roots(
     q: &Poly,
     lo: &BigRational,
@@ -443,11 +495,13 @@ pub(crate) struct Set {
 
 impl Set {
     /// The empty set.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn empty() -> Set {
         Set { comps: Vec::new() }
     }
 
     /// The whole window.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn all(w: &Window) -> Set {
         Set {
             comps: vec![(w.lo_end.clone(), w.hi_end.clone())],
@@ -455,6 +509,7 @@ impl Set {
     }
 
     /// Whether it has no point.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn is_empty(&self) -> bool {
         self.comps.is_empty()
     }
@@ -462,6 +517,7 @@ impl Set {
     /// The union of closed intervals, in any order: sorted by start, and merged where
     /// one starts at or before the other's end (closed sets that touch are one
     /// component).
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn union_of<F: ExactField>(sc: &Scene<'_, F>, mut parts: Vec<(End, End)>) -> Set {
         parts.sort_by(|a, b| cmp_end(sc, &a.0, &b.0));
         let mut comps: Vec<(End, End)> = Vec::with_capacity(parts.len());
@@ -480,6 +536,7 @@ impl Set {
     }
 
     /// self ∩ o.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn intersect<F: ExactField>(&self, sc: &Scene<'_, F>, o: &Set) -> Set {
         let mut comps = Vec::new();
         let (mut i, mut j) = (0, 0);
@@ -507,6 +564,7 @@ impl Set {
     /// The stretches of the window outside the set, each with a time strictly inside it
     /// (or the window's one time): the relatively open gaps [w0, a1), (b_k, a_k+1),
     /// (b_m, w1] around the components.
+    /// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
     pub fn gaps<F: ExactField>(&self, sc: &Scene<'_, F>, w: &Window) -> Vec<(End, End, Sample)> {
         let mut out = Vec::new();
         let (Some(first), Some(last)) = (self.comps.first(), self.comps.last()) else {
@@ -537,6 +595,7 @@ impl Set {
 /// {t ∈ W : P(t) ≤ 0} (`want` Less) or {P(t) ≥ 0} (`want` Greater) for a scene
 /// polynomial P: its roots in W, and P's sign on each stretch between them taken at a
 /// sample (a root always belongs to the set; a stretch when P has the wanted sign).
+/// (The contract's components: ends at roots of paper A §II.C/§II.I's polynomials.)
 pub(crate) fn sign_set<F: ExactField>(
     sc: &Scene<'_, F>,
     poly: &Rc<Lazy>,
@@ -555,22 +614,30 @@ pub(crate) fn sign_set<F: ExactField>(
         return Set::all(w);
     };
     // The stretches between the window's ends and the roots, in order, each with its
-    // ends; a root at a window end leaves no stretch there.
+    // ends; a root at a window end leaves no stretch there. A stretch's sign is known
+    // from a float-certified root at either end, else taken at a sample.
     let mut pieces: Vec<(End, End, bool)> = Vec::with_capacity(2 * roots.len() + 1);
     let mut from = w.lo_end.clone();
-    for r in roots {
+    let mut after: Option<Ordering> = None;
+    for (r, r_after) in roots {
         if cmp_end(sc, &from, &r) == Ordering::Less {
-            let s = Sample::between(sc, &from, &r);
-            let keep = sign_at_sample(sc, poly, &s) == want;
-            pieces.push((from, r.clone(), keep));
+            let sign = match (after, r_after) {
+                (Some(s), _) => s,
+                (None, Some(s)) => s.reverse(),
+                (None, None) => sign_at_sample(sc, poly, &Sample::between(sc, &from, &r)),
+            };
+            pieces.push((from, r.clone(), sign == want));
         }
         pieces.push((r.clone(), r.clone(), true));
         from = r;
+        after = r_after;
     }
     if cmp_end(sc, &from, &w.hi_end) == Ordering::Less {
-        let s = Sample::between(sc, &from, &w.hi_end);
-        let keep = sign_at_sample(sc, poly, &s) == want;
-        pieces.push((from, w.hi_end.clone(), keep));
+        let sign = match after {
+            Some(s) => s,
+            None => sign_at_sample(sc, poly, &Sample::between(sc, &from, &w.hi_end)),
+        };
+        pieces.push((from, w.hi_end.clone(), sign == want));
     }
     // Runs of kept pieces are components (a kept stretch's ends are roots or window
     // ends, which belong to the closed set).

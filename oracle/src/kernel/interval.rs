@@ -519,6 +519,7 @@ fn power_of_two(x: &num_bigint::BigInt) -> Option<u64> {
 
 /// A rigorous enclosure of m·2^e for an integer m of any size: its leading 60 bits
 /// rounded outward (an ulp or two wide), then scaled (outward beyond the normal range).
+/// (Enclosing the exact numbers of paper A §II–III.)
 pub fn enclose_scaled_int(m: &num_bigint::BigInt, e: i64) -> Iv {
     use num_bigint::Sign;
     let mag = m.magnitude();
@@ -818,32 +819,29 @@ impl Iv {
     }
 }
 
-/// The exponent k for which 2^k · max|x| over the enclosures lies in [1/2, 1) (0
-/// when they are all 0 or one is not finite): the exact scaling that keeps a
-/// computation's products inside the float range.
-pub fn balancing_exponent(xs: impl IntoIterator<Item = Iv>) -> i32 {
-    let mut m = 0.0f64;
-    for x in xs {
-        if !x.finite() {
-            return 0;
-        }
-        m = m.max(x.lo.abs()).max(x.hi.abs());
+/// The binary exponent e of an enclosure's magnitude, 2^(e−1) ≤ max|x| < 2^e
+/// (`None` for 0 or when an end is infinite): how the oracle scales a case into the
+/// float range without ever forming a product that could overflow.
+/// (Scaling a case of paper A §II–III into the float range.)
+pub fn magnitude_exponent(x: Iv) -> Option<i32> {
+    if !x.finite() {
+        return None;
     }
-    if m == 0.0 || !m.is_finite() {
-        return 0;
+    let m = x.lo.abs().max(x.hi.abs());
+    if m == 0.0 {
+        return None;
     }
-    // m = f·2^e with f ∈ [1/2, 1): k = −e (a normal float's exponent field; the
-    // subnormals are first brought up by 2^64).
+    // A normal float's exponent field; the subnormals are first brought up by 2^64.
     let (m, extra) = if m < f64::MIN_POSITIVE {
         (m * 18446744073709551616.0, 64)
     } else {
         (m, 0)
     };
-    let e = ((m.to_bits() >> 52) & 0x7ff) as i32 - 1022;
-    extra - e
+    Some(((m.to_bits() >> 52) & 0x7ff) as i32 - 1022 - extra)
 }
 
-/// Σ c[k]·t^k by Horner's rule, enclosed (c lowest degree first).
+/// Σ c_k·t^k by Horner's rule, enclosed (c lowest degree first).
+/// (Paper A §II.C/§II.I's roots, certified in floats.)
 pub fn poly_eval(c: &[Iv], t: Iv) -> Iv {
     c.iter().rev().fold(Iv::ZERO, |acc, &x| acc.mul(t).add(x))
 }
@@ -851,6 +849,7 @@ pub fn poly_eval(c: &[Iv], t: Iv) -> Iv {
 /// Enclosures of an integer polynomial's coefficients, all divided by one power of two
 /// (a positive factor: the same roots and signs) so that the largest is about 2^900
 /// at most.
+/// (Paper A §II.C/§II.I's roots, certified in floats.)
 pub fn enclose_poly(p: &crate::algebraic::Poly) -> Vec<Iv> {
     let bits = p.coeffs().iter().map(|c| c.bits()).max().unwrap_or(0);
     let shift = i64::try_from(bits.saturating_sub(900)).unwrap_or(i64::MAX);
@@ -943,6 +942,7 @@ pub fn isolate_roots(p: &[Iv], window: Iv) -> Vec<RootPiece> {
 }
 
 /// The certified sign of p at the float x (`None` when not certified nonzero).
+/// (Paper A §II.C/§II.I's roots, certified in floats.)
 fn sign_at(p: &[Iv], x: f64) -> Option<Ordering> {
     match poly_eval(p, Iv::point(x)).sign() {
         Ok(Ordering::Equal) | Err(_) => None,
@@ -954,6 +954,7 @@ fn sign_at(p: &[Iv], x: f64) -> Option<Ordering> {
 /// ≤ 2: r widened until the signs at its ends are certified opposite (then it holds
 /// exactly one root: a second one would make the signs agree), doubling the widening
 /// from an ulp; `Unsure` when that does not happen.
+/// (Paper A §II.C/§II.I's roots, certified in floats.)
 fn bracket_or_unsure(p: &[Iv], r: Iv) -> RootPiece {
     if !r.finite() {
         return RootPiece::Unsure(r);
@@ -981,6 +982,7 @@ fn bracket_or_unsure(p: &[Iv], r: Iv) -> RootPiece {
 /// (discriminant certified negative), two enclosed roots (certified positive, by the
 /// cancellation-free formulas q = −(b ± √disc)/2, roots q/a and c/q), or one stretch
 /// that holds every real root when the discriminant may be 0.
+/// (Paper A §II.C/§II.I's roots, certified in floats.)
 fn quadratic_pieces(p: &[Iv]) -> Vec<RootPiece> {
     let (c, b, a) = (p[0], p[1], p[2]);
     let disc = b.sq().sub(Iv::from_i64(4).mul(a).mul(c));
@@ -1016,6 +1018,7 @@ fn quadratic_pieces(p: &[Iv]) -> Vec<RootPiece> {
 /// The Bernstein coefficients on [l, h] of the polynomial p (enclosed): those of
 /// p(l + (h − l)·u) on u ∈ [0, 1] (a Taylor shift, a scaling, the basis change
 /// b_i = Σ_{j ≤ i} C(i, j)/C(n, j) · q_j).
+/// (Paper A §II.C/§II.I's roots, certified in floats.)
 fn bernstein(p: &[Iv], l: f64, h: f64) -> Vec<Iv> {
     let n = p.len() - 1;
     let mut q = p.to_vec();
@@ -1047,6 +1050,7 @@ fn bernstein(p: &[Iv], l: f64, h: f64) -> Vec<Iv> {
 /// The Bernstein coefficients of the two halves [l, m] and [m, h] of a piece from its
 /// own, by de Casteljau's scheme at u = (m − l)/(h − l) (enclosed; the exact 1/2 when
 /// m is the exact midpoint, then every step is a sum and a halving).
+/// (Paper A §II.C/§II.I's roots, certified in floats.)
 fn de_casteljau(b: &[Iv], u: Iv) -> (Vec<Iv>, Vec<Iv>) {
     let n = b.len() - 1;
     let half = u.lo == 0.5 && u.hi == 0.5;
@@ -1071,15 +1075,19 @@ fn de_casteljau(b: &[Iv], u: Iv) -> (Vec<Iv>, Vec<Iv>) {
     (left, right)
 }
 
-/// What the Bernstein coefficients of a piece say: no root (one strict sign), exactly
-/// one (one sign change, the ends' signs certified and nonzero: Descartes' rule for
-/// the Bernstein basis; `Some(true)` when it rises), or nothing certain (`None`).
+/// What the Bernstein coefficients of a piece say about the roots in it.
 enum Verdict {
+    /// None: the coefficients have one strict sign.
     NoRoot,
+    /// Exactly one, simple: one sign change, the ends' signs certified and nonzero
+    /// (Descartes' rule for the Bernstein basis); `true` when the polynomial rises.
     OneRoot(bool),
+    /// Nothing certain.
     Unknown,
 }
 
+/// The verdict of a piece's Bernstein coefficients (see [`Verdict`]).
+/// (Paper A §II.C/§II.I's roots, certified in floats.)
 fn verdict(b: &[Iv]) -> Verdict {
     let mut last = Ordering::Equal;
     let mut first = Ordering::Equal;
@@ -1117,6 +1125,7 @@ fn verdict(b: &[Iv]) -> Verdict {
 /// Subdivision in the Bernstein basis (see [`isolate_roots`]): pieces of the window
 /// with one strict sign are dropped, pieces with exactly one sign change are roots,
 /// the rest are halved (de Casteljau) until the budget or the depth runs out.
+/// (Paper A §II.C/§II.I's roots, certified in floats.)
 fn bernstein_pieces(p: &[Iv], window: Iv) -> Vec<RootPiece> {
     let mut out = Vec::new();
     let mut stack = vec![(
@@ -1174,6 +1183,7 @@ fn bernstein_pieces(p: &[Iv], window: Iv) -> Vec<RootPiece> {
 
 /// The midpoints of the coefficients' enclosures: the plain polynomial whose root a
 /// float search approximates (only ever a guess; certification is by enclosures).
+/// (Paper A §II.C/§II.I's roots, certified in floats.)
 fn midpoints(p: &[Iv]) -> Vec<f64> {
     p.iter().map(|c| c.lo / 2.0 + c.hi / 2.0).collect()
 }
@@ -1181,6 +1191,7 @@ fn midpoints(p: &[Iv]) -> Vec<f64> {
 /// An approximate root in (l, h) of the plain polynomial c that is negative at l when
 /// `rising` (positive otherwise): Newton's method kept inside a shrinking bracket,
 /// bisecting when a step leaves it.
+/// (Paper A §II.C/§II.I's roots, certified in floats.)
 fn approx_root(c: &[f64], l: f64, h: f64, rising: bool) -> f64 {
     let eval = |t: f64| {
         c.iter()
@@ -1215,6 +1226,7 @@ fn approx_root(c: &[f64], l: f64, h: f64, rising: bool) -> f64 {
 /// A bracket [g − δ, g + δ] inside (l, h), with certified opposite signs, around the
 /// float guess g: δ from an ulp of g up, fourfold each try. `None` when none
 /// certifies.
+/// (Paper A §II.C/§II.I's roots, certified in floats.)
 fn certify_near(p: &[Iv], g: f64, l: f64, h: f64, rising: bool) -> Option<Iv> {
     let want_lo = if rising {
         Ordering::Less
@@ -1255,6 +1267,7 @@ fn certify_near(p: &[Iv], g: f64, l: f64, h: f64, rising: bool) -> Option<Iv> {
 
 /// A root bracket narrowed to a few ulps where the enclosures allow it (else as it
 /// was): the signs at its new ends are certified, so it still isolates the root.
+/// (Paper A §II.C/§II.I's roots, certified in floats.)
 fn tighten(p: &[Iv], at: Iv, rising: bool) -> Iv {
     let scale = at.lo.abs().max(at.hi.abs());
     if at.hi - at.lo <= scale * (64.0 * f64::EPSILON) {
@@ -1265,6 +1278,7 @@ fn tighten(p: &[Iv], at: Iv, rising: bool) -> Iv {
 }
 
 /// Whether an enclosure is at most four ulps wide.
+/// (Paper A §II.C/§II.I's roots, certified in floats.)
 fn is_tight(x: Iv) -> bool {
     if !x.finite() {
         return false;
@@ -1362,6 +1376,7 @@ pub fn narrow_alg(x: &mut RealAlg) -> bool {
 }
 
 /// A rigorous enclosure of a real algebraic number ([`tighten_alg`] on a copy).
+/// (Paper A §II.C/§II.I's roots, certified in floats.)
 pub fn enclose_alg(x: &RealAlg) -> Iv {
     tighten_alg(&mut x.clone())
 }
@@ -1369,6 +1384,7 @@ pub fn enclose_alg(x: &RealAlg) -> Iv {
 impl RealAlg {
     /// Floats lo ≤ x ≤ hi, rounded outward (rigorous), a few ulps apart where the float
     /// range allows (±∞ beyond it).
+    /// (Paper A §II.C/§II.I's roots, certified in floats.)
     pub fn to_f64_bounds(&self) -> (f64, f64) {
         let e = enclose_alg(self);
         (e.lo, e.hi)

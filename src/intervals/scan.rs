@@ -1,9 +1,10 @@
-//! The certified branch and bound over time behind [`super::intervals_into`] and the
-//! keep-in scan of `crate::fence`: on each time piece, decide whether the relation
-//! (inside, near_D or breach_D of the definitions in the parent module, paper A §II.C's
-//! edge quadratics, §II.B's crossing count and §III's slab) certainly holds throughout,
-//! certainly fails throughout, or neither; halve the undecided pieces down to the
-//! resolution. The pieces go, left to right, to a [`Pieces`] consumer.
+//! The certified branch and bound over time behind [`super::intervals_into`]: on each
+//! time piece, decide whether the relation (inside, near_D or breach_D of the definitions
+//! in the parent module, paper A §II.C's edge quadratics, §II.B's crossing count and
+//! §III's slab) certainly holds throughout, certainly fails throughout, or neither; halve
+//! the undecided pieces down to the resolution. The pieces go, left to right, to a
+//! [`Pieces`] consumer. The same machinery halves one edge at a time for the keep-in
+//! exits of `crate::fence` ([`Scan::comes_within`]).
 //!
 //! No heap: the first [`EDGE_CAP`] edges are kept in a stack array (later ones are formed
 //! when needed), and the candidate edges of the open pieces in a stack of

@@ -226,6 +226,7 @@ struct SliceSink<'o> {
 }
 
 impl Sink for SliceSink<'_> {
+    /// Writes the span if there is room, and counts it.
     fn push(&mut self, span: Span) {
         if let Some(slot) = self.out.get_mut(self.n) {
             *slot = span;
@@ -236,6 +237,7 @@ impl Sink for SliceSink<'_> {
 
 #[cfg(feature = "std")]
 impl Sink for Vec<Span> {
+    /// Appends the span.
     fn push(&mut self, span: Span) {
         Vec::push(self, span);
     }
@@ -287,6 +289,7 @@ impl<K: Sink> Spans<'_, K> {
 }
 
 impl<K: Sink> Pieces for Spans<'_, K> {
+    /// One more piece (the module doc's "Method": stretches and clusters to spans).
     fn piece(&mut self, a: f64, b: f64, class: Class) -> bool {
         match class {
             Class::Unsure => {

@@ -146,14 +146,17 @@ impl Scan<'_> {
             if class[s - 1] == class[s + 1] {
                 let (mid, half) = centre(at[s], at[s + 1]);
                 let (piece, _) = self.assess(mid, half, child, &over(s)[..k], false);
+                // A side decided without the winding number (within D of an edge, say)
+                // leaves it unknown: take the other side's, or compute it on the
+                // bracket itself, constant there as no edge may be touched.
+                let known =
+                    |j: usize| (!touched[j] && states[j] != State::Unknown).then_some(states[j]);
                 let state = if piece.touching {
                     State::Unknown
-                } else if !touched[s + 1] {
-                    states[s + 1]
-                } else if !touched[s - 1] {
-                    states[s - 1]
                 } else {
-                    State::Unknown
+                    known(s + 1)
+                        .or_else(|| known(s - 1))
+                        .unwrap_or_else(|| self.winding(mid))
                 };
                 if self.classify(&piece, state) == class[s + 1] {
                     class[s] = class[s + 1];

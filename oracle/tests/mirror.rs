@@ -1,6 +1,7 @@
 //! The oracle mirrors the engine's names, module by module. For each of paper A's
 //! modules (quad, contain, proximity, detect with every file of its folder, well_formed,
-//! ring), walked as files in both crates and paired by module path (`detect::same` is
+//! ring) and of the modules built on them (intervals and fence: the times inside, near and
+//! breaching, and keep-in exits), walked as files in both crates and paired by module path (`detect::same` is
 //! src/detect/same.rs), every `pub fn` of the engine's module has a `pub fn` of the same
 //! name in the oracle's module of the same path, with the same parameter names in the
 //! same order. The oracle's paper functions are generic over a kernel and take it first,
@@ -18,13 +19,15 @@ use std::path::Path;
 
 /// Paper A's modules, by their names in both crates: a file `<name>.rs`, or a folder
 /// `<name>/` whose files are its submodules.
-const MODULES: [&str; 6] = [
+const MODULES: [&str; 8] = [
     "quad",
     "contain",
     "proximity",
     "detect",
     "well_formed",
     "ring",
+    "intervals",
+    "fence",
 ];
 
 /// The name of a test module, skipped by the walk.
@@ -35,20 +38,55 @@ const KERNEL_PARAM: &str = "k";
 
 /// Engine modules with no oracle counterpart, each for its reason. Each must exist in
 /// the engine and not in the oracle (a stale entry fails the test).
-const ENGINE_ONLY_MODULES: [(&str, &str); 1] = [(
-    "detect::roots",
-    "float enclosures of the roots of dot_nn_lin's quadratics; the oracle's roots are \
-     exact algebraic numbers (qfield, Kernel::two_roots), with no rounding to bound",
-)];
+const ENGINE_ONLY_MODULES: [(&str, &str); 4] = [
+    (
+        "detect::roots",
+        "float enclosures of the roots of dot_nn_lin's quadratics; the oracle's roots are \
+         exact algebraic numbers (qfield, Kernel::two_roots), with no rounding to bound",
+    ),
+    (
+        "intervals::scan",
+        "the f64 branch and bound over time that certifies each piece; the oracle finds \
+         every end exactly (intervals::set) and needs no search",
+    ),
+    (
+        "intervals::scan::shortcut",
+        "the scan's bracketing of a few sign changes at once: a float speed-up",
+    ),
+    (
+        "intervals::scan::within",
+        "the scan's halving of one edge at a time for keep-in exits: a float speed-up",
+    ),
+];
 
-/// Oracle modules with no engine counterpart, each for its reason (none: every module
-/// of the oracle's paper A has the engine's name).
-const ORACLE_ONLY_MODULES: [(&str, &str); 0] = [];
+/// Oracle modules with no engine counterpart, each for its reason.
+const ORACLE_ONLY_MODULES: [(&str, &str); 3] = [
+    (
+        "intervals::scene",
+        "the case's polynomials in t with exact coefficients, which the engine evaluates \
+         on balls instead",
+    ),
+    (
+        "intervals::boundary",
+        "the exact candidate ends (real roots of the scene's polynomials); the engine \
+         encloses ends by halving",
+    ),
+    (
+        "intervals::set",
+        "the exact evaluation between and at the candidate ends, and the components",
+    ),
+];
 
 /// Engine functions with no oracle counterpart, each for its reason. Every name
 /// must exist in the engine's module and not in the oracle's (a stale entry fails
 /// the test).
-const ENGINE_ONLY: [(&str, &str, &str); 13] = [
+const ENGINE_ONLY: [(&str, &str, &str); 15] = [
+    ("fence", "detect_exit_tri", "three-valued float form"),
+    (
+        "intervals",
+        "intervals_into",
+        "the allocation-free slice form; the oracle returns its components",
+    ),
     // Three-valued (Tri: Yes, No, Unsure) forms of the float engine's functions:
     // in the oracle every paper function already is kernel-generic and returns
     // Result<_, Abstain>, and the exact kernel never abstains.

@@ -10,7 +10,10 @@ use polyguard_oracle::detect::{dot_nn_lin, Interval, Sign};
 use polyguard_oracle::qfield::Alg;
 use polyguard_oracle::truth::ExactTime;
 use polyguard_oracle::well_formed::well_formed;
-use polyguard_oracle::{paper_detect, truth, Arith, Decided, Exact, ExactField, Q, R, V2};
+use polyguard_oracle::{
+    detect_exit_of, intervals_of, paper_detect, truth, Arith, Decided, Exact, ExactField, Relation,
+    Separation, Q, R, V2,
+};
 
 fn iv_key<F: ExactField>(i: &Interval<Alg<F>>) -> Option<(ExactTime, ExactTime)> {
     match i {
@@ -35,6 +38,19 @@ proptest! {
             let kr = R::from_i64(99).quotient(&R::from_i64(100)).unwrap_or_else(<R as Arith>::one);
             prop_assert_eq!(well_formed(&a.vertices, &a.buff, &k), well_formed(&b.vertices, &b.buff, &kr));
         }
+    }
+
+    // The exact sets of times and exit detection: the same components, exactly.
+    #[test]
+    fn same_intervals(seed in any::<u64>(), which in 0u64..6) {
+        let g = gen_case(seed);
+        let (Ok(a), Ok(b)) = (g.exact::<Q>(), g.exact::<R>()) else { return Ok(()) };
+        let d = [0i64, 1][(which % 2) as usize];
+        let sq = Separation { d: Q::from_i64(d), h: Q::from_i64(1) };
+        let sr = Separation { d: R::from_i64(d), h: R::from_i64(1) };
+        let rel = [Relation::Inside, Relation::Near, Relation::Breach][(which / 2) as usize];
+        prop_assert_eq!(intervals_of(&a, rel, &sq), intervals_of(&b, rel, &sr));
+        prop_assert_eq!(detect_exit_of(&a, &sq), detect_exit_of(&b, &sr));
     }
 
     #[test]

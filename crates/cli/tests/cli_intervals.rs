@@ -80,9 +80,12 @@ fn the_truth_gives_the_hand_computed_ends() {
             .as_array()
             .unwrap_or_else(|| panic!("{id} {relation}: {out}"));
         assert_eq!(got.len(), comps.len(), "{id} {relation}: {got:?}");
-        for (g, (a, _, b, _)) in got.iter().zip(comps) {
+        for (g, (a, av, b, bv)) in got.iter().zip(comps) {
             assert_eq!(g["start_exact"], *a, "{id} {relation}");
             assert_eq!(g["end_exact"], *b, "{id} {relation}");
+            // the numbers are the nearest f64 (p / q in f64 is correctly rounded)
+            assert_eq!(g["start"].as_f64(), Some(*av), "{id} {relation}");
+            assert_eq!(g["end"].as_f64(), Some(*bv), "{id} {relation}");
         }
     }
     assert_eq!(

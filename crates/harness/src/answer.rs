@@ -103,28 +103,43 @@ fn engine_intervals(case: &Case, sep: Separation) -> Value {
     Value::Object(m)
 }
 
-/// An f64 next to the algebraic number a: its isolating interval halved until it is
-/// narrower than 2⁻⁶⁰ of its ends' magnitude (or 400 times), then the midpoint rounded
-/// (a display value; the exact form says the number).
+/// The next f64 above a finite x.
+fn next_up(x: f64) -> f64 {
+    if x == 0.0 {
+        f64::from_bits(1)
+    } else if x > 0.0 {
+        f64::from_bits(x.to_bits() + 1)
+    } else {
+        f64::from_bits(x.to_bits() - 1)
+    }
+}
+
+/// The f64 nearest the algebraic number a (ties to even): its rigorous f64 enclosure
+/// narrowed until it is one float or two neighbours, then the exact comparison with
+/// their midpoint.
 fn near_f64(a: &RealAlg) -> f64 {
-    use num_traits::{Signed, ToPrimitive};
+    use polyguard_oracle::convert::q;
     let mut x = a.clone();
     for _ in 0..400 {
-        let (lo, hi) = x.bounds();
-        let w = hi - lo;
-        let m = if lo.abs() > hi.abs() {
-            lo.abs()
-        } else {
-            hi.abs()
-        };
-        if w * num_rational::BigRational::from_integer(num_bigint::BigInt::from(1u64 << 60)) <= m {
-            break;
+        let (lo, hi) = x.to_f64_bounds();
+        if lo == hi {
+            return lo;
+        }
+        if next_up(lo) == hi {
+            let (Some(l), Some(h), Some(two)) = (q(lo), q(hi), q(2.0)) else {
+                break;
+            };
+            return match x.cmp_rational(&((l + h) / two)) {
+                std::cmp::Ordering::Less => lo,
+                std::cmp::Ordering::Greater => hi,
+                std::cmp::Ordering::Equal if lo.to_bits() % 2 == 0 => lo,
+                std::cmp::Ordering::Equal => hi,
+            };
         }
         x.refine();
     }
-    let (lo, hi) = x.bounds();
-    let mid = (lo + hi) / num_rational::BigRational::from_integer(2.into());
-    mid.to_f64().unwrap_or(f64::NAN)
+    let (lo, hi) = x.to_f64_bounds();
+    lo + 0.5 * (hi - lo)
 }
 
 /// One exact end as the answer writes it: the nearest f64 and the exact form.

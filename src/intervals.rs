@@ -1,5 +1,5 @@
 //! Every time the relation holds: certified intervals of inside, near_D and breach_D over
-//! [0, T] (paper A §II–§III's motion, timed; [`crate::entry`] gives the first entry).
+//! [0, T] (paper A §II–§III's motion, timed; `entry::first_entry` gives the first entry).
 //!
 //! # Definitions
 //! A case: T > 0, the point x(t) = s + t·v (3D: height z(t) = sz + t·vz), the polygon
@@ -18,7 +18,7 @@
 //! non-zero (as in the exact truth); the scan reports such a stretch as uncertain.
 //!
 //! # What the spans certify
-//! [`intervals`] returns spans sorted in time: start.lo ≤ start.hi ≤ end.lo ≤ end.hi,
+//! [`intervals_into`] (and `intervals`, its `Vec` form with `std`) returns spans sorted in time: start.lo ≤ start.hi ≤ end.lo ≤ end.hi,
 //! all in [0, T], and span\[k\].end.hi ≤ span\[k+1\].start.lo (equal enclosures mean that
 //! both spans share one uncertain cluster).
 //! - **G1** (nothing missed): S ⊆ ∪ₖ [startₖ.lo, endₖ.hi].
@@ -28,7 +28,7 @@
 //!
 //! # Method
 //! A certified branch and bound over time (module `scan`), the method of
-//! [`crate::entry`]: on a piece [a, b] (centre m, half width h) every edge's quadratics
+//! `entry::first_entry`: on a piece [a, b] (centre m, half width h) every edge's quadratics
 //! g = (x − a)×(b − a), h₁ = (x − a)·(b − a), h₂ = (b − x)·(b − a) (§II.C without the
 //! BUFF band), the band's sides g ∓ D·|b − a| (the range of |b − a| is the square root
 //! of the range of the quadratic |b − a|², its ends rounded outward) and the vertex
@@ -85,11 +85,11 @@
 //! stretch of the other kind, each an enclosure of the span that stretch or cluster
 //! gives. Sortedness: the pieces come in time order.
 //!
-//! When the visit budget ([`crate::entry::VISIT_BUDGET`] intervals) runs out, the rest of
+//! When the visit budget (`VISIT_BUDGET` intervals) runs out, the rest of
 //! [0, T] is one cluster: the statements stay true, only coarser.
 //!
 //! # Error analysis
-//! That of [`crate::entry`]: every value is a `Ball` at an exact float time, each
+//! That of `entry::first_entry`: every value is a `Ball` at an exact float time, each
 //! operation adding 2u·|result| to the radius (`crate::ball`'s rounding model), and a
 //! quadratic's Taylor form f(m) ± (|f′(m)|·h + |f″/2|·h²) is exact over |t − m| ≤ h,
 //! so its range is rigorous; the square root of a range rounds its ends outward; every

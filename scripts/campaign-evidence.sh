@@ -5,8 +5,11 @@
 # committed; the next session goes on from there. When every shard is done, `assure
 # merge` makes the campaign's report (exit 1 if any shard found a failure).
 #
-#   scripts/campaign-evidence.sh NAME [SHARDS CASES SEED]   # start, or go on with, NAME
+#   scripts/campaign-evidence.sh NAME [SHARDS CASES SEED [FLAGS]]   # start, or go on with, NAME
 #   e.g. scripts/campaign-evidence.sh 1e8-seed1 100 100000000 1
+#        scripts/campaign-evidence.sh intervals-1e7-seed12 20 10000000 12 --intervals
+# FLAGS (recorded in the plan with the rest) go to every shard's `assure`: `--intervals`
+# runs the interval hunt.
 #
 # The engine judged is the one of the commit recorded when the campaign started
 # (evidence/campaign-NAME/commit): the script builds that commit (with the GMP oracle,
@@ -20,12 +23,12 @@ root=$PWD
 name="${1:?usage: campaign-evidence.sh NAME [SHARDS CASES SEED]}"
 ev="$root/evidence/campaign-$name"
 if [ ! -f "$ev/commit" ]; then
-  [ $# -eq 4 ] || { echo "campaign-evidence: a new campaign needs SHARDS CASES SEED" >&2; exit 2; }
+  [ $# -ge 4 ] || { echo "campaign-evidence: a new campaign needs SHARDS CASES SEED [FLAGS]" >&2; exit 2; }
   mkdir -p "$ev"
-  printf '%s %s %s\n' "$2" "$3" "$4" > "$ev/plan"
+  printf '%s %s %s %s\n' "$2" "$3" "$4" "${*:5}" > "$ev/plan"
   git rev-parse HEAD > "$ev/commit"
 fi
-read -r shards cases seed < "$ev/plan"
+read -r shards cases seed flags < "$ev/plan"
 commit=$(cat "$ev/commit")
 
 work="$root/target/campaign-work"
@@ -45,7 +48,8 @@ for ((i = 0; i < shards; i++)); do
   tmp="$runs/shard-$i"
   rm -rf "$tmp"
   set +e
-  "$bin" assure --cases "$cases" --seed "$seed" --shard "$i/$shards" --quiet --out "$tmp" \
+  # shellcheck disable=SC2086 # FLAGS are words
+  "$bin" assure $flags --cases "$cases" --seed "$seed" --shard "$i/$shards" --quiet --out "$tmp" \
     > "$runs/shard-$i.log" 2>&1
   code=$?
   set -e
@@ -59,7 +63,9 @@ for ((i = 0; i < shards; i++)); do
   # the pictures stay behind (8 kB each, 10 a shard): the merge draws the ones it keeps
   # again from their case files
   rm -f "$ev/shard-$i.tmp"/counterexamples/*.svg
-  tail -n 1 "$runs/shard-$i.log" > "$ev/shard-$i.tmp/verdict.txt"
+  # the PASS or FAIL line (the last line of a paper-A run, the first of an interval hunt)
+  grep -m 1 -E '^(PASS|FAIL)' "$runs/shard-$i.log" > "$ev/shard-$i.tmp/verdict.txt" ||
+    tail -n 1 "$runs/shard-$i.log" > "$ev/shard-$i.tmp/verdict.txt"
   mv "$ev/shard-$i.tmp" "$ev/shard-$i"
   echo "shard $i/$shards: $(cat "$ev/shard-$i/verdict.txt")"
 done

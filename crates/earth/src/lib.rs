@@ -10,6 +10,8 @@
 //!   ([`conflict::pipeline`] runs them, Algorithm 1).
 //! - [`scenario`]: the scenario GeoJSON (`docs/scenario.md`), read strictly with
 //!   positions ([`json`]) and written back.
+//! - [`moving`]: whole flights (timed fixes) against static or keyframed areas: the
+//!   moving-features formats (MF-JSON, GeoJSON areas, CSV fixes) and certified intervals.
 //! - [`analysis`]: Algorithm 1 on scenario text, the conflicts answer and its drawing.
 //! - [`generate`]: random scenarios as in Section VI.D.
 //! - [`aircraft_cell`]: paper A's detection (Narkawicz & Hagen §II.H) of an aircraft on a
@@ -29,6 +31,7 @@ pub mod conflict;
 pub mod generate;
 pub mod geodesy;
 pub mod json;
+pub mod moving;
 pub mod picture;
 pub mod reference;
 pub mod rhumb;

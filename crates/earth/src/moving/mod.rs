@@ -1,0 +1,6 @@
+//! Moving features: whole flights (timed fixes) against static or keyframed areas, with
+//! certified intervals of inside and of loss of separation (docs/moving-features.md).
+//!
+//! - [`model`]: the fixes, trajectories and areas the readers give and the engine takes.
+
+pub mod model;

@@ -3,6 +3,9 @@
 //!
 //! - [`model`]: the fixes, trajectories and areas the readers give and the engine takes.
 //! - [`plane`]: the planar model and its certified spans over one segment.
+//! - [`timeline`]: three-valued timelines, the algebra that composes the spans.
 
 pub mod model;
 pub mod plane;
+mod piece;
+pub mod timeline;

@@ -31,10 +31,18 @@ fn rings(outer: Vec<[f64; 2]>, holes: Vec<Vec<[f64; 2]>>) -> PlaneRings {
 /// The spans enclose `truth` (components [a, b]) exactly: one certain span each, each
 /// end in its enclosure, enclosures narrow (relative to the times' size).
 fn assert_encloses(spans: &[TimeSpan], truth: &[(f64, f64)]) {
-    assert_eq!(spans.len(), truth.len(), "spans {spans:?} against {truth:?}");
+    assert_eq!(
+        spans.len(),
+        truth.len(),
+        "spans {spans:?} against {truth:?}"
+    );
     for (s, &(a, b)) in spans.iter().zip(truth) {
         assert!(s.certain, "{s:?}");
-        assert!(s.start[0] <= a && a <= s.start[1], "start {a} not in {:?}", s.start);
+        assert!(
+            s.start[0] <= a && a <= s.start[1],
+            "start {a} not in {:?}",
+            s.start
+        );
         assert!(s.end[0] <= b && b <= s.end[1], "end {b} not in {:?}", s.end);
         let scale = a.abs().max(b.abs()).max(1.0);
         assert!(s.start[1] - s.start[0] <= 1e-9 * scale, "{s:?} too wide");
@@ -50,14 +58,22 @@ fn a_two_leg_flight_through_a_square() {
     let spans = plane_spans(&fixes, &area, PlaneRelation::Inside).unwrap();
     assert_encloses(&spans, &[(2.0, 4.0)]);
     // Within D = 0.5: y ∈ [-0.5, 2.5], t ∈ [1.5, 4.5].
-    let near = PlaneRelation::Near { d_lo: 0.5, d_hi: 0.5, h: 0.0 };
+    let near = PlaneRelation::Near {
+        d_lo: 0.5,
+        d_hi: 0.5,
+        h: 0.0,
+    };
     assert_encloses(&plane_spans(&fixes, &area, near).unwrap(), &[(1.5, 4.5)]);
 }
 
 #[test]
 fn epoch_times_are_kept_to_their_ulp() {
     let t0 = 1_633_611_625.0;
-    let fixes = [fix(t0, 1.0, -2.0), fix(t0 + 3.0, 1.0, 1.0), fix(t0 + 8.0, 1.0, 6.0)];
+    let fixes = [
+        fix(t0, 1.0, -2.0),
+        fix(t0 + 3.0, 1.0, 1.0),
+        fix(t0 + 8.0, 1.0, 6.0),
+    ];
     let area = stat(vec![rings(square(0.0, 0.0, 2.0, 2.0), vec![])]);
     let spans = plane_spans(&fixes, &area, PlaneRelation::Inside).unwrap();
     assert_encloses(&spans, &[(t0 + 2.0, t0 + 4.0)]);
@@ -67,12 +83,22 @@ fn epoch_times_are_kept_to_their_ulp() {
 fn a_hole_splits_the_interval_and_its_edge_belongs_to_the_area() {
     // East along y = 2 at 1 from x = -1: the area is [0, 4]² less the open (1, 3)².
     let fixes = [fix(0.0, -1.0, 2.0), fix(6.0, 5.0, 2.0)];
-    let area = stat(vec![rings(square(0.0, 0.0, 4.0, 4.0), vec![square(1.0, 1.0, 3.0, 3.0)])]);
+    let area = stat(vec![rings(
+        square(0.0, 0.0, 4.0, 4.0),
+        vec![square(1.0, 1.0, 3.0, 3.0)],
+    )]);
     let spans = plane_spans(&fixes, &area, PlaneRelation::Inside).unwrap();
     assert_encloses(&spans, &[(1.0, 2.0), (4.0, 5.0)]);
     // Within 0.5 the hole's deep part is x ∈ (1.5, 2.5): near on [0.5, 2.5] and [3.5, 5.5].
-    let near = PlaneRelation::Near { d_lo: 0.5, d_hi: 0.5, h: 0.0 };
-    assert_encloses(&plane_spans(&fixes, &area, near).unwrap(), &[(0.5, 2.5), (3.5, 5.5)]);
+    let near = PlaneRelation::Near {
+        d_lo: 0.5,
+        d_hi: 0.5,
+        h: 0.0,
+    };
+    assert_encloses(
+        &plane_spans(&fixes, &area, near).unwrap(),
+        &[(0.5, 2.5), (3.5, 5.5)],
+    );
 }
 
 #[test]
@@ -94,7 +120,10 @@ fn assert_contract(spans: &[TimeSpan], truth: &[(f64, f64)]) {
     for &(a, b) in truth {
         // G1 at the ends and the middle, G3 for both ends.
         for x in [a, (a + b) / 2.0, b] {
-            assert!(spans.iter().any(|s| s.start[0] <= x && x <= s.end[1]), "{x} missed");
+            assert!(
+                spans.iter().any(|s| s.start[0] <= x && x <= s.end[1]),
+                "{x} missed"
+            );
         }
         for x in [a, b] {
             let enclosed = spans
@@ -105,7 +134,10 @@ fn assert_contract(spans: &[TimeSpan], truth: &[(f64, f64)]) {
     }
     for s in spans.iter().filter(|s| s.certain) {
         // G2: the certain core lies in one component.
-        assert!(truth.iter().any(|&(a, b)| a <= s.start[1] && s.end[0] <= b), "{s:?}");
+        assert!(
+            truth.iter().any(|&(a, b)| a <= s.start[1] && s.end[0] <= b),
+            "{s:?}"
+        );
     }
 }
 
@@ -116,8 +148,14 @@ fn a_cell_that_sweeps_over_a_still_mover_between_two_keyframes() {
     let fixes = [fix(0.0, 5.0, 0.5), fix(10.0, 5.0, 0.5)];
     let area = PlaneArea {
         frames: vec![
-            PlaneFrame { t: 0.0, parts: vec![rings(square(0.0, 0.0, 1.0, 1.0), vec![])] },
-            PlaneFrame { t: 10.0, parts: vec![rings(square(9.0, 0.0, 10.0, 1.0), vec![])] },
+            PlaneFrame {
+                t: 0.0,
+                parts: vec![rings(square(0.0, 0.0, 1.0, 1.0), vec![])],
+            },
+            PlaneFrame {
+                t: 10.0,
+                parts: vec![rings(square(9.0, 0.0, 10.0, 1.0), vec![])],
+            },
         ],
         is_static: false,
         floor: None,
@@ -133,7 +171,10 @@ fn a_keyframed_cell_exists_only_between_its_keyframes() {
     let sq = vec![rings(square(0.0, 0.0, 1.0, 1.0), vec![])];
     let area = PlaneArea {
         frames: vec![
-            PlaneFrame { t: 2.0, parts: sq.clone() },
+            PlaneFrame {
+                t: 2.0,
+                parts: sq.clone(),
+            },
             PlaneFrame { t: 5.0, parts: sq },
         ],
         is_static: false,
@@ -149,14 +190,31 @@ fn a_climb_through_the_ceiling() {
     // Inside horizontally throughout; z from 0 to 1000 over 10: ceiling 400 ⇒ t ≤ 4; with
     // H = 100, t ≤ 5.
     let fixes = [
-        PlaneFix { t: 0.0, x: 0.5, y: 0.5, z: Some(0.0) },
-        PlaneFix { t: 10.0, x: 0.5, y: 0.5, z: Some(1000.0) },
+        PlaneFix {
+            t: 0.0,
+            x: 0.5,
+            y: 0.5,
+            z: Some(0.0),
+        },
+        PlaneFix {
+            t: 10.0,
+            x: 0.5,
+            y: 0.5,
+            z: Some(1000.0),
+        },
     ];
     let mut area = stat(vec![rings(square(0.0, 0.0, 1.0, 1.0), vec![])]);
     area.ceiling = Some(400.0);
     area.floor = Some(-50.0);
-    assert_encloses(&plane_spans(&fixes, &area, PlaneRelation::Inside).unwrap(), &[(0.0, 4.0)]);
-    let near = PlaneRelation::Near { d_lo: 0.0, d_hi: 0.0, h: 100.0 };
+    assert_encloses(
+        &plane_spans(&fixes, &area, PlaneRelation::Inside).unwrap(),
+        &[(0.0, 4.0)],
+    );
+    let near = PlaneRelation::Near {
+        d_lo: 0.0,
+        d_hi: 0.0,
+        h: 100.0,
+    };
     assert_encloses(&plane_spans(&fixes, &area, near).unwrap(), &[(0.0, 5.0)]);
 }
 
@@ -173,7 +231,12 @@ fn without_altitude_a_vertical_limit_makes_every_span_possible() {
 
 #[test]
 fn gaps_split_the_segments() {
-    let f = [fix(0.0, 0.0, 0.0), fix(1.0, 0.0, 0.0), fix(100.0, 0.0, 0.0), fix(101.0, 0.0, 0.0)];
+    let f = [
+        fix(0.0, 0.0, 0.0),
+        fix(1.0, 0.0, 0.0),
+        fix(100.0, 0.0, 0.0),
+        fix(101.0, 0.0, 0.0),
+    ];
     assert_eq!(split_segments(&f, 60.0), vec![0..2, 2..4]);
     assert_eq!(split_segments(&f, 99.0), vec![0..4]);
     assert_eq!(split_segments(&f[..1], 60.0), vec![0..1]);

@@ -23,7 +23,8 @@
 //! Every D handed to the engine is rounded the safe way (up for an upper set, down for
 //! a lower one).
 
-use super::plane::{PlaneArea, PlaneFix, PlaneFrame, PlaneRelation};
+use super::plane::{PlaneArea, PlaneFix, PlaneFrame};
+use super::prepared::{winding, Prepared};
 use super::timeline::{Holds, Timeline};
 use polyguard::intervals::{intervals, Relation, Separation};
 use polyguard::{End, Span, Vect2};
@@ -124,7 +125,7 @@ fn diff_exact(b: f64, a: f64) -> (f64, bool) {
 /// Which horizontal set of one ring (the module doc's sandwiches).
 #[derive(Clone, Copy, Debug)]
 enum RingSet {
-    /// The outer ring: near within D (`d_lo`, `d_hi` as in [`PlaneRelation::Near`]);
+    /// The outer ring: near within D (`d_lo`, `d_hi` as in `PlaneRelation::Near`);
     /// `d_hi` = 0 is inside.
     Outer { d_lo: f64, d_hi: f64 },
     /// A hole: breach_D (not deep inside the hole), 0 for "not in its open interior".
@@ -140,7 +141,10 @@ struct StandIn {
 /// The engine's timeline of `relation` at separation `d` for the stand-in point `(s, v)`
 /// and ring over [0, look].
 fn engine(look: f64, s: Vect2, v: Vect2, r: &StandIn, relation: Relation, d: f64) -> Timeline {
-    let sep = Separation { d: d.max(0.0), h: 0.0 };
+    let sep = Separation {
+        d: d.max(0.0),
+        h: 0.0,
+    };
     let spans = intervals(look, s, v, &r.p, &r.vels, None, relation, sep);
     Timeline::from_spans(look, &spans)
 }
@@ -182,7 +186,10 @@ fn linear_ge(g0: [f64; 2], g1: [f64; 2], h: f64, look: f64) -> Timeline {
     let region = |a: f64, b: f64| -> Option<([f64; 2], [f64; 2])> {
         let root = || {
             let tau = a / (a - b) * h;
-            [(tau * (1.0 - 5.0 * U)).max(0.0), (tau * (1.0 + 5.0 * U)).min(look)]
+            [
+                (tau * (1.0 - 5.0 * U)).max(0.0),
+                (tau * (1.0 + 5.0 * U)).min(look),
+            ]
         };
         match (a >= 0.0, b >= 0.0) {
             (true, true) => Some(([0.0, 0.0], [look, look])),
@@ -195,13 +202,25 @@ fn linear_ge(g0: [f64; 2], g1: [f64; 2], h: f64, look: f64) -> Timeline {
     let possible = region(g0[1], g1[1]);
     let span = match (certain, possible) {
         (Some((cs, ce)), Some((ps, pe))) if cs[1] <= ce[0] => Span {
-            start: End { lo: ps[0], hi: cs[1] },
-            end: End { lo: ce[0], hi: pe[1] },
+            start: End {
+                lo: ps[0],
+                hi: cs[1],
+            },
+            end: End {
+                lo: ce[0],
+                hi: pe[1],
+            },
             certain: true,
         },
         (_, Some((ps, pe))) => Span {
-            start: End { lo: ps[0], hi: pe[1] },
-            end: End { lo: ps[0], hi: pe[1] },
+            start: End {
+                lo: ps[0],
+                hi: pe[1],
+            },
+            end: End {
+                lo: ps[0],
+                hi: pe[1],
+            },
             certain: false,
         },
         (_, None) => return Timeline::constant(0.0, look, Holds::No),
@@ -247,7 +266,14 @@ fn vertical(
 
 /// The stand-in of ring `ring` of part `part` over [t0, t1] (duration h), counterclockwise,
 /// and its δ_v (module doc).
-fn stand_in(area: &PlaneArea, part: usize, ring: usize, t0: f64, t1: f64, h: f64) -> (StandIn, f64) {
+fn stand_in(
+    area: &PlaneArea,
+    part: usize,
+    ring: usize,
+    t0: f64,
+    t1: f64,
+    h: f64,
+) -> (StandIn, f64) {
     let (p0, e0) = ring_at(area, part, ring, t0);
     let (p1, e1) = ring_at(area, part, ring, t1);
     let mut dv: f64 = 0.0;
@@ -266,13 +292,51 @@ fn stand_in(area: &PlaneArea, part: usize, ring: usize, t0: f64, t1: f64, h: f64
     (StandIn { p, vels }, dv)
 }
 
+/// What the Earth layer adds to a piece (zero on the plane): D's sandwich in plane units
+/// (`PlaneRelation::Near`) and extra distances of the mover's and the vertices' model
+/// from what is projected.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Margins {
+    /// A distance certainly within D.
+    pub d_lo: f64,
+    /// A distance beyond which the distance certainly exceeds D.
+    pub d_hi: f64,
+    /// Added to δ_p.
+    pub extra_point: f64,
+    /// Added to δ_v.
+    pub extra_area: f64,
+}
+
+/// The value over a piece of a ring's set when the piece is far from the ring
+/// ([`Prepared::far_from`]): from the exact winding number at the stand-in's start (odd:
+/// inside, 0: outside, even and not 0: a ring that is not simple, unknown).
+fn far_value(area: &PlaneArea, part: usize, ring: usize, s: [f64; 2], hole: bool) -> Holds {
+    let w = winding(ring_of(&area.frames[0], part, ring), s);
+    let inside = if w % 2 != 0 {
+        Holds::Yes
+    } else if w == 0 {
+        Holds::No
+    } else {
+        Holds::Maybe
+    };
+    if hole {
+        inside.not()
+    } else {
+        inside
+    }
+}
+
 /// The timeline of `relation` over the piece [t0, t1] (t0 < t1), in global time: each
-/// ring's sandwich, the region ∨ over parts of (outer ∧ holes), ∧ the vertical condition,
-/// moved to t0 with outward rounding and cut to [t0, t1].
+/// ring's sandwich (or its constant value when the piece is far from it), the region ∨
+/// over parts of (outer ∧ holes), ∧ the vertical condition, moved to t0 with outward
+/// rounding and cut to [t0, t1].
+#[allow(clippy::too_many_arguments)]
 pub(super) fn piece_timeline(
     fixes: &[PlaneFix],
     area: &PlaneArea,
-    relation: PlaneRelation,
+    prepared: &Prepared,
+    h_sep: f64,
+    m: Margins,
     t0: f64,
     t1: f64,
 ) -> Timeline {
@@ -283,27 +347,33 @@ pub(super) fn piece_timeline(
     let da = [a1[0] - a0[0], a1[1] - a0[1]];
     let dp: f64 = (0..2)
         .map(|c| 2.0 * e0[c] + 2.0 * e1[c] + 5.0 * U * da[c].abs())
-        .sum();
+        .sum::<f64>()
+        + m.extra_point;
     let s = Vect2::new(a0[0], a0[1]);
     let v = Vect2::new(da[0] / h, da[1] / h);
-    let (d_lo, d_hi, h_sep) = match relation {
-        PlaneRelation::Inside => (0.0, 0.0, 0.0),
-        PlaneRelation::Near { d_lo, d_hi, h } => (d_lo, d_hi, h),
-    };
     let frame0 = &area.frames[0];
     let mut region = Timeline::constant(0.0, look, Holds::No);
     for (k, part) in frame0.parts.iter().enumerate() {
         let mut tl: Option<Timeline> = None;
         for ring in 0..=part.holes.len() {
-            let (r, dv) = stand_in(area, k, ring, t0, t1, h);
-            // δ summed in f64 (three terms): relative rounding below 1e-15, covered.
-            let delta = (dp + dv) * (1.0 + 8.0 * U);
-            let set = if ring == 0 {
-                RingSet::Outer { d_lo, d_hi }
-            } else {
+            let hole = ring > 0;
+            let (d_lo, d_hi) = (m.d_lo, m.d_hi);
+            let set = if hole {
                 RingSet::Hole { d_lo, d_hi }
+            } else {
+                RingSet::Outer { d_lo, d_hi }
             };
-            let r_tl = ring_timeline(look, s, v, &r, set, delta);
+            // Static rings: δ_v is the projection's alone; the reach covers every set.
+            let reach = (d_hi.max(0.0) + (dp + m.extra_area) * (1.0 + 8.0 * U)).next_up();
+            let r_tl = match prepared.far_from(k, ring, a0, a1, reach) {
+                Some(true) => Timeline::constant(0.0, look, far_value(area, k, ring, a0, hole)),
+                _ => {
+                    let (r, dv) = stand_in(area, k, ring, t0, t1, h);
+                    // δ summed in f64 (a few terms): relative rounding below 1e-15, covered.
+                    let delta = (dp + dv + m.extra_area) * (1.0 + 8.0 * U);
+                    ring_timeline(look, s, v, &r, set, delta)
+                }
+            };
             tl = Some(match tl {
                 None => r_tl,
                 Some(t) => t.and(&r_tl),
@@ -314,8 +384,5 @@ pub(super) fn piece_timeline(
         }
     }
     let vert = vertical(area, h_sep, z0, z1, h, look);
-    region
-        .and(&vert)
-        .shifted(t0)
-        .clipped(t0, t1)
+    region.and(&vert).shifted(t0).clipped(t0, t1)
 }

@@ -79,6 +79,10 @@ pub struct TimeSpan {
     pub certain: bool,
 }
 
+use super::piece::{piece_timeline, Margins};
+use super::prepared::Prepared;
+use super::timeline::Timeline;
+
 /// Why the planar spans cannot be computed.
 #[derive(Clone, Debug, PartialEq)]
 pub enum PlaneError {
@@ -137,7 +141,6 @@ pub fn split_segments(fixes: &[PlaneFix], max_gap: f64) -> Vec<core::ops::Range<
     out
 }
 
-
 /// `x` when finite.
 fn finite(what: impl FnOnce() -> String, x: f64) -> Result<(), PlaneError> {
     if x.is_finite() {
@@ -150,26 +153,40 @@ fn finite(what: impl FnOnce() -> String, x: f64) -> Result<(), PlaneError> {
 /// The planar model's rules (docs/moving-features.md) on one segment and one area.
 fn validate(fixes: &[PlaneFix], area: &PlaneArea) -> Result<(), PlaneError> {
     for (i, f) in fixes.iter().enumerate() {
-        for (name, x) in [("t", f.t), ("x", f.x), ("y", f.y), ("z", f.z.unwrap_or(0.0))] {
+        for (name, x) in [
+            ("t", f.t),
+            ("x", f.x),
+            ("y", f.y),
+            ("z", f.z.unwrap_or(0.0)),
+        ] {
             finite(|| format!("fixes[{i}].{name}"), x)?;
         }
         if i > 0 && f.t <= fixes[i - 1].t {
-            return Err(PlaneError::NotIncreasing { what: "fixes".into() });
+            return Err(PlaneError::NotIncreasing {
+                what: "fixes".into(),
+            });
         }
     }
     let Some(first) = area.frames.first() else {
-        return Err(PlaneError::Degenerate { what: "area.frames".into() });
+        return Err(PlaneError::Degenerate {
+            what: "area.frames".into(),
+        });
     };
     for (k, f) in area.frames.iter().enumerate() {
         finite(|| format!("frames[{k}].t"), f.t)?;
         if k > 0 && !area.is_static && f.t <= area.frames[k - 1].t {
-            return Err(PlaneError::NotIncreasing { what: "frames".into() });
+            return Err(PlaneError::NotIncreasing {
+                what: "frames".into(),
+            });
         }
         let same = f.parts.len() == first.parts.len()
             && f.parts.iter().zip(&first.parts).all(|(a, b)| {
                 a.outer.len() == b.outer.len()
                     && a.holes.len() == b.holes.len()
-                    && a.holes.iter().zip(&b.holes).all(|(x, y)| x.len() == y.len())
+                    && a.holes
+                        .iter()
+                        .zip(&b.holes)
+                        .all(|(x, y)| x.len() == y.len())
             });
         if !same {
             return Err(PlaneError::StructureChanges { frame: k });
@@ -183,14 +200,19 @@ fn validate(fixes: &[PlaneFix], area: &PlaneArea) -> Result<(), PlaneError> {
                 }
                 for (i, p) in ring.iter().enumerate() {
                     for c in 0..2 {
-                        finite(|| format!("frames[{k}].parts[{j}] ring {r}[{i}][{c}]"), p[c])?;
+                        finite(
+                            || format!("frames[{k}].parts[{j}] ring {r}[{i}][{c}]"),
+                            p[c],
+                        )?;
                     }
                 }
             }
         }
     }
     if first.parts.is_empty() {
-        return Err(PlaneError::Degenerate { what: "area.frames[0].parts".into() });
+        return Err(PlaneError::Degenerate {
+            what: "area.frames[0].parts".into(),
+        });
     }
     for (name, x) in [("floor", area.floor), ("ceiling", area.ceiling)] {
         if let Some(x) = x {
@@ -212,8 +234,41 @@ pub fn plane_spans(
     relation: PlaneRelation,
 ) -> Result<Vec<TimeSpan>, PlaneError> {
     validate(fixes, area)?;
+    let prepared = Prepared::new(area);
+    let (h, m) = match relation {
+        PlaneRelation::Inside => (
+            0.0,
+            Margins {
+                d_lo: 0.0,
+                d_hi: 0.0,
+                extra_point: 0.0,
+                extra_area: 0.0,
+            },
+        ),
+        PlaneRelation::Near { d_lo, d_hi, h } => (
+            h,
+            Margins {
+                d_lo,
+                d_hi,
+                extra_point: 0.0,
+                extra_area: 0.0,
+            },
+        ),
+    };
+    Ok(spans_with(fixes, area, &prepared, h, &|_, _| m))
+}
+
+/// [`plane_spans`] on validated input, with `margins` of each piece [t0, t1] (the Earth
+/// layer's) and the vertical separation `h_sep` (0 for inside).
+pub(crate) fn spans_with(
+    fixes: &[PlaneFix],
+    area: &PlaneArea,
+    prepared: &Prepared,
+    h_sep: f64,
+    margins: &dyn Fn(f64, f64) -> Margins,
+) -> Vec<TimeSpan> {
     let (Some(first), Some(last)) = (fixes.first(), fixes.last()) else {
-        return Ok(Vec::new());
+        return Vec::new();
     };
     let (mut a, mut b) = (first.t, last.t);
     if !area.is_static && area.frames.len() > 1 {
@@ -221,15 +276,15 @@ pub fn plane_spans(
         b = b.min(area.frames[area.frames.len() - 1].t);
     }
     if a > b {
-        return Ok(Vec::new());
+        return Vec::new();
     }
     if a == b {
         // One instant: the engine needs a duration; say "maybe" there.
-        return Ok(vec![TimeSpan {
+        return vec![TimeSpan {
             start: [a, a],
             end: [a, a],
             certain: false,
-        }]);
+        }];
     }
     let mut cuts: Vec<f64> = vec![a, b];
     cuts.extend(fixes.iter().map(|f| f.t).filter(|&t| t > a && t < b));
@@ -238,13 +293,21 @@ pub fn plane_spans(
     }
     cuts.sort_by(f64::total_cmp);
     cuts.dedup();
-    let mut tl: Option<super::timeline::Timeline> = None;
+    let mut tl: Option<Timeline> = None;
     for w in cuts.windows(2) {
-        let p = super::piece::piece_timeline(fixes, area, relation, w[0], w[1]);
+        let p = piece_timeline(
+            fixes,
+            area,
+            prepared,
+            h_sep,
+            margins(w[0], w[1]),
+            w[0],
+            w[1],
+        );
         tl = Some(match tl {
             None => p,
             Some(t) => t.then(&p),
         });
     }
-    Ok(tl.map(|t| t.closed().to_spans()).unwrap_or_default())
+    tl.map(|t| t.closed().to_spans()).unwrap_or_default()
 }

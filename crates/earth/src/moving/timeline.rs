@@ -167,7 +167,10 @@ impl Timeline {
         let mut t: Vec<f64> = self.t.iter().chain(o.t.iter()).copied().collect();
         t.sort_by(f64::total_cmp);
         t.dedup();
-        let at = t.iter().map(|&x| f(self.value_at(x), o.value_at(x))).collect();
+        let at = t
+            .iter()
+            .map(|&x| f(self.value_at(x), o.value_at(x)))
+            .collect();
         let between = t
             .windows(2)
             .map(|w| f(self.value_over(w[0], w[1]), o.value_over(w[0], w[1])))

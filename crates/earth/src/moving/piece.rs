@@ -111,6 +111,28 @@ fn ring_at(area: &PlaneArea, part: usize, ring: usize, t: f64) -> (Vec<[f64; 2]>
     (pts, err)
 }
 
+/// The area's polygons at time `t` (interpolated between keyframes), and the largest
+/// error bound (L1) of a vertex.
+pub(super) fn frame_at(area: &PlaneArea, t: f64) -> (PlaneFrame, f64) {
+    let mut err: f64 = 0.0;
+    let parts = area.frames[0]
+        .parts
+        .iter()
+        .enumerate()
+        .map(|(k, part)| {
+            let mut ring = |r: usize| {
+                let (v, e) = ring_at(area, k, r, t);
+                err = err.max(e);
+                v
+            };
+            let outer = ring(0);
+            let holes = (1..=part.holes.len()).map(&mut ring).collect();
+            super::plane::PlaneRings { outer, holes }
+        })
+        .collect();
+    (PlaneFrame { t, parts }, err)
+}
+
 /// The unit roundoff of f64, 2⁻⁵³.
 const U: f64 = f64::EPSILON / 2.0;
 
@@ -305,6 +327,8 @@ pub(crate) struct Margins {
     pub extra_point: f64,
     /// Added to δ_v.
     pub extra_area: f64,
+    /// Added to the heights' error bounds at the piece's ends (feet).
+    pub extra_z: f64,
 }
 
 /// The value over a piece of a ring's set when the piece is far from the ring
@@ -353,7 +377,22 @@ pub(super) fn piece_timeline(
     let v = Vect2::new(da[0] / h, da[1] / h);
     let frame0 = &area.frames[0];
     let mut region = Timeline::constant(0.0, look, Holds::No);
-    for (k, part) in frame0.parts.iter().enumerate() {
+    // Far from the area's box: outside every ring by more than every set's reach. A
+    // keyframed vertex's interpolation error is below 80u times the coordinates' size.
+    let c = prepared
+        .magnitude()
+        .max(a0[0].abs())
+        .max(a0[1].abs())
+        .max(a1[0].abs())
+        .max(a1[1].abs());
+    let reach_box =
+        ((m.d_hi.max(0.0) + dp + m.extra_area) * (1.0 + 8.0 * U) + 128.0 * U * c).next_up();
+    let parts = if prepared.box_meets(a0, a1, reach_box) {
+        &frame0.parts[..]
+    } else {
+        &[]
+    };
+    for (k, part) in parts.iter().enumerate() {
         let mut tl: Option<Timeline> = None;
         for ring in 0..=part.holes.len() {
             let hole = ring > 0;
@@ -383,6 +422,7 @@ pub(super) fn piece_timeline(
             region = region.or(&t);
         }
     }
-    let vert = vertical(area, h_sep, z0, z1, h, look);
+    let widen = |z: Option<(f64, f64)>| z.map(|(z, e)| (z, e + m.extra_z));
+    let vert = vertical(area, h_sep, widen(z0), widen(z1), h, look);
     region.and(&vert).shifted(t0).clipped(t0, t1)
 }

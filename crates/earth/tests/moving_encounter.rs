@@ -180,4 +180,3 @@ fn bad_positions_are_named() {
         "floor_ft"
     );
 }
-

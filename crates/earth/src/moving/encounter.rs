@@ -116,7 +116,7 @@ impl fmt::Display for EncounterError {
 impl std::error::Error for EncounterError {}
 
 /// `lon + 360·k` for the integer k that brings it within 180° of `reference` (degrees).
-fn unwrap_near(lon: f64, reference: f64) -> f64 {
+pub(crate) fn unwrap_near(lon: f64, reference: f64) -> f64 {
     let k = ((reference - lon) / 360.0).round();
     lon + 360.0 * k
 }

@@ -110,9 +110,7 @@ fn segment_boxes(traj: &Trajectory, opts: &Options) -> Vec<[f64; 4]> {
     let mut prev: Option<(f64, f64)> = None;
     for f in &traj.fixes {
         let lon = match prev {
-            Some((t, l)) if f.t - t <= opts.max_gap_s => {
-                l + ((f.lon - l + 180.0).rem_euclid(360.0) - 180.0)
-            }
+            Some((t, l)) if f.t - t <= opts.max_gap_s => unwrap_near(f.lon, l),
             _ => {
                 if let Some(b) = cur.take() {
                     out.push(b);

@@ -2,5 +2,17 @@
 //! certified intervals of inside and of loss of separation (docs/moving-features.md).
 //!
 //! - [`model`]: the fixes, trajectories and areas the readers give and the engine takes.
+//! - [`time`]: RFC 3339 date-times to epoch seconds and back (rounded in a direction).
+//! - [`error`]: the readers' errors and warnings, each naming line, feature and member.
+//! - [`mfjson`]: OGC Moving Features JSON (trajectories, MovingPoint, MovingPolygon) and
+//!   GeoJSON areas, as a FeatureCollection, one Feature or JSON Lines.
+//! - [`geojson`]: GeoJSON positions, rings and polygons, checked, with their locations.
+//! - [`fixes_csv`]: a CSV of fixes (traffic and OpenSky columns), grouped into
+//!   trajectories.
 
+pub mod error;
+pub mod fixes_csv;
+pub mod geojson;
+pub mod mfjson;
 pub mod model;
+pub mod time;

@@ -83,19 +83,24 @@ struct Inputs {
 fn read_input(path: &Path, want_movers: bool, inp: &mut Inputs) -> Result<(), String> {
     let text = read_text(path)?;
     let name = path.display().to_string();
-    let is_csv = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("csv"));
+    let is_csv = path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("csv"));
     if is_csv {
         if !want_movers {
             return Err(format!("{name}: a CSV holds fixes of movers, not areas"));
         }
         let r = fixes_csv::read(&text).map_err(|e| format!("{name}: {e}"))?;
         inp.movers.extend(r.trajectories);
-        inp.errors.extend(r.errors.iter().map(|e| format!("{name}: {e}")));
-        inp.warnings.extend(r.warnings.iter().map(|w| format!("{name}: {w}")));
+        inp.errors
+            .extend(r.errors.iter().map(|e| format!("{name}: {e}")));
+        inp.warnings
+            .extend(r.warnings.iter().map(|w| format!("{name}: {w}")));
         return Ok(());
     }
     let r = mfjson::read(&text).map_err(|e| format!("{name}: {e}"))?;
-    inp.warnings.extend(r.warnings.iter().map(|w| format!("{name}: {w}")));
+    inp.warnings
+        .extend(r.warnings.iter().map(|w| format!("{name}: {w}")));
     for (i, item) in r.items.into_iter().enumerate() {
         match item {
             Ok(mfjson::Item::Mover(t)) if want_movers => inp.movers.push(t),
@@ -148,7 +153,11 @@ fn encounter_json(e: &Encounter) -> Value {
 /// Runs `polyguard encounters`.
 pub fn run(a: &EncountersArgs) -> ExitCode {
     let started = Instant::now();
-    for (name, x) in [("--sep", a.sep), ("--sep-v", a.sep_v), ("--max-gap", a.max_gap)] {
+    for (name, x) in [
+        ("--sep", a.sep),
+        ("--sep-v", a.sep_v),
+        ("--max-gap", a.max_gap),
+    ] {
         if !x.is_finite() || x < 0.0 {
             eprintln!("polyguard encounters: {name} {x}: must be a finite number ≥ 0");
             return ExitCode::from(EXIT_FATAL);
@@ -168,7 +177,8 @@ pub fn run(a: &EncountersArgs) -> ExitCode {
         geodesy: a.geodesy.into(),
     };
     let (areas, area_errors) = Areas::new(&inp.areas, opts.geodesy);
-    inp.errors.extend(area_errors.iter().map(|e| format!("area {e}")));
+    inp.errors
+        .extend(area_errors.iter().map(|e| format!("area {e}")));
     let read_s = started.elapsed().as_secs_f64();
 
     let mut out: Box<dyn Write> = match &a.output {
@@ -216,7 +226,12 @@ pub fn run(a: &EncountersArgs) -> ExitCode {
         let gaps = inp
             .movers
             .iter()
-            .map(|t| t.fixes.windows(2).filter(|w| w[1].t - w[0].t > a.max_gap).count())
+            .map(|t| {
+                t.fixes
+                    .windows(2)
+                    .filter(|w| w[1].t - w[0].t > a.max_gap)
+                    .count()
+            })
             .sum::<usize>();
         let fixes: usize = inp.movers.iter().map(|t| t.fixes.len()).sum();
         eprintln!(

@@ -10,6 +10,7 @@
 //! longitudes, is queried; an area whose box it misses is farther than D from the
 //! segment at every time, so the pair has no span.
 
+use super::{next_down, next_up};
 use rstar::primitives::{GeomWithData, Rectangle};
 use rstar::{RTree, AABB};
 
@@ -87,8 +88,8 @@ impl Areas {
         for k in k_lo..=k_hi {
             let s = k as f64 * TURN;
             let env = AABB::from_corners(
-                [(x0 - s).next_down(), y0.next_down()],
-                [(x1 - s).next_up(), y1.next_up()],
+                [next_down(x0 - s), next_down(y0)],
+                [next_up(x1 - s), next_up(y1)],
             );
             out.extend(
                 self.tree

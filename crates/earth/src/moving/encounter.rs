@@ -623,7 +623,12 @@ pub fn encounter(
         if n.is_empty() {
             continue;
         }
-        inside.extend(segment_spans(&seg, area, opts, false));
+        if opts.sep_nm == 0.0 && opts.sep_v_ft == 0.0 {
+            // near with D = H = 0 is inside.
+            inside.extend(n.iter().copied());
+        } else {
+            inside.extend(segment_spans(&seg, area, opts, false));
+        }
         near.extend(n);
     }
     if near.is_empty() {

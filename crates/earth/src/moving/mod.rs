@@ -28,3 +28,45 @@ pub mod plane;
 pub mod prepared;
 pub mod time;
 pub mod timeline;
+
+/// The next f64 above `x` (`f64::next_up`, which the minimum Rust version lacks); NaN
+/// and +∞ stay.
+pub(crate) fn next_up(x: f64) -> f64 {
+    if x.is_nan() || x == f64::INFINITY {
+        return x;
+    }
+    if x == 0.0 {
+        return f64::from_bits(1);
+    }
+    let b = x.to_bits();
+    f64::from_bits(if x > 0.0 { b + 1 } else { b - 1 })
+}
+
+/// The next f64 below `x`.
+pub(crate) fn next_down(x: f64) -> f64 {
+    -next_up(-x)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{next_down, next_up};
+
+    #[test]
+    fn next_up_and_down_step_one_ulp_either_side() {
+        for x in [
+            0.0,
+            -0.0,
+            1.0,
+            -1.0,
+            1.5e300,
+            -2.5e-310,
+            f64::MAX,
+            f64::MIN_POSITIVE,
+        ] {
+            let (u, d) = (next_up(x), next_down(x));
+            assert!(u > x && d < x, "{x}");
+            assert!(next_down(u) == x && next_up(d) == x, "{x}");
+        }
+        assert_eq!(next_up(f64::MAX), f64::INFINITY);
+    }
+}

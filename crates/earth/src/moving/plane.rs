@@ -79,7 +79,7 @@ pub struct TimeSpan {
     pub certain: bool,
 }
 
-use super::piece::{piece_timeline, Margins};
+use super::piece::{piece_timeline, FarCache, Margins};
 use super::prepared::Prepared;
 use super::timeline::Timeline;
 
@@ -199,11 +199,8 @@ fn validate(fixes: &[PlaneFix], area: &PlaneArea) -> Result<(), PlaneError> {
                     });
                 }
                 for (i, p) in ring.iter().enumerate() {
-                    for c in 0..2 {
-                        finite(
-                            || format!("frames[{k}].parts[{j}] ring {r}[{i}][{c}]"),
-                            p[c],
-                        )?;
+                    for (c, x) in p.iter().enumerate() {
+                        finite(|| format!("frames[{k}].parts[{j}] ring {r}[{i}][{c}]"), *x)?;
                     }
                 }
             }
@@ -294,8 +291,10 @@ pub(crate) fn timeline_with(
     cuts.sort_by(f64::total_cmp);
     cuts.dedup();
     let mut tl: Option<Timeline> = None;
+    let mut cache = FarCache::default();
     for w in cuts.windows(2) {
         let p = piece_timeline(
+            &mut cache,
             fixes,
             area,
             prepared,
@@ -329,6 +328,15 @@ fn instant(fixes: &[PlaneFix], area: &PlaneArea, h_sep: f64, m: Margins, a: f64)
     };
     let p = fixes.iter().find(|f| f.t == a).copied().unwrap_or(fixes[0]);
     let still = [PlaneFix { t: 0.0, ..p }, PlaneFix { t: 1.0, ..p }];
-    let tl = piece_timeline(&still, &frozen, &Prepared::new(&frozen), h_sep, m, 0.0, 1.0);
+    let tl = piece_timeline(
+        &mut FarCache::default(),
+        &still,
+        &frozen,
+        &Prepared::new(&frozen),
+        h_sep,
+        m,
+        0.0,
+        1.0,
+    );
     Timeline::constant(a, a, tl.value_at(0.0))
 }

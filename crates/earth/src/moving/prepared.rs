@@ -10,6 +10,7 @@
 //! (piece module doc). So the ring's sets are constant over the piece, and the winding
 //! number at the piece's start, computed exactly ([`winding`]), decides them.
 
+use super::{next_down, next_up};
 use rstar::primitives::{GeomWithData, Rectangle};
 use rstar::{RTree, AABB};
 
@@ -74,10 +75,10 @@ impl Prepared {
     pub fn box_meets(&self, a: [f64; 2], b: [f64; 2], reach: f64) -> bool {
         let lo = [a[0].min(b[0]) - reach, a[1].min(b[1]) - reach];
         let hi = [a[0].max(b[0]) + reach, a[1].max(b[1]) + reach];
-        lo[0].next_down() <= self.bbox[2]
-            && self.bbox[0] <= hi[0].next_up()
-            && lo[1].next_down() <= self.bbox[3]
-            && self.bbox[1] <= hi[1].next_up()
+        next_down(lo[0]) <= self.bbox[2]
+            && self.bbox[0] <= next_up(hi[0])
+            && next_down(lo[1]) <= self.bbox[3]
+            && self.bbox[1] <= next_up(hi[1])
     }
 
     /// Whether ring `ring` of part `part` has no edge whose box meets the box of the
@@ -93,12 +94,12 @@ impl Prepared {
     ) -> Option<bool> {
         let tree = self.rings.get(part)?.get(ring)?;
         let lo = [
-            (a[0].min(b[0]) - reach).next_down(),
-            (a[1].min(b[1]) - reach).next_down(),
+            next_down(a[0].min(b[0]) - reach),
+            next_down(a[1].min(b[1]) - reach),
         ];
         let hi = [
-            (a[0].max(b[0]) + reach).next_up(),
-            (a[1].max(b[1]) + reach).next_up(),
+            next_up(a[0].max(b[0]) + reach),
+            next_up(a[1].max(b[1]) + reach),
         ];
         let env = AABB::from_corners(lo, hi);
         Some(tree.locate_in_envelope_intersecting(&env).next().is_none())

@@ -180,3 +180,33 @@ fn bad_positions_are_named() {
         "floor_ft"
     );
 }
+
+#[test]
+fn a_fix_without_altitude_takes_the_line_between_its_neighbours() {
+    // Climbing 0 → 2000 ft over 200 s through a ceiling of 1000 ft, the middle fix without
+    // altitude: the model's altitude there is 1000 ft, so inside ends at t = 100 s.
+    let mut f = flight(&[(0.0, 0.0, 49.0), (100.0, 0.001, 49.0), (200.0, 0.002, 49.0)]);
+    f.fixes[0].alt_ft = Some(0.0);
+    f.fixes[1].alt_ft = None;
+    f.fixes[2].alt_ft = Some(2000.0);
+    let mut a = boxed(-0.5, 48.5, 1.5, 49.5);
+    a.ceiling_ft = Some(1000.0);
+    let pa = PreparedArea::new(&a, Geodesy::Sphere).unwrap();
+    let e = encounter(
+        &f,
+        &pa,
+        &Options {
+            max_gap_s: 1e9,
+            ..Options::default()
+        },
+    )
+    .unwrap()
+    .unwrap();
+    assert_eq!(e.inside.len(), 1, "{:?}", e.inside);
+    let s = e.inside[0];
+    assert!(
+        s.certain && s.end[0] <= T0 + 100.0 && T0 + 100.0 <= s.end[1],
+        "{s:?}"
+    );
+    assert!(s.end[1] - s.end[0] < 1e-3, "{s:?}");
+}

@@ -423,6 +423,25 @@ fn cut_leg(geo: Geodesy, a: &Placed, b: &Placed, k: usize, slack: f64) -> Vec<Pl
     out
 }
 
+/// The model's altitude at fixes that carry none: linear in time between the nearest
+/// fixes before and after that carry one (docs/moving-features.md), with its rounding
+/// (8u(|z_a| + |Δz|), as an interpolation); fixes before the first or after the last
+/// altitude of the segment keep none.
+fn fill_altitudes(raw: &mut [Placed]) {
+    let known: Vec<usize> = (0..raw.len()).filter(|&i| raw[i].fix.z.is_some()).collect();
+    for w in known.windows(2) {
+        let (a, b) = (raw[w[0]], raw[w[1]]);
+        let (Some(za), Some(zb)) = (a.fix.z, b.fix.z) else {
+            continue;
+        };
+        for p in &mut raw[w[0] + 1..w[1]] {
+            let f = (p.fix.t - a.fix.t) / (b.fix.t - a.fix.t);
+            p.fix.z = Some(za + f * (zb - za));
+            p.err_z = 8.0 * U * (za.abs() + (zb - za).abs());
+        }
+    }
+}
+
 /// The mover's fixes `f` (one segment) unwrapped, checked and projected; legs whose
 /// rhumb deviation exceeds [`RHUMB_RESOLUTION`] cut at points of the model's motion.
 fn segment_on_plane(
@@ -471,6 +490,7 @@ fn segment_on_plane(
             err_z: 0.0,
         });
     }
+    fill_altitudes(&mut raw);
     let c = raw
         .iter()
         .fold(0.0f64, |m, p| m.max(p.fix.x.abs()).max(p.fix.y.abs()))

@@ -12,7 +12,7 @@
 //! - a static area as a geometry `Polygon` or `MultiPolygon`.
 
 use super::error::{ErrorKind, Location, MovingError, MovingWarning, WarningKind};
-use super::geojson::{multi_polygon, polygon, position, Ctx};
+use super::geojson::{multi_polygon, polygon, position, ring, Ctx};
 use super::model::{Area, Fix, Keyframe, Rings, Shape, Trajectory};
 use super::time;
 use crate::json::{self, Json, Lines, Member, Node};
@@ -644,8 +644,20 @@ fn temporal(
     }
 }
 
-/// The polygons of a MovingPolygon, one per instant, each with the rings and vertex
-/// counts of the first (the model's keyframes; OGC 19-045r3 requires it for Linear).
+/// Whether a MovingPolygon's instant is written as one linear ring (positions: its first
+/// element's first element is a number), as OGC 19-045r3 writes the exterior ring, rather
+/// than as GeoJSON Polygon coordinates (rings: outer then holes).
+fn is_ring(p: &Node) -> bool {
+    p.elements()
+        .and_then(<[Node]>::first)
+        .and_then(Node::elements)
+        .and_then(<[Node]>::first)
+        .is_some_and(|x| matches!(x.value, Json::Number(_) | Json::NotJson(_)))
+}
+
+/// The polygons of a MovingPolygon, one per instant (each a linear ring, or a GeoJSON
+/// Polygon's rings with holes), each with the rings and vertex counts of the first (the
+/// model's keyframes; OGC 19-045r3 requires it for Linear).
 fn keyframes(ctx: &Ctx, coords: &Node, times: &Node, t: &[f64]) -> Result<Vec<Keyframe>, MovingError> {
     let member = "temporalGeometry.coordinates";
     let e = ctx.array(coords, member)?;
@@ -668,7 +680,14 @@ fn keyframes(ctx: &Ctx, coords: &Node, times: &Node, t: &[f64]) -> Result<Vec<Ke
     let mut frames: Vec<Keyframe> = Vec::with_capacity(e.len());
     for (k, p) in e.iter().enumerate() {
         let m = format!("{member}[{k}]");
-        let rings = polygon(ctx, p, &m)?;
+        let rings = if is_ring(p) {
+            Rings {
+                outer: ring(ctx, p, &m)?,
+                holes: Vec::new(),
+            }
+        } else {
+            polygon(ctx, p, &m)?
+        };
         if let Some(first) = frames.first() {
             let shape = |r: &Rings| {
                 std::iter::once(r.outer.len())

@@ -46,7 +46,11 @@ const COORDS3: &str = "[[2.0, 48.0], [2.01, 48.0], [2.02, 48.01]]";
 
 #[test]
 fn a_moving_point_reads_as_a_mover() {
-    let Item::Mover(t) = only_item(&moving_point(TIMES3, COORDS3, r#", "interpolation": "Linear""#)) else {
+    let Item::Mover(t) = only_item(&moving_point(
+        TIMES3,
+        COORDS3,
+        r#", "interpolation": "Linear""#,
+    )) else {
         panic!("not a mover")
     };
     assert_eq!(t.id, "AFR12");
@@ -64,10 +68,17 @@ fn heights_in_positions_are_metres_and_altitude_properties_take_their_unit() {
         panic!("not a mover")
     };
     let alts: Vec<Option<f64>> = t.fixes.iter().map(|f| f.alt_ft).collect();
-    assert_eq!(alts, [Some(304.8 / M_PER_FT), Some(0.0), Some(3048.0 / M_PER_FT)]);
+    assert_eq!(
+        alts,
+        [Some(304.8 / M_PER_FT), Some(0.0), Some(3048.0 / M_PER_FT)]
+    );
     assert!((alts[0].expect("alt") - 1000.0).abs() <= 1000.0 * 4.0 * f64::EPSILON);
 
-    for (form, factor) in [("\"[ft_i]\"", 1.0), ("\"FOT\"", 1.0), ("\"MTR\"", 1.0 / M_PER_FT)] {
+    for (form, factor) in [
+        ("\"[ft_i]\"", 1.0),
+        ("\"FOT\"", 1.0),
+        ("\"MTR\"", 1.0 / M_PER_FT),
+    ] {
         let text = moving_point(TIMES3, COORDS3, "").replacen(
             r#""temporalGeometry""#,
             &format!(
@@ -106,7 +117,11 @@ fn movingpandas_output_reads_with_one_warning_for_naive_times() {
     assert_eq!(t.fixes[0].alt_ft, Some(1225.0));
     assert_eq!(t.fixes[1].alt_ft, None);
     let kinds: Vec<WarningKind> = r.warnings.iter().map(|w| w.kind).collect();
-    assert_eq!(kinds, [WarningKind::NoOffset, WarningKind::UnitAssumed], "{r:?}");
+    assert_eq!(
+        kinds,
+        [WarningKind::NoOffset, WarningKind::UnitAssumed],
+        "{r:?}"
+    );
 }
 
 #[test]
@@ -152,11 +167,17 @@ fn static_and_keyframed_areas() {
         .collect();
     assert_eq!(areas[0].id, "CTR");
     assert_eq!(areas[0].name.as_deref(), Some("Paris CTR"));
-    assert_eq!((areas[0].floor_ft, areas[0].ceiling_ft), (Some(0.0), Some(3500.0)));
+    assert_eq!(
+        (areas[0].floor_ft, areas[0].ceiling_ft),
+        (Some(0.0), Some(3500.0))
+    );
     let Shape::Static(parts) = &areas[0].shape else {
         panic!("static")
     };
-    assert_eq!(parts[0].outer, [[2.0, 48.0], [3.0, 48.0], [3.0, 49.0], [2.0, 49.0]]);
+    assert_eq!(
+        parts[0].outer,
+        [[2.0, 48.0], [3.0, 48.0], [3.0, 49.0], [2.0, 49.0]]
+    );
     assert_eq!(parts[0].holes.len(), 1);
     assert_eq!(areas[1].id, "1");
     assert!(matches!(&areas[1].shape, Shape::Static(p) if p.len() == 2));
@@ -164,7 +185,10 @@ fn static_and_keyframed_areas() {
         panic!("keyframed")
     };
     assert_eq!((k.len(), k[1].t - k[0].t), (2, 900.0));
-    assert_eq!((areas[2].floor_ft, areas[2].ceiling_ft), (None, Some(30000.0)));
+    assert_eq!(
+        (areas[2].floor_ft, areas[2].ceiling_ft),
+        (None, Some(30000.0))
+    );
     let Shape::Keyframed(k) = &areas[3].shape else {
         panic!("keyframed")
     };
@@ -179,7 +203,10 @@ fn json_lines_read_feature_by_feature() {
     assert_eq!(r.items.len(), 3);
     assert!(r.items[0].is_ok() && r.items[2].is_ok());
     let e = r.items[1].clone().expect_err("bad line");
-    assert_eq!((e.kind, e.at.line, e.at.feature), (ErrorKind::Syntax, Some(3), Some(1)));
+    assert_eq!(
+        (e.kind, e.at.line, e.at.feature),
+        (ErrorKind::Syntax, Some(3), Some(1))
+    );
 }
 
 #[test]
@@ -277,15 +304,20 @@ fn every_mfjson_error_names_its_kind_line_and_member() {
             "{e}\n{text}"
         );
         let shown = e.to_string();
-        assert!(shown.contains(member) && shown.contains(&format!("line {line}")), "{shown}");
+        assert!(
+            shown.contains(member) && shown.contains(&format!("line {line}")),
+            "{shown}"
+        );
     }
 }
 
 #[test]
 fn errors_name_the_feature_and_its_id_and_do_not_stop_the_others() {
     let good = moving_point(TIMES3, COORDS3, "");
-    let bad = moving_point(TIMES3, "[[2.0, 48.0], [2.0, 86], [2.02, 48.01]]", "").replace("AFR12", "BAD1");
-    let text = format!("{{\"type\": \"FeatureCollection\", \"features\": [{good}, {bad}, {good}]}}");
+    let bad = moving_point(TIMES3, "[[2.0, 48.0], [2.0, 86], [2.02, 48.01]]", "")
+        .replace("AFR12", "BAD1");
+    let text =
+        format!("{{\"type\": \"FeatureCollection\", \"features\": [{good}, {bad}, {good}]}}");
     let r = mf(&text);
     assert!(r.items[0].is_ok() && r.items[2].is_ok());
     let e = r.items[1].clone().expect_err("bad");
@@ -327,7 +359,14 @@ fn misspelt_area_properties_name_the_one_meant() {
     ] {
         assert_eq!(mfjson::misspelt(key), Some(meant), "{key}");
     }
-    for key in ["floor_ft", "ceiling_ft", "name", "LOWERLIMIT", "UPPERUNIT", "flow"] {
+    for key in [
+        "floor_ft",
+        "ceiling_ft",
+        "name",
+        "LOWERLIMIT",
+        "UPPERUNIT",
+        "flow",
+    ] {
         assert_eq!(mfjson::misspelt(key), None, "{key}");
     }
 }
@@ -335,7 +374,8 @@ fn misspelt_area_properties_name_the_one_meant() {
 // ---------------------------------------------------------------------------------------
 // CSV
 
-const CSV_HEAD: &str = "flight_id,timestamp,icao24,callsign,latitude,longitude,altitude,groundspeed\n";
+const CSV_HEAD: &str =
+    "flight_id,timestamp,icao24,callsign,latitude,longitude,altitude,groundspeed\n";
 
 fn csv(text: &str) -> CsvRead {
     fixes_csv::read(text).unwrap_or_else(|e| panic!("{e}\n{text}"))
@@ -354,13 +394,19 @@ fn a_traffic_csv_groups_by_flight_id() {
     assert!(r.errors.is_empty(), "{:?}", r.errors);
     assert_eq!(r.trajectories.len(), 2);
     let t = &r.trajectories[0];
-    assert_eq!((t.id.as_str(), t.callsign.as_deref()), ("ABR471_198", Some("ABR471")));
+    assert_eq!(
+        (t.id.as_str(), t.callsign.as_deref()),
+        ("ABR471_198", Some("ABR471"))
+    );
     assert_eq!(t.fixes[0].t, 1_633_613_267.0);
     assert_eq!((t.fixes[0].alt_ft, t.fixes[1].alt_ft), (Some(1225.0), None));
     assert_eq!(r.trajectories[1].callsign.as_deref(), Some("DLH,1"));
     assert_eq!(r.trajectories[1].fixes[1].t, 1_633_611_626.5);
     let kinds: Vec<WarningKind> = r.warnings.iter().map(|w| w.kind).collect();
-    assert_eq!(kinds, [WarningKind::UnknownColumns, WarningKind::NoPosition]);
+    assert_eq!(
+        kinds,
+        [WarningKind::UnknownColumns, WarningKind::NoPosition]
+    );
     assert!(r.warnings[0].detail.contains("groundspeed"));
     assert_eq!(r.warnings[1].at.line, Some(5));
 }
@@ -420,8 +466,14 @@ fn every_csv_row_error_names_line_and_column_and_is_skipped() {
 #[test]
 fn a_csv_without_a_required_column_is_one_error() {
     let e = fixes_csv::read("timestamp,icao24,lat,lon\n").expect_err("columns");
-    assert_eq!((e.kind, e.at.member.as_deref()), (ErrorKind::Missing, Some("column latitude")));
-    assert_eq!(fixes_csv::read("").expect_err("empty").kind, ErrorKind::Missing);
+    assert_eq!(
+        (e.kind, e.at.member.as_deref()),
+        (ErrorKind::Missing, Some("column latitude"))
+    );
+    assert_eq!(
+        fixes_csv::read("").expect_err("empty").kind,
+        ErrorKind::Missing
+    );
 }
 
 // ---------------------------------------------------------------------------------------
@@ -471,7 +523,11 @@ fn real_firs_and_cells_read() {
             let Ok(Item::Area(a)) = item else {
                 panic!("{name}: {item:?}")
             };
-            assert!(a.floor_ft.is_some() || a.ceiling_ft.is_some(), "{name}: {}", a.id);
+            assert!(
+                a.floor_ft.is_some() || a.ceiling_ft.is_some(),
+                "{name}: {}",
+                a.id
+            );
         }
     }
 }
@@ -492,8 +548,16 @@ fn whole_real_exports_read_without_error() {
         let name = path.display().to_string();
         if name.ends_with(".csv") {
             let r = csv(&text);
-            assert!(r.errors.is_empty(), "{name}: {:?}", &r.errors[..r.errors.len().min(5)]);
-            println!("{name}: {} trajectories, {} warnings", r.trajectories.len(), r.warnings.len());
+            assert!(
+                r.errors.is_empty(),
+                "{name}: {:?}",
+                &r.errors[..r.errors.len().min(5)]
+            );
+            println!(
+                "{name}: {} trajectories, {} warnings",
+                r.trajectories.len(),
+                r.warnings.len()
+            );
         } else if name.ends_with(".mf.json") || name.ends_with(".geojson") {
             let r = mf(&text);
             let errors: Vec<String> = r
@@ -501,8 +565,16 @@ fn whole_real_exports_read_without_error() {
                 .iter()
                 .filter_map(|i| i.as_ref().err().map(ToString::to_string))
                 .collect();
-            assert!(errors.is_empty(), "{name}: {:?}", &errors[..errors.len().min(5)]);
-            println!("{name}: {} features, {} warnings", r.items.len(), r.warnings.len());
+            assert!(
+                errors.is_empty(),
+                "{name}: {:?}",
+                &errors[..errors.len().min(5)]
+            );
+            println!(
+                "{name}: {} features, {} warnings",
+                r.items.len(),
+                r.warnings.len()
+            );
         }
     }
 }
@@ -516,13 +588,19 @@ fn num(x: f64) -> String {
 }
 
 fn positions(ring: &[[f64; 2]]) -> String {
-    let mut v: Vec<String> = ring.iter().map(|p| format!("[{}, {}]", num(p[0]), num(p[1]))).collect();
+    let mut v: Vec<String> = ring
+        .iter()
+        .map(|p| format!("[{}, {}]", num(p[0]), num(p[1])))
+        .collect();
     v.push(v[0].clone()); // GeoJSON rings are closed
     format!("[{}]", v.join(", "))
 }
 
 fn polygon_text(r: &Rings) -> String {
-    let rings: Vec<String> = std::iter::once(&r.outer).chain(&r.holes).map(|x| positions(x)).collect();
+    let rings: Vec<String> = std::iter::once(&r.outer)
+        .chain(&r.holes)
+        .map(|x| positions(x))
+        .collect();
     format!("[{}]", rings.join(", "))
 }
 
@@ -533,13 +611,20 @@ fn time_text(t: f64) -> String {
 /// A mover as an MF-JSON MovingPoint, altitudes as a temporal property in feet.
 fn write_mover(t: &Trajectory) -> String {
     let times: Vec<String> = t.fixes.iter().map(|f| time_text(f.t)).collect();
-    let coords: Vec<String> = t.fixes.iter().map(|f| format!("[{}, {}]", num(f.lon), num(f.lat))).collect();
+    let coords: Vec<String> = t
+        .fixes
+        .iter()
+        .map(|f| format!("[{}, {}]", num(f.lon), num(f.lat)))
+        .collect();
     let alts: Vec<String> = t
         .fixes
         .iter()
         .map(|f| f.alt_ft.map_or("null".into(), num))
         .collect();
-    let cs = t.callsign.as_ref().map_or(String::new(), |c| format!(r#""callsign": {c:?}"#));
+    let cs = t
+        .callsign
+        .as_ref()
+        .map_or(String::new(), |c| format!(r#""callsign": {c:?}"#));
     format!(
         r#"{{"type": "Feature", "id": {:?}, "properties": {{{cs}}},
  "temporalGeometry": {{"type": "MovingPoint", "interpolation": "Linear", "datetimes": [{}], "coordinates": [{}]}},
@@ -560,7 +645,11 @@ fn write_area(a: &Area) -> String {
     if let Some(c) = a.ceiling_ft {
         props.push(format!(r#""ceiling_ft": {}"#, num(c)));
     }
-    let head = format!(r#"{{"type": "Feature", "id": {:?}, "properties": {{{}}}, "#, a.id, props.join(", "));
+    let head = format!(
+        r#"{{"type": "Feature", "id": {:?}, "properties": {{{}}}, "#,
+        a.id,
+        props.join(", ")
+    );
     match &a.shape {
         Shape::Static(parts) if parts.len() == 1 => format!(
             r#"{head}"geometry": {{"type": "Polygon", "coordinates": {}}}}}"#,
@@ -568,7 +657,10 @@ fn write_area(a: &Area) -> String {
         ),
         Shape::Static(parts) => {
             let p: Vec<String> = parts.iter().map(polygon_text).collect();
-            format!(r#"{head}"geometry": {{"type": "MultiPolygon", "coordinates": [{}]}}}}"#, p.join(", "))
+            format!(
+                r#"{head}"geometry": {{"type": "MultiPolygon", "coordinates": [{}]}}}}"#,
+                p.join(", ")
+            )
         }
         Shape::Keyframed(k) => {
             let times: Vec<String> = k.iter().map(|f| time_text(f.t)).collect();
@@ -585,13 +677,26 @@ fn write_area(a: &Area) -> String {
 /// Fixes as a CSV with a flight_id column, quoting the callsign (RFC 4180), times as
 /// epoch seconds or RFC 3339 by turns.
 fn write_csv(ts: &[Trajectory]) -> String {
-    let mut out = String::from("flight_id,timestamp,icao24,callsign,latitude,longitude,altitude,track\n");
+    let mut out =
+        String::from("flight_id,timestamp,icao24,callsign,latitude,longitude,altitude,track\n");
     for t in ts {
         for (k, f) in t.fixes.iter().enumerate() {
-            let when = if k % 2 == 0 { num(f.t) } else { time::format(f.t, Round::Nearest).expect("time") };
-            let cs = t.callsign.as_ref().map_or(String::new(), |c| format!("\"{}\"", c.replace('"', "\"\"")));
+            let when = if k % 2 == 0 {
+                num(f.t)
+            } else {
+                time::format(f.t, Round::Nearest).expect("time")
+            };
+            let cs = t
+                .callsign
+                .as_ref()
+                .map_or(String::new(), |c| format!("\"{}\"", c.replace('"', "\"\"")));
             let alt = f.alt_ft.map_or(String::new(), num);
-            out.push_str(&format!("{},{when},abc123,{cs},{},{},{alt},90\n", t.id, num(f.lat), num(f.lon)));
+            out.push_str(&format!(
+                "{},{when},abc123,{cs},{},{},{alt},90\n",
+                t.id,
+                num(f.lat),
+                num(f.lon)
+            ));
         }
     }
     out
@@ -599,16 +704,20 @@ fn write_csv(ts: &[Trajectory]) -> String {
 
 /// Times: whole milliseconds of 2000 to 2040 (exact through RFC 3339 text), increasing.
 fn times(n: usize) -> impl Strategy<Value = Vec<f64>> {
-    (946_684_800_000i64..2_208_988_800_000, prop::collection::vec(1i64..600_000, n)).prop_map(|(start, steps)| {
-        let mut ms = start;
-        steps
-            .iter()
-            .map(|s| {
-                ms += s;
-                ms as f64 / 1000.0
-            })
-            .collect()
-    })
+    (
+        946_684_800_000i64..2_208_988_800_000,
+        prop::collection::vec(1i64..600_000, n),
+    )
+        .prop_map(|(start, steps)| {
+            let mut ms = start;
+            steps
+                .iter()
+                .map(|s| {
+                    ms += s;
+                    ms as f64 / 1000.0
+                })
+                .collect()
+        })
 }
 
 fn trajectory() -> impl Strategy<Value = Trajectory> {
@@ -617,15 +726,29 @@ fn trajectory() -> impl Strategy<Value = Trajectory> {
             "[A-Z]{3}[0-9]{1,4}",
             prop::option::of("[A-Z0-9 ,\"]{1,8}"),
             times(n),
-            prop::collection::vec((-180.0f64..=180.0, -85.0f64..=85.0, prop::option::of(-2000.0f64..60000.0)), n),
+            prop::collection::vec(
+                (
+                    -180.0f64..=180.0,
+                    -85.0f64..=85.0,
+                    prop::option::of(-2000.0f64..60000.0),
+                ),
+                n,
+            ),
         )
             .prop_map(|(id, callsign, ts, pos)| Trajectory {
                 id,
-                callsign: callsign.map(|c| c.trim().to_owned()).filter(|c| !c.is_empty()),
+                callsign: callsign
+                    .map(|c| c.trim().to_owned())
+                    .filter(|c| !c.is_empty()),
                 fixes: ts
                     .into_iter()
                     .zip(pos)
-                    .map(|(t, (lon, lat, alt_ft))| Fix { t, lon, lat, alt_ft })
+                    .map(|(t, (lon, lat, alt_ft))| Fix {
+                        t,
+                        lon,
+                        lat,
+                        alt_ft,
+                    })
                     .collect(),
             })
     })
@@ -633,25 +756,36 @@ fn trajectory() -> impl Strategy<Value = Trajectory> {
 
 fn ring(n: usize) -> impl Strategy<Value = Vec<[f64; 2]>> {
     // distinct vertices: a random polygon around a centre, by increasing angle
-    (-170.0f64..170.0, -80.0f64..80.0, prop::collection::vec(0.1f64..4.0, n)).prop_map(|(cx, cy, radii)| {
-        let n = radii.len();
-        radii
-            .iter()
-            .enumerate()
-            .map(|(k, r)| {
-                let a = std::f64::consts::TAU * k as f64 / n as f64;
-                [cx + r * a.cos(), cy + r * a.sin()]
-            })
-            .collect()
-    })
+    (
+        -170.0f64..170.0,
+        -80.0f64..80.0,
+        prop::collection::vec(0.1f64..4.0, n),
+    )
+        .prop_map(|(cx, cy, radii)| {
+            let n = radii.len();
+            radii
+                .iter()
+                .enumerate()
+                .map(|(k, r)| {
+                    let a = std::f64::consts::TAU * k as f64 / n as f64;
+                    [cx + r * a.cos(), cy + r * a.sin()]
+                })
+                .collect()
+        })
 }
 
 fn area() -> impl Strategy<Value = Area> {
     let bounds = prop::option::of(0.0f64..20000.0).prop_flat_map(|f| {
-        (Just(f), prop::option::of(f.unwrap_or(0.0)..f.unwrap_or(0.0) + 40000.0))
+        (
+            Just(f),
+            prop::option::of(f.unwrap_or(0.0)..f.unwrap_or(0.0) + 40000.0),
+        )
     });
     let static_shape = prop::collection::vec(
-        (3usize..9).prop_flat_map(ring).prop_map(|outer| Rings { outer, holes: vec![] }),
+        (3usize..9).prop_flat_map(ring).prop_map(|outer| Rings {
+            outer,
+            holes: vec![],
+        }),
         1..3,
     )
     .prop_map(Shape::Static);
@@ -661,18 +795,26 @@ fn area() -> impl Strategy<Value = Area> {
                 rings
                     .into_iter()
                     .zip(ts)
-                    .map(|(outer, t)| Keyframe { t, parts: vec![Rings { outer, holes: vec![] }] })
+                    .map(|(outer, t)| Keyframe {
+                        t,
+                        parts: vec![Rings {
+                            outer,
+                            holes: vec![],
+                        }],
+                    })
                     .collect(),
             )
         })
     });
-    ("[a-z]{1,6}", prop_oneof![static_shape, keyframed], bounds).prop_map(|(id, shape, (floor_ft, ceiling_ft))| Area {
-        id,
-        name: None,
-        shape,
-        floor_ft,
-        ceiling_ft,
-    })
+    ("[a-z]{1,6}", prop_oneof![static_shape, keyframed], bounds).prop_map(
+        |(id, shape, (floor_ft, ceiling_ft))| Area {
+            id,
+            name: None,
+            shape,
+            floor_ft,
+            ceiling_ft,
+        },
+    )
 }
 
 proptest! {

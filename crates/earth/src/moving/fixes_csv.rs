@@ -196,12 +196,27 @@ fn cell_err(line: usize, column: &str, kind: ErrorKind, detail: String) -> Movin
 }
 
 /// A number cell: finite, within `range` when given.
-fn number(line: usize, column: &str, cell: &str, range: Option<(f64, f64)>) -> Result<f64, MovingError> {
+fn number(
+    line: usize,
+    column: &str,
+    cell: &str,
+    range: Option<(f64, f64)>,
+) -> Result<f64, MovingError> {
     let x: f64 = cell.trim().parse().map_err(|_| {
-        cell_err(line, column, ErrorKind::WrongType, format!("{cell:?} is not a number"))
+        cell_err(
+            line,
+            column,
+            ErrorKind::WrongType,
+            format!("{cell:?} is not a number"),
+        )
     })?;
     if !x.is_finite() {
-        return Err(cell_err(line, column, ErrorKind::NotFinite, format!("{cell:?}")));
+        return Err(cell_err(
+            line,
+            column,
+            ErrorKind::NotFinite,
+            format!("{cell:?}"),
+        ));
     }
     if let Some((lo, hi)) = range {
         if !(lo..=hi).contains(&x) {
@@ -224,8 +239,14 @@ fn timestamp(line: usize, cell: &str, no_offset: &mut usize) -> Result<f64, Movi
         return time::epoch_seconds(x)
             .map_err(|why| cell_err(line, "timestamp", ErrorKind::OutOfRange, why));
     }
-    let p = time::parse(c)
-        .map_err(|why| cell_err(line, "timestamp", ErrorKind::BadTime, format!("{c:?}: {why}")))?;
+    let p = time::parse(c).map_err(|why| {
+        cell_err(
+            line,
+            "timestamp",
+            ErrorKind::BadTime,
+            format!("{c:?}: {why}"),
+        )
+    })?;
     if !p.has_offset {
         *no_offset += 1;
     }
@@ -234,11 +255,17 @@ fn timestamp(line: usize, cell: &str, no_offset: &mut usize) -> Result<f64, Movi
 
 /// A non-empty trimmed cell, or none.
 fn text(cell: Option<&String>) -> Option<String> {
-    cell.map(|c| c.trim()).filter(|c| !c.is_empty()).map(str::to_owned)
+    cell.map(|c| c.trim())
+        .filter(|c| !c.is_empty())
+        .map(str::to_owned)
 }
 
 /// One row: its group and its fix, or `Ok(None)` for a row without a position.
-fn row(cols: &Columns, r: &Record, no_offset: &mut usize) -> Result<Option<(Group, Fix)>, MovingError> {
+fn row(
+    cols: &Columns,
+    r: &Record,
+    no_offset: &mut usize,
+) -> Result<Option<(Group, Fix)>, MovingError> {
     let [ti, ii, lai, loi] = cols.required;
     let cell = |k: usize| r.fields[k].as_str();
     if cell(lai).trim().is_empty() && cell(loi).trim().is_empty() {
@@ -258,7 +285,15 @@ fn row(cols: &Columns, r: &Record, no_offset: &mut usize) -> Result<Option<(Grou
         Some(f) => Group::Flight(f),
         None => Group::Aircraft(icao24, callsign),
     };
-    Ok(Some((group, Fix { t, lon, lat, alt_ft })))
+    Ok(Some((
+        group,
+        Fix {
+            t,
+            lon,
+            lat,
+            alt_ft,
+        },
+    )))
 }
 
 /// One trajectory being built: its group, callsign, fixes and first line.
@@ -294,7 +329,11 @@ pub fn read(input: &str) -> Result<CsvRead, MovingError> {
                     ..Location::default()
                 },
                 ErrorKind::Syntax,
-                format!("{} fields, the header has {}", r.fields.len(), header.fields.len()),
+                format!(
+                    "{} fields, the header has {}",
+                    r.fields.len(),
+                    header.fields.len()
+                ),
             ));
             continue;
         }
@@ -413,8 +452,14 @@ mod tests {
         let r = records("a,\"b,c\",\"d\"\"e\"\r\n\n\"x\ny\",2,\n3,,\"\"").expect("csv");
         assert_eq!(r.len(), 3);
         assert_eq!(r[0].fields, ["a", "b,c", "d\"e"]);
-        assert_eq!((r[1].line, r[1].fields.clone()), (3, vec!["x\ny".into(), "2".into(), String::new()]));
-        assert_eq!((r[2].line, r[2].fields.clone()), (5, vec!["3".into(), String::new(), String::new()]));
+        assert_eq!(
+            (r[1].line, r[1].fields.clone()),
+            (3, vec!["x\ny".into(), "2".into(), String::new()])
+        );
+        assert_eq!(
+            (r[2].line, r[2].fields.clone()),
+            (5, vec!["3".into(), String::new(), String::new()])
+        );
         let e = records("a\n\"b").expect_err("open quote");
         assert_eq!(e.at.line, Some(2));
     }

@@ -74,7 +74,8 @@ impl Ctx<'_> {
 
     /// The elements of an array member.
     pub fn array<'n>(&self, n: &'n Node, member: &str) -> Result<&'n [Node], MovingError> {
-        n.elements().ok_or_else(|| self.wrong(n, member, "an array"))
+        n.elements()
+            .ok_or_else(|| self.wrong(n, member, "an array"))
     }
 }
 
@@ -87,7 +88,10 @@ pub fn position(ctx: &Ctx, n: &Node, member: &str) -> Result<([f64; 2], Option<f
             n.at,
             member,
             ErrorKind::WrongType,
-            format!("a position is [longitude, latitude], found {} numbers", e.len()),
+            format!(
+                "a position is [longitude, latitude], found {} numbers",
+                e.len()
+            ),
         ));
     }
     if e.len() > 3 {

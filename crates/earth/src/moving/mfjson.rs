@@ -278,7 +278,9 @@ fn feature_id(f: &Node, index: usize) -> String {
 
 /// One Feature: a mover or an area, or the error that makes it unusable.
 fn feature(ctx: &Ctx, f: &Node, warnings: &mut Vec<MovingWarning>) -> Result<Item, MovingError> {
-    let members = f.members().ok_or_else(|| ctx.wrong(f, "", "a Feature object"))?;
+    let members = f
+        .members()
+        .ok_or_else(|| ctx.wrong(f, "", "a Feature object"))?;
     let index = ctx.feature.unwrap_or(0);
     let ctx = &Ctx {
         id: Some(feature_id(f, index)),
@@ -312,7 +314,8 @@ fn feature(ctx: &Ctx, f: &Node, warnings: &mut Vec<MovingWarning>) -> Result<Ite
         None => None,
         Some(p) if p.value == Json::Null => None,
         Some(p) => {
-            p.members().ok_or_else(|| ctx.wrong(p, "properties", "an object or null"))?;
+            p.members()
+                .ok_or_else(|| ctx.wrong(p, "properties", "an object or null"))?;
             Some(p)
         }
     };
@@ -320,6 +323,18 @@ fn feature(ctx: &Ctx, f: &Node, warnings: &mut Vec<MovingWarning>) -> Result<Ite
     if let Some(tg) = f.get("temporalGeometry") {
         return temporal(ctx, f, tg, props, id, warnings);
     }
+    geometry(ctx, f, props, id, warnings)
+}
+
+/// A feature's GeoJSON `geometry`: LineString (with `properties.datetimes`) → mover,
+/// Polygon or MultiPolygon → static area.
+fn geometry(
+    ctx: &Ctx,
+    f: &Node,
+    props: Option<&Node>,
+    id: String,
+    warnings: &mut Vec<MovingWarning>,
+) -> Result<Item, MovingError> {
     let g = f
         .get("geometry")
         .filter(|g| g.value != Json::Null)
@@ -331,10 +346,17 @@ fn feature(ctx: &Ctx, f: &Node, warnings: &mut Vec<MovingWarning>) -> Result<Ite
                 "a feature needs a geometry (LineString, Polygon, MultiPolygon) or a temporalGeometry",
             )
         })?;
-    let gm = g.members().ok_or_else(|| ctx.wrong(g, "geometry", "an object"))?;
+    let gm = g
+        .members()
+        .ok_or_else(|| ctx.wrong(g, "geometry", "an object"))?;
     foreign(ctx, gm, &GEOMETRY_MEMBERS, "geometry", warnings);
     let coords = g.get("coordinates").ok_or_else(|| {
-        ctx.err(g.at, "geometry.coordinates", ErrorKind::Missing, "no coordinates")
+        ctx.err(
+            g.at,
+            "geometry.coordinates",
+            ErrorKind::Missing,
+            "no coordinates",
+        )
     })?;
     let member = "geometry.coordinates";
     match g.get("type").and_then(Node::as_str) {
@@ -363,9 +385,16 @@ fn feature(ctx: &Ctx, f: &Node, warnings: &mut Vec<MovingWarning>) -> Result<Ite
             g.at,
             "geometry.type",
             ErrorKind::Unsupported,
-            format!("geometry {other:?}: a mover is a LineString, an area a Polygon or MultiPolygon"),
+            format!(
+                "geometry {other:?}: a mover is a LineString, an area a Polygon or MultiPolygon"
+            ),
         )),
-        None => Err(ctx.err(g.at, "geometry.type", ErrorKind::Missing, "no geometry type")),
+        None => Err(ctx.err(
+            g.at,
+            "geometry.type",
+            ErrorKind::Missing,
+            "no geometry type",
+        )),
     }
 }
 
@@ -379,14 +408,16 @@ fn datetimes(ctx: &Ctx, n: &Node, member: &str) -> Result<(Vec<f64>, bool), Movi
         let m = format!("{member}[{k}]");
         let t = match &x.value {
             Json::String(s) => {
-                let p = time::parse(s)
-                    .map_err(|why| ctx.err(x.at, &m, ErrorKind::BadTime, format!("{s:?}: {why}")))?;
+                let p = time::parse(s).map_err(|why| {
+                    ctx.err(x.at, &m, ErrorKind::BadTime, format!("{s:?}: {why}"))
+                })?;
                 no_offset |= !p.has_offset;
                 p.t
             }
             Json::Number(_) | Json::NotJson(_) => {
                 let v = ctx.number(x, &m)?;
-                time::epoch_seconds(v).map_err(|why| ctx.err(x.at, &m, ErrorKind::OutOfRange, why))?
+                time::epoch_seconds(v)
+                    .map_err(|why| ctx.err(x.at, &m, ErrorKind::OutOfRange, why))?
             }
             _ => return Err(ctx.wrong(x, &m, "an RFC 3339 string or epoch seconds")),
         };
@@ -571,66 +602,62 @@ fn temporal(
     id: String,
     warnings: &mut Vec<MovingWarning>,
 ) -> Result<Item, MovingError> {
-    let tm = tg
-        .members()
-        .ok_or_else(|| ctx.wrong(tg, "temporalGeometry", "an object"))?;
-    for m in tm {
-        if !TEMPORAL_GEOMETRY_MEMBERS.contains(&m.key.as_str()) {
-            let hint = json::suggest(&m.key, &TEMPORAL_GEOMETRY_MEMBERS)
-                .map(|s| format!("; did you mean {s:?}?"))
-                .unwrap_or_default();
-            return Err(ctx.err(
-                m.at,
-                &format!("temporalGeometry.{}", m.key),
-                ErrorKind::UnknownMember,
-                format!("{:?} is not a member of an MF-JSON temporal geometry{hint}", m.key),
-            ));
-        }
-    }
-    if let Some(c) = tg.get("crs") {
-        crs(ctx, c, "temporalGeometry.crs")?;
-    }
+    check_temporal_members(ctx, tg)?;
     let kind = tg.get("type").and_then(Node::as_str);
-    let interp = tg.get("interpolation");
-    let interp_text = interp.map(|n| n.as_str().ok_or_else(|| ctx.wrong(n, "temporalGeometry.interpolation", "a string")));
-    let interp_text = interp_text.transpose()?;
-    let linear_needed = |required: bool| -> Result<(), MovingError> {
-        match interp_text {
-            Some("Linear") => Ok(()),
-            None if !required => Ok(()),
-            other => Err(ctx.err(
-                interp.map_or(tg.at, |n| n.at),
-                "temporalGeometry.interpolation",
-                if other.is_none() { ErrorKind::Missing } else { ErrorKind::Unsupported },
-                format!(
-                    "{}: only \"Linear\" motion between instants is read",
-                    other.map_or("absent".to_owned(), |o| format!("{o:?}"))
-                ),
-            )),
-        }
-    };
+    let linear_needed = |required: bool| interpolation(ctx, tg, required);
     let times = tg.get("datetimes").ok_or_else(|| {
-        ctx.err(tg.at, "temporalGeometry.datetimes", ErrorKind::Missing, "no datetimes")
+        ctx.err(
+            tg.at,
+            "temporalGeometry.datetimes",
+            ErrorKind::Missing,
+            "no datetimes",
+        )
     })?;
     let coords = tg.get("coordinates").ok_or_else(|| {
-        ctx.err(tg.at, "temporalGeometry.coordinates", ErrorKind::Missing, "no coordinates")
+        ctx.err(
+            tg.at,
+            "temporalGeometry.coordinates",
+            ErrorKind::Missing,
+            "no coordinates",
+        )
     })?;
     match kind {
         Some("MovingPoint") => {
             linear_needed(false)?;
             let (t, no_offset) = datetimes(ctx, times, "temporalGeometry.datetimes")?;
-            note_offset(ctx, times, "temporalGeometry.datetimes", no_offset, warnings);
+            note_offset(
+                ctx,
+                times,
+                "temporalGeometry.datetimes",
+                no_offset,
+                warnings,
+            );
             let alt = match f.get("temporalProperties") {
                 Some(tp) => altitude(ctx, tp, &t, warnings)?,
                 None => None,
             };
-            mover(ctx, id, props, coords, "temporalGeometry.coordinates", times, &t, alt)
-                .map(Item::Mover)
+            mover(
+                ctx,
+                id,
+                props,
+                coords,
+                "temporalGeometry.coordinates",
+                times,
+                &t,
+                alt,
+            )
+            .map(Item::Mover)
         }
         Some("MovingPolygon") => {
             linear_needed(true)?;
             let (t, no_offset) = datetimes(ctx, times, "temporalGeometry.datetimes")?;
-            note_offset(ctx, times, "temporalGeometry.datetimes", no_offset, warnings);
+            note_offset(
+                ctx,
+                times,
+                "temporalGeometry.datetimes",
+                no_offset,
+                warnings,
+            );
             let frames = keyframes(ctx, coords, times, &t)?;
             area(ctx, id, props, Shape::Keyframed(frames)).map(Item::Area)
         }
@@ -640,7 +667,12 @@ fn temporal(
             ErrorKind::Unsupported,
             format!("{other:?}: only MovingPoint and MovingPolygon are read"),
         )),
-        None => Err(ctx.err(tg.at, "temporalGeometry.type", ErrorKind::Missing, "no type")),
+        None => Err(ctx.err(
+            tg.at,
+            "temporalGeometry.type",
+            ErrorKind::Missing,
+            "no type",
+        )),
     }
 }
 
@@ -658,7 +690,12 @@ fn is_ring(p: &Node) -> bool {
 /// The polygons of a MovingPolygon, one per instant (each a linear ring, or a GeoJSON
 /// Polygon's rings with holes), each with the rings and vertex counts of the first (the
 /// model's keyframes; OGC 19-045r3 requires it for Linear).
-fn keyframes(ctx: &Ctx, coords: &Node, times: &Node, t: &[f64]) -> Result<Vec<Keyframe>, MovingError> {
+fn keyframes(
+    ctx: &Ctx,
+    coords: &Node,
+    times: &Node,
+    t: &[f64],
+) -> Result<Vec<Keyframe>, MovingError> {
     let member = "temporalGeometry.coordinates";
     let e = ctx.array(coords, member)?;
     if e.len() != t.len() {
@@ -674,7 +711,10 @@ fn keyframes(ctx: &Ctx, coords: &Node, times: &Node, t: &[f64]) -> Result<Vec<Ke
             coords.at,
             member,
             ErrorKind::TooFewFixes,
-            format!("a MovingPolygon needs at least 2 instants, found {}", e.len()),
+            format!(
+                "a MovingPolygon needs at least 2 instants, found {}",
+                e.len()
+            ),
         ));
     }
     let mut frames: Vec<Keyframe> = Vec::with_capacity(e.len());
@@ -739,7 +779,12 @@ fn altitude(
         };
         let base = format!("temporalProperties[{g}]");
         let gt = group.get("datetimes").ok_or_else(|| {
-            ctx.err(group.at, &format!("{base}.datetimes"), ErrorKind::Missing, "no datetimes")
+            ctx.err(
+                group.at,
+                &format!("{base}.datetimes"),
+                ErrorKind::Missing,
+                "no datetimes",
+            )
         })?;
         let (at, _) = datetimes(ctx, gt, &format!("{base}.datetimes"))?;
         if at != t {
@@ -753,7 +798,9 @@ fn altitude(
         let am = format!("{base}.altitude");
         let factor = match alt.get("form") {
             Some(f) => {
-                let form = f.as_str().ok_or_else(|| ctx.wrong(f, &format!("{am}.form"), "a unit code"))?;
+                let form = f
+                    .as_str()
+                    .ok_or_else(|| ctx.wrong(f, &format!("{am}.form"), "a unit code"))?;
                 feet_per_unit(form).ok_or_else(|| {
                     ctx.err(
                         f.at,
@@ -772,9 +819,14 @@ fn altitude(
                 1.0
             }
         };
-        let values = alt
-            .get("values")
-            .ok_or_else(|| ctx.err(alt.at, &format!("{am}.values"), ErrorKind::Missing, "no values"))?;
+        let values = alt.get("values").ok_or_else(|| {
+            ctx.err(
+                alt.at,
+                &format!("{am}.values"),
+                ErrorKind::Missing,
+                "no values",
+            )
+        })?;
         let v = ctx.array(values, &format!("{am}.values"))?;
         if v.len() != t.len() {
             return Err(ctx.err(
@@ -794,4 +846,59 @@ fn altitude(
         return Ok(Some(out));
     }
     Ok(None)
+}
+
+/// The members of a `temporalGeometry`: only those MF-JSON defines (an unknown one is an
+/// error naming the likely meant one), and a WGS 84 `crs` when there is one.
+fn check_temporal_members(ctx: &Ctx, tg: &Node) -> Result<(), MovingError> {
+    let tm = tg
+        .members()
+        .ok_or_else(|| ctx.wrong(tg, "temporalGeometry", "an object"))?;
+    for m in tm {
+        if !TEMPORAL_GEOMETRY_MEMBERS.contains(&m.key.as_str()) {
+            let hint = json::suggest(&m.key, &TEMPORAL_GEOMETRY_MEMBERS)
+                .map(|s| format!("; did you mean {s:?}?"))
+                .unwrap_or_default();
+            return Err(ctx.err(
+                m.at,
+                &format!("temporalGeometry.{}", m.key),
+                ErrorKind::UnknownMember,
+                format!(
+                    "{:?} is not a member of an MF-JSON temporal geometry{hint}",
+                    m.key
+                ),
+            ));
+        }
+    }
+    match tg.get("crs") {
+        Some(c) => crs(ctx, c, "temporalGeometry.crs"),
+        None => Ok(()),
+    }
+}
+
+/// The `interpolation` of a temporal geometry (OGC 19-045r3 §7.2.1): `Linear` (the
+/// model's motion between instants), or absent when not `required`.
+fn interpolation(ctx: &Ctx, tg: &Node, required: bool) -> Result<(), MovingError> {
+    let member = "temporalGeometry.interpolation";
+    let interp = tg.get("interpolation");
+    let text = interp
+        .map(|n| n.as_str().ok_or_else(|| ctx.wrong(n, member, "a string")))
+        .transpose()?;
+    match text {
+        Some("Linear") => Ok(()),
+        None if !required => Ok(()),
+        other => Err(ctx.err(
+            interp.map_or(tg.at, |n| n.at),
+            member,
+            if other.is_none() {
+                ErrorKind::Missing
+            } else {
+                ErrorKind::Unsupported
+            },
+            format!(
+                "{}: only \"Linear\" motion between instants is read",
+                other.map_or("absent".to_owned(), |o| format!("{o:?}"))
+            ),
+        )),
+    }
 }

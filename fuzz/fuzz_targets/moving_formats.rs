@@ -7,12 +7,14 @@
 
 use libfuzzer_sys::fuzz_target;
 use polyguard_earth::moving::error::MovingError;
+use polyguard_earth::moving::fixes_csv;
 use polyguard_earth::moving::mfjson::{self, Item};
 use polyguard_earth::moving::model::{Area, Fix, Rings, Shape};
-use polyguard_earth::moving::fixes_csv;
 
 fn fix_ok(f: &Fix) {
-    assert!(f.t.is_finite() && (-180.0..=180.0).contains(&f.lon) && (-85.0..=85.0).contains(&f.lat));
+    assert!(
+        f.t.is_finite() && (-180.0..=180.0).contains(&f.lon) && (-85.0..=85.0).contains(&f.lat)
+    );
     assert!(f.alt_ft.is_none_or(f64::is_finite));
 }
 

@@ -32,7 +32,7 @@ const COLLECTION_MEMBERS: [&str; 8] = [
     "label",
 ];
 /// The members MF-JSON and GeoJSON define on a Feature.
-const FEATURE_MEMBERS: [&str; 10] = [
+const FEATURE_MEMBERS: [&str; 11] = [
     "type",
     "id",
     "geometry",
@@ -43,6 +43,7 @@ const FEATURE_MEMBERS: [&str; 10] = [
     "trs",
     "time",
     "bbox",
+    "stBoundedBy",
 ];
 /// The members of a GeoJSON geometry.
 const GEOMETRY_MEMBERS: [&str; 3] = ["type", "coordinates", "bbox"];

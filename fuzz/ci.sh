@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 secs="${1:-20}"
-targets=(diff_same_2d diff_diff_2d diff_3d parse_jsonl parse_scenario api_arbitrary paper_b intervals)
+targets=(diff_same_2d diff_diff_2d diff_3d parse_jsonl parse_scenario api_arbitrary paper_b intervals moving_formats)
 
 # cargo-fuzz needs a nightly compiler (-Zsanitizer). Use the nightly toolchain when the
 # machine has one; otherwise let the stable compiler accept the nightly flags.
@@ -24,9 +24,11 @@ fi
 # Seeds: parse_jsonl starts from every case file the project has; the differential
 # targets from each regression case, one line a file (an input starting with '{' is read
 # as a case line).
-mkdir -p corpus/parse_jsonl corpus/parse_scenario
+mkdir -p corpus/parse_jsonl corpus/parse_scenario corpus/moving_formats
 cp ../examples/*.jsonl ../tests/regressions/*.jsonl corpus/parse_jsonl/ 2>/dev/null || true
 cp ../examples/*.geojson ../tests/scenarios/*.geojson corpus/parse_scenario/ 2>/dev/null || true
+# moving_formats from the real traffic, MovingPandas and FIR excerpts the tests read
+cp ../crates/earth/tests/data/moving/* corpus/moving_formats/ 2>/dev/null || true
 for t in diff_same_2d diff_diff_2d diff_3d; do
   mkdir -p "corpus/$t"
   cat ../tests/regressions/*.jsonl | awk -v dir="corpus/$t" 'NF { print > (dir "/regression-" NR ".json") }'

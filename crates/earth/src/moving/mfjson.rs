@@ -12,7 +12,7 @@
 //! - a static area as a geometry `Polygon` or `MultiPolygon`.
 
 use super::error::{ErrorKind, Location, MovingError, MovingWarning, WarningKind};
-use super::geojson::{multi_polygon, polygon, position, Ctx};
+use super::geojson::{multi_polygon, polygon, position, ring, Ctx};
 use super::model::{Area, Fix, Keyframe, Rings, Shape, Trajectory};
 use super::time;
 use crate::json::{self, Json, Lines, Member, Node};
@@ -32,7 +32,7 @@ const COLLECTION_MEMBERS: [&str; 8] = [
     "label",
 ];
 /// The members MF-JSON and GeoJSON define on a Feature.
-const FEATURE_MEMBERS: [&str; 10] = [
+const FEATURE_MEMBERS: [&str; 11] = [
     "type",
     "id",
     "geometry",
@@ -43,6 +43,7 @@ const FEATURE_MEMBERS: [&str; 10] = [
     "trs",
     "time",
     "bbox",
+    "stBoundedBy",
 ];
 /// The members of a GeoJSON geometry.
 const GEOMETRY_MEMBERS: [&str; 3] = ["type", "coordinates", "bbox"];
@@ -323,6 +324,18 @@ fn feature(ctx: &Ctx, f: &Node, warnings: &mut Vec<MovingWarning>) -> Result<Ite
     if let Some(tg) = f.get("temporalGeometry") {
         return temporal(ctx, f, tg, props, id, warnings);
     }
+    geometry(ctx, f, props, id, warnings)
+}
+
+/// A feature's GeoJSON `geometry`: LineString (with `properties.datetimes`) → mover,
+/// Polygon or MultiPolygon → static area.
+fn geometry(
+    ctx: &Ctx,
+    f: &Node,
+    props: Option<&Node>,
+    id: String,
+    warnings: &mut Vec<MovingWarning>,
+) -> Result<Item, MovingError> {
     let g = f
         .get("geometry")
         .filter(|g| g.value != Json::Null)
@@ -590,54 +603,9 @@ fn temporal(
     id: String,
     warnings: &mut Vec<MovingWarning>,
 ) -> Result<Item, MovingError> {
-    let tm = tg
-        .members()
-        .ok_or_else(|| ctx.wrong(tg, "temporalGeometry", "an object"))?;
-    for m in tm {
-        if !TEMPORAL_GEOMETRY_MEMBERS.contains(&m.key.as_str()) {
-            let hint = json::suggest(&m.key, &TEMPORAL_GEOMETRY_MEMBERS)
-                .map(|s| format!("; did you mean {s:?}?"))
-                .unwrap_or_default();
-            return Err(ctx.err(
-                m.at,
-                &format!("temporalGeometry.{}", m.key),
-                ErrorKind::UnknownMember,
-                format!(
-                    "{:?} is not a member of an MF-JSON temporal geometry{hint}",
-                    m.key
-                ),
-            ));
-        }
-    }
-    if let Some(c) = tg.get("crs") {
-        crs(ctx, c, "temporalGeometry.crs")?;
-    }
+    check_temporal_members(ctx, tg)?;
     let kind = tg.get("type").and_then(Node::as_str);
-    let interp = tg.get("interpolation");
-    let interp_text = interp.map(|n| {
-        n.as_str()
-            .ok_or_else(|| ctx.wrong(n, "temporalGeometry.interpolation", "a string"))
-    });
-    let interp_text = interp_text.transpose()?;
-    let linear_needed = |required: bool| -> Result<(), MovingError> {
-        match interp_text {
-            Some("Linear") => Ok(()),
-            None if !required => Ok(()),
-            other => Err(ctx.err(
-                interp.map_or(tg.at, |n| n.at),
-                "temporalGeometry.interpolation",
-                if other.is_none() {
-                    ErrorKind::Missing
-                } else {
-                    ErrorKind::Unsupported
-                },
-                format!(
-                    "{}: only \"Linear\" motion between instants is read",
-                    other.map_or("absent".to_owned(), |o| format!("{o:?}"))
-                ),
-            )),
-        }
-    };
+    let linear_needed = |required: bool| interpolation(ctx, tg, required);
     let times = tg.get("datetimes").ok_or_else(|| {
         ctx.err(
             tg.at,
@@ -709,8 +677,20 @@ fn temporal(
     }
 }
 
-/// The polygons of a MovingPolygon, one per instant, each with the rings and vertex
-/// counts of the first (the model's keyframes; OGC 19-045r3 requires it for Linear).
+/// Whether a MovingPolygon's instant is written as one linear ring (positions: its first
+/// element's first element is a number), as OGC 19-045r3 writes the exterior ring, rather
+/// than as GeoJSON Polygon coordinates (rings: outer then holes).
+fn is_ring(p: &Node) -> bool {
+    p.elements()
+        .and_then(<[Node]>::first)
+        .and_then(Node::elements)
+        .and_then(<[Node]>::first)
+        .is_some_and(|x| matches!(x.value, Json::Number(_) | Json::NotJson(_)))
+}
+
+/// The polygons of a MovingPolygon, one per instant (each a linear ring, or a GeoJSON
+/// Polygon's rings with holes), each with the rings and vertex counts of the first (the
+/// model's keyframes; OGC 19-045r3 requires it for Linear).
 fn keyframes(
     ctx: &Ctx,
     coords: &Node,
@@ -741,7 +721,14 @@ fn keyframes(
     let mut frames: Vec<Keyframe> = Vec::with_capacity(e.len());
     for (k, p) in e.iter().enumerate() {
         let m = format!("{member}[{k}]");
-        let rings = polygon(ctx, p, &m)?;
+        let rings = if is_ring(p) {
+            Rings {
+                outer: ring(ctx, p, &m)?,
+                holes: Vec::new(),
+            }
+        } else {
+            polygon(ctx, p, &m)?
+        };
         if let Some(first) = frames.first() {
             let shape = |r: &Rings| {
                 std::iter::once(r.outer.len())
@@ -860,4 +847,59 @@ fn altitude(
         return Ok(Some(out));
     }
     Ok(None)
+}
+
+/// The members of a `temporalGeometry`: only those MF-JSON defines (an unknown one is an
+/// error naming the likely meant one), and a WGS 84 `crs` when there is one.
+fn check_temporal_members(ctx: &Ctx, tg: &Node) -> Result<(), MovingError> {
+    let tm = tg
+        .members()
+        .ok_or_else(|| ctx.wrong(tg, "temporalGeometry", "an object"))?;
+    for m in tm {
+        if !TEMPORAL_GEOMETRY_MEMBERS.contains(&m.key.as_str()) {
+            let hint = json::suggest(&m.key, &TEMPORAL_GEOMETRY_MEMBERS)
+                .map(|s| format!("; did you mean {s:?}?"))
+                .unwrap_or_default();
+            return Err(ctx.err(
+                m.at,
+                &format!("temporalGeometry.{}", m.key),
+                ErrorKind::UnknownMember,
+                format!(
+                    "{:?} is not a member of an MF-JSON temporal geometry{hint}",
+                    m.key
+                ),
+            ));
+        }
+    }
+    match tg.get("crs") {
+        Some(c) => crs(ctx, c, "temporalGeometry.crs"),
+        None => Ok(()),
+    }
+}
+
+/// The `interpolation` of a temporal geometry (OGC 19-045r3 §7.2.1): `Linear` (the
+/// model's motion between instants), or absent when not `required`.
+fn interpolation(ctx: &Ctx, tg: &Node, required: bool) -> Result<(), MovingError> {
+    let member = "temporalGeometry.interpolation";
+    let interp = tg.get("interpolation");
+    let text = interp
+        .map(|n| n.as_str().ok_or_else(|| ctx.wrong(n, member, "a string")))
+        .transpose()?;
+    match text {
+        Some("Linear") => Ok(()),
+        None if !required => Ok(()),
+        other => Err(ctx.err(
+            interp.map_or(tg.at, |n| n.at),
+            member,
+            if other.is_none() {
+                ErrorKind::Missing
+            } else {
+                ErrorKind::Unsupported
+            },
+            format!(
+                "{}: only \"Linear\" motion between instants is read",
+                other.map_or("absent".to_owned(), |o| format!("{o:?}"))
+            ),
+        )),
+    }
 }

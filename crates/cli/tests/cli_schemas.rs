@@ -895,3 +895,56 @@ fn the_docs_examples_validate() {
         println!("{doc}: {count} {key} examples validate");
     }
 }
+
+/// Every answer line of `polyguard encounters` on the worked example and on real flights
+/// (the `traffic` package's quickstart excerpt against two French FIRs, and drifting
+/// cells) validates, and the worked example's lines are checked for sortedness, which
+/// the schema cannot say.
+#[test]
+fn encounters_answers_validate() {
+    let answer = schema("encounters-answer.schema.json");
+    let ex = root().join("examples/moving");
+    let data = root().join("crates/earth/tests/data/moving");
+    let runs: Vec<Vec<String>> = vec![
+        vec![ex.join("flight.csv"), ex.join("areas.geojson")]
+            .into_iter()
+            .map(|p| p.display().to_string())
+            .chain(["--max-gap".into(), "900".into(), "--sep".into(), "5".into()])
+            .collect(),
+        vec![data.join("quickstart-3.csv"), data.join("fir-LFFF.geojson")]
+            .into_iter()
+            .map(|p| p.display().to_string())
+            .collect(),
+        vec![data.join("quickstart-3.mf.json"), data.join("cells-2.mf.json")]
+            .into_iter()
+            .map(|p| p.display().to_string())
+            .chain(["--sep".into(), "20".into(), "--sep-v".into(), "1000".into()])
+            .collect(),
+    ];
+    let mut n = 0;
+    for run in runs {
+        let mut args = vec!["encounters", "--quiet"];
+        args.extend(run.iter().map(String::as_str));
+        let (out, code) = polyguard(&args, b"");
+        assert_eq!(code, 0, "{args:?}\n{out}");
+        for line in out.lines() {
+            let v = parse(&format!("{args:?}"), line);
+            assert_valid(&answer, line, &v);
+            for rel in ["inside", "near"] {
+                let mut last = f64::NEG_INFINITY;
+                for s in v[rel].as_array().expect("spans") {
+                    let e: Vec<f64> = ["start", "end"]
+                        .iter()
+                        .flat_map(|k| s[k].as_array().expect("enclosure").iter())
+                        .map(|x| x.as_f64().expect("number"))
+                        .collect();
+                    assert!(last <= e[0] && e.windows(2).all(|w| w[0] <= w[1]), "{line}");
+                    last = e[3];
+                }
+            }
+            n += 1;
+        }
+    }
+    assert!(n >= 3, "only {n} answer lines");
+    println!("encounters-answer.schema.json: {n} answer lines validate");
+}

@@ -3,6 +3,11 @@
 //!
 //! - [`model`]: the fixes, trajectories and areas the readers give and the engine takes.
 //! - [`plane`]: the planar model and its certified spans over one segment.
+//! - [`timeline`]: three-valued timelines, the algebra that composes the spans.
+//! - [`prepared`]: an area made ready for many pieces (edge trees, exact winding).
 
 pub mod model;
+mod piece;
 pub mod plane;
+pub mod prepared;
+pub mod timeline;

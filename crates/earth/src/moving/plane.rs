@@ -78,3 +78,236 @@ pub struct TimeSpan {
     /// The relation holds on all of [start\[1\], end\[0\]].
     pub certain: bool,
 }
+
+use super::piece::{piece_timeline, Margins};
+use super::prepared::Prepared;
+use super::timeline::Timeline;
+
+/// Why the planar spans cannot be computed.
+#[derive(Clone, Debug, PartialEq)]
+pub enum PlaneError {
+    /// A value is NaN or infinite (`what` names it).
+    NotFinite {
+        /// The value's name.
+        what: String,
+    },
+    /// Times that do not strictly increase (`what` names them).
+    NotIncreasing {
+        /// The list's name.
+        what: String,
+    },
+    /// The keyframes do not all have the same parts, holes and vertex counts.
+    StructureChanges {
+        /// The frame that differs from the first.
+        frame: usize,
+    },
+    /// A ring with fewer than 3 vertices, or no frame at all.
+    Degenerate {
+        /// What is degenerate.
+        what: String,
+    },
+}
+
+impl core::fmt::Display for PlaneError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            PlaneError::NotFinite { what } => write!(f, "{what}: not a finite number"),
+            PlaneError::NotIncreasing { what } => write!(f, "{what}: times do not increase"),
+            PlaneError::StructureChanges { frame } => write!(
+                f,
+                "frame {frame}: its parts, holes or vertex counts differ from frame 0 \
+                 (linear interpolation needs the same structure at every instant)"
+            ),
+            PlaneError::Degenerate { what } => write!(f, "{what}: degenerate"),
+        }
+    }
+}
+
+impl std::error::Error for PlaneError {}
+
+/// The segments of a trajectory: maximal runs of fixes in which consecutive fixes are at
+/// most `max_gap` apart (docs/moving-features.md: longer gaps are not joined).
+pub fn split_segments(fixes: &[PlaneFix], max_gap: f64) -> Vec<core::ops::Range<usize>> {
+    let mut out = Vec::new();
+    let mut start = 0;
+    for i in 1..=fixes.len() {
+        if i == fixes.len() || fixes[i].t - fixes[i - 1].t > max_gap {
+            if i > start {
+                out.push(start..i);
+            }
+            start = i;
+        }
+    }
+    out
+}
+
+/// `x` when finite.
+fn finite(what: impl FnOnce() -> String, x: f64) -> Result<(), PlaneError> {
+    if x.is_finite() {
+        Ok(())
+    } else {
+        Err(PlaneError::NotFinite { what: what() })
+    }
+}
+
+/// The planar model's rules (docs/moving-features.md) on one segment and one area.
+fn validate(fixes: &[PlaneFix], area: &PlaneArea) -> Result<(), PlaneError> {
+    for (i, f) in fixes.iter().enumerate() {
+        for (name, x) in [
+            ("t", f.t),
+            ("x", f.x),
+            ("y", f.y),
+            ("z", f.z.unwrap_or(0.0)),
+        ] {
+            finite(|| format!("fixes[{i}].{name}"), x)?;
+        }
+        if i > 0 && f.t <= fixes[i - 1].t {
+            return Err(PlaneError::NotIncreasing {
+                what: "fixes".into(),
+            });
+        }
+    }
+    let Some(first) = area.frames.first() else {
+        return Err(PlaneError::Degenerate {
+            what: "area.frames".into(),
+        });
+    };
+    for (k, f) in area.frames.iter().enumerate() {
+        finite(|| format!("frames[{k}].t"), f.t)?;
+        if k > 0 && !area.is_static && f.t <= area.frames[k - 1].t {
+            return Err(PlaneError::NotIncreasing {
+                what: "frames".into(),
+            });
+        }
+        let same = f.parts.len() == first.parts.len()
+            && f.parts.iter().zip(&first.parts).all(|(a, b)| {
+                a.outer.len() == b.outer.len()
+                    && a.holes.len() == b.holes.len()
+                    && a.holes
+                        .iter()
+                        .zip(&b.holes)
+                        .all(|(x, y)| x.len() == y.len())
+            });
+        if !same {
+            return Err(PlaneError::StructureChanges { frame: k });
+        }
+        for (j, part) in f.parts.iter().enumerate() {
+            for (r, ring) in core::iter::once(&part.outer).chain(&part.holes).enumerate() {
+                if ring.len() < 3 {
+                    return Err(PlaneError::Degenerate {
+                        what: format!("frames[{k}].parts[{j}] ring {r}"),
+                    });
+                }
+                for (i, p) in ring.iter().enumerate() {
+                    for c in 0..2 {
+                        finite(
+                            || format!("frames[{k}].parts[{j}] ring {r}[{i}][{c}]"),
+                            p[c],
+                        )?;
+                    }
+                }
+            }
+        }
+    }
+    if first.parts.is_empty() {
+        return Err(PlaneError::Degenerate {
+            what: "area.frames[0].parts".into(),
+        });
+    }
+    for (name, x) in [("floor", area.floor), ("ceiling", area.ceiling)] {
+        if let Some(x) = x {
+            finite(|| name.into(), x)?;
+        }
+    }
+    Ok(())
+}
+
+/// The certified spans of `relation` over one segment (fixes without a gap, ≥ 1), against
+/// `area` (docs/moving-features.md, "The contract"): over the domain [first fix, last
+/// fix] ∩ the area's existence, G1–G3 hold with global times. Each piece between
+/// consecutive breakpoints (fix and keyframe times) is one paper-A case per ring
+/// (module `piece`); their timelines are joined and turned into spans
+/// (`timeline::Timeline::to_spans`).
+pub fn plane_spans(
+    fixes: &[PlaneFix],
+    area: &PlaneArea,
+    relation: PlaneRelation,
+) -> Result<Vec<TimeSpan>, PlaneError> {
+    validate(fixes, area)?;
+    let prepared = Prepared::new(area);
+    let (h, m) = match relation {
+        PlaneRelation::Inside => (
+            0.0,
+            Margins {
+                d_lo: 0.0,
+                d_hi: 0.0,
+                extra_point: 0.0,
+                extra_area: 0.0,
+            },
+        ),
+        PlaneRelation::Near { d_lo, d_hi, h } => (
+            h,
+            Margins {
+                d_lo,
+                d_hi,
+                extra_point: 0.0,
+                extra_area: 0.0,
+            },
+        ),
+    };
+    Ok(spans_with(fixes, area, &prepared, h, &|_, _| m))
+}
+
+/// [`plane_spans`] on validated input, with `margins` of each piece [t0, t1] (the Earth
+/// layer's) and the vertical separation `h_sep` (0 for inside).
+pub(crate) fn spans_with(
+    fixes: &[PlaneFix],
+    area: &PlaneArea,
+    prepared: &Prepared,
+    h_sep: f64,
+    margins: &dyn Fn(f64, f64) -> Margins,
+) -> Vec<TimeSpan> {
+    let (Some(first), Some(last)) = (fixes.first(), fixes.last()) else {
+        return Vec::new();
+    };
+    let (mut a, mut b) = (first.t, last.t);
+    if !area.is_static && area.frames.len() > 1 {
+        a = a.max(area.frames[0].t);
+        b = b.min(area.frames[area.frames.len() - 1].t);
+    }
+    if a > b {
+        return Vec::new();
+    }
+    if a == b {
+        // One instant: the engine needs a duration; say "maybe" there.
+        return vec![TimeSpan {
+            start: [a, a],
+            end: [a, a],
+            certain: false,
+        }];
+    }
+    let mut cuts: Vec<f64> = vec![a, b];
+    cuts.extend(fixes.iter().map(|f| f.t).filter(|&t| t > a && t < b));
+    if !area.is_static {
+        cuts.extend(area.frames.iter().map(|f| f.t).filter(|&t| t > a && t < b));
+    }
+    cuts.sort_by(f64::total_cmp);
+    cuts.dedup();
+    let mut tl: Option<Timeline> = None;
+    for w in cuts.windows(2) {
+        let p = piece_timeline(
+            fixes,
+            area,
+            prepared,
+            h_sep,
+            margins(w[0], w[1]),
+            w[0],
+            w[1],
+        );
+        tl = Some(match tl {
+            None => p,
+            Some(t) => t.then(&p),
+        });
+    }
+    tl.map(|t| t.closed().to_spans()).unwrap_or_default()
+}

@@ -1,0 +1,388 @@
+//! One piece of the planar model (docs/moving-features.md): the time between two
+//! consecutive breakpoints (fix or keyframe times), where the mover and every vertex move
+//! linearly — one paper-A case per ring (Narkawicz & Hagen §II, warping polygons §II.I)
+//! — and what the certified engine (`polyguard::intervals`) says of its relations,
+//! widened by the rounding of the case it is handed.
+//!
+//! # The stand-in and its distance δ from the model
+//! The engine gets the f64 case: the mover's position A₀ at the piece's start and
+//! velocity fl((A₁ − A₀)/h), each vertex likewise. Interpolated positions carry an error
+//! `e` ([`lerp`]); the velocity's rounding moves the point by at most
+//! |A₁ − A₀|·3.1u over the piece, and a time difference h that is not exact by u more.
+//! So the stand-in point is within δ_p = Σ_c 2e₀ + 2e₁ + 5u|ΔA| of the model's, and each
+//! stand-in vertex within δ_v of its model vertex (the same sum); δ = δ_p + δ_v.
+//! Moving a point by δ_p and every vertex by δ_v changes the distance to the region by at
+//! most δ, and (following the straight homotopy between the two polygons) cannot change
+//! the winding number of a point farther than δ from the boundary. So, with the
+//! engine's relations of the stand-in (near_D, breach_D):
+//! - inside ⊆ near_δ, and fence_δ = ¬breach_δ ⊆ inside;
+//! - near_D ⊆ near_{D+δ}, and near_{D−δ} ⊆ near_D (D > δ; else fence_{δ−D} ⊆ near_D);
+//! - breach_D ⊆ breach_{D+δ}, and breach_{D−δ} ⊆ breach_D when D ≥ 2δ (a point outside
+//!   the stand-in by more than δ is outside the model); else ¬near_δ ⊆ breach_D.
+//!
+//! Every D handed to the engine is rounded the safe way (up for an upper set, down for
+//! a lower one).
+
+use super::plane::{PlaneArea, PlaneFix, PlaneFrame};
+use super::prepared::{winding, Prepared};
+use super::timeline::{Holds, Timeline};
+use polyguard::intervals::{intervals, Relation, Separation};
+use polyguard::{End, Span, Vect2};
+
+/// `a + f·(b − a)` with `f = (t − ta)/(tb − ta)`, rounded, and a bound on its distance from
+/// the exact interpolation, per coordinate: the point of the linear motion from `a` at
+/// `ta` to `b` at `tb`, at time `t` (docs/moving-features.md). Exact at `ta` and `tb`.
+/// The bound: f has relative error ≤ 3u, the product ≤ 5.01u·|f(b − a)|, the sum u·|a + ·|,
+/// so 8u(|a| + |b − a|) covers it (f ∈ [0, 1]).
+fn lerp(a: [f64; 2], b: [f64; 2], ta: f64, tb: f64, t: f64) -> ([f64; 2], [f64; 2]) {
+    if t == ta {
+        return (a, [0.0; 2]);
+    }
+    if t == tb {
+        return (b, [0.0; 2]);
+    }
+    let f = (t - ta) / (tb - ta);
+    let mut p = [0.0; 2];
+    let mut e = [0.0; 2];
+    for c in 0..2 {
+        let d = b[c] - a[c];
+        p[c] = a[c] + f * d;
+        e[c] = 8.0 * U * (a[c].abs() + d.abs());
+    }
+    (p, e)
+}
+
+/// The scalar [`lerp`] (heights): the value and its error bound.
+fn lerp1(a: f64, b: f64, ta: f64, tb: f64, t: f64) -> (f64, f64) {
+    let (p, e) = lerp([a, 0.0], [b, 0.0], ta, tb, t);
+    (p[0], e[0])
+}
+
+/// The mover's position (and height) at time `t` within its fixes, with error bounds.
+fn mover_at(fixes: &[PlaneFix], t: f64) -> ([f64; 2], [f64; 2], Option<(f64, f64)>) {
+    let j = match fixes.binary_search_by(|f| f.t.total_cmp(&t)) {
+        Ok(j) => {
+            let f = fixes[j];
+            return ([f.x, f.y], [0.0; 2], f.z.map(|z| (z, 0.0)));
+        }
+        Err(j) => j.clamp(1, fixes.len() - 1) - 1,
+    };
+    let (a, b) = (fixes[j], fixes[j + 1]);
+    let (p, e) = lerp([a.x, a.y], [b.x, b.y], a.t, b.t, t);
+    let z = match (a.z, b.z) {
+        (Some(za), Some(zb)) => Some(lerp1(za, zb, a.t, b.t, t)),
+        _ => None,
+    };
+    (p, e, z)
+}
+
+/// Ring `ring` (0 the outer, k the hole k − 1) of part `part` of frame `f`.
+fn ring_of(f: &PlaneFrame, part: usize, ring: usize) -> &[[f64; 2]] {
+    let r = &f.parts[part];
+    if ring == 0 {
+        &r.outer
+    } else {
+        &r.holes[ring - 1]
+    }
+}
+
+/// One ring's vertices at time `t` (the frame pair around it), with the largest error
+/// bound (L1) of a vertex.
+fn ring_at(area: &PlaneArea, part: usize, ring: usize, t: f64) -> (Vec<[f64; 2]>, f64) {
+    let fr = &area.frames;
+    if area.is_static || fr.len() == 1 {
+        return (ring_of(&fr[0], part, ring).to_vec(), 0.0);
+    }
+    let k = match fr.binary_search_by(|f| f.t.total_cmp(&t)) {
+        Ok(k) => return (ring_of(&fr[k], part, ring).to_vec(), 0.0),
+        Err(k) => k.clamp(1, fr.len() - 1) - 1,
+    };
+    let (a, b) = (ring_of(&fr[k], part, ring), ring_of(&fr[k + 1], part, ring));
+    let mut err: f64 = 0.0;
+    let pts = a
+        .iter()
+        .zip(b)
+        .map(|(p, q)| {
+            let (v, e) = lerp(*p, *q, fr[k].t, fr[k + 1].t, t);
+            err = err.max(e[0] + e[1]);
+            v
+        })
+        .collect();
+    (pts, err)
+}
+
+/// The unit roundoff of f64, 2⁻⁵³.
+const U: f64 = f64::EPSILON / 2.0;
+
+/// `b − a` and whether it is exact (Knuth's two-sum).
+fn diff_exact(b: f64, a: f64) -> (f64, bool) {
+    let s = b - a;
+    let bb = s - b;
+    let err = (b - (s - bb)) + (-a - bb);
+    (s, err == 0.0)
+}
+
+/// Which horizontal set of one ring (the module doc's sandwiches).
+#[derive(Clone, Copy, Debug)]
+enum RingSet {
+    /// The outer ring: near within D (`d_lo`, `d_hi` as in `PlaneRelation::Near`);
+    /// `d_hi` = 0 is inside.
+    Outer { d_lo: f64, d_hi: f64 },
+    /// A hole: breach_D (not deep inside the hole), 0 for "not in its open interior".
+    Hole { d_lo: f64, d_hi: f64 },
+}
+
+/// A stand-in ring on one piece: vertices at its start, velocities, and δ_v.
+struct StandIn {
+    p: Vec<Vect2>,
+    vels: Vec<Vect2>,
+}
+
+/// The engine's timeline of `relation` at separation `d` for the stand-in point `(s, v)`
+/// and ring over [0, look].
+fn engine(look: f64, s: Vect2, v: Vect2, r: &StandIn, relation: Relation, d: f64) -> Timeline {
+    let sep = Separation {
+        d: d.max(0.0),
+        h: 0.0,
+    };
+    let spans = intervals(look, s, v, &r.p, &r.vels, None, relation, sep);
+    Timeline::from_spans(look, &spans)
+}
+
+/// The module doc's sandwich of one ring's set over [0, look], δ the stand-in's
+/// distance from the model.
+fn ring_timeline(look: f64, s: Vect2, v: Vect2, r: &StandIn, set: RingSet, delta: f64) -> Timeline {
+    let e = |rel, d: f64| engine(look, s, v, r, rel, d);
+    match set {
+        RingSet::Outer { d_lo, d_hi } => {
+            let upper = e(Relation::Near, (d_hi + delta).next_up());
+            let lower = if d_lo > delta {
+                e(Relation::Near, (d_lo - delta).next_down())
+            } else {
+                e(Relation::Breach, (delta - d_lo).next_up()).not()
+            };
+            Timeline::sandwich(&lower, &upper)
+        }
+        RingSet::Hole { d_lo, d_hi } => {
+            let upper = e(Relation::Breach, (d_hi + delta).next_up());
+            let lower = if d_lo > 0.0 && d_lo >= 2.0 * delta {
+                e(Relation::Breach, (d_lo - delta).next_down())
+            } else {
+                e(Relation::Near, delta.next_up()).not()
+            };
+            Timeline::sandwich(&lower, &upper)
+        }
+    }
+}
+
+/// The timeline of g(τ) ≥ 0 over [0, look] for g linear in time on [0, h] with
+/// g(0) ∈ `g0` and g(h) ∈ `g1` (intervals that enclose the model's values): `Yes` where
+/// the lower line is ≥ 0, `No` where the upper one is < 0. A line's root s·h, s =
+/// a/(a − b) with a, b of opposite signs, has relative error ≤ 3.02u; it is enclosed in
+/// [τ(1 − 5u), τ(1 + 5u)] (5u also covers h's own rounding).
+fn linear_ge(g0: [f64; 2], g1: [f64; 2], h: f64, look: f64) -> Timeline {
+    // The set where the line through (0, a) and (h, b) is ≥ 0, as [lo, hi] with the
+    // ends' enclosures, or None.
+    let region = |a: f64, b: f64| -> Option<([f64; 2], [f64; 2])> {
+        let root = || {
+            let tau = a / (a - b) * h;
+            [
+                (tau * (1.0 - 5.0 * U)).max(0.0),
+                (tau * (1.0 + 5.0 * U)).min(look),
+            ]
+        };
+        match (a >= 0.0, b >= 0.0) {
+            (true, true) => Some(([0.0, 0.0], [look, look])),
+            (true, false) => Some(([0.0, 0.0], root())),
+            (false, true) => Some((root(), [look, look])),
+            (false, false) => None,
+        }
+    };
+    let certain = region(g0[0], g1[0]);
+    let possible = region(g0[1], g1[1]);
+    let span = match (certain, possible) {
+        (Some((cs, ce)), Some((ps, pe))) if cs[1] <= ce[0] => Span {
+            start: End {
+                lo: ps[0],
+                hi: cs[1],
+            },
+            end: End {
+                lo: ce[0],
+                hi: pe[1],
+            },
+            certain: true,
+        },
+        (_, Some((ps, pe))) => Span {
+            start: End {
+                lo: ps[0],
+                hi: pe[1],
+            },
+            end: End {
+                lo: ps[0],
+                hi: pe[1],
+            },
+            certain: false,
+        },
+        (_, None) => return Timeline::constant(0.0, look, Holds::No),
+    };
+    Timeline::from_spans(look, &[span])
+}
+
+/// The vertical condition floor − H ≤ z ≤ ceiling + H over the piece, the heights
+/// `z0`, `z1` at its ends with their error bounds (None: unknown).
+fn vertical(
+    area: &PlaneArea,
+    h_sep: f64,
+    z0: Option<(f64, f64)>,
+    z1: Option<(f64, f64)>,
+    h: f64,
+    look: f64,
+) -> Timeline {
+    if area.floor.is_none() && area.ceiling.is_none() {
+        return Timeline::constant(0.0, look, Holds::Yes);
+    }
+    let (Some((z0, e0)), Some((z1, e1))) = (z0, z1) else {
+        return Timeline::constant(0.0, look, Holds::Maybe);
+    };
+    // g = sign·(z − c) with c = bound ∓ H rounded; each value enclosed with its errors.
+    let ge = |c: f64, sign: f64| {
+        let ec = U * c.abs();
+        let at = |z: f64, e: f64| {
+            let v = sign * (z - c);
+            let r = e + ec + 2.0 * U * v.abs();
+            [v - r, v + r]
+        };
+        linear_ge(at(z0, e0), at(z1, e1), h, look)
+    };
+    let mut tl = Timeline::constant(0.0, look, Holds::Yes);
+    if let Some(f) = area.floor {
+        tl = tl.and(&ge(f - h_sep, 1.0));
+    }
+    if let Some(c) = area.ceiling {
+        tl = tl.and(&ge(c + h_sep, -1.0));
+    }
+    tl
+}
+
+/// The stand-in of ring `ring` of part `part` over [t0, t1] (duration h), counterclockwise,
+/// and its δ_v (module doc).
+fn stand_in(
+    area: &PlaneArea,
+    part: usize,
+    ring: usize,
+    t0: f64,
+    t1: f64,
+    h: f64,
+) -> (StandIn, f64) {
+    let (p0, e0) = ring_at(area, part, ring, t0);
+    let (p1, e1) = ring_at(area, part, ring, t1);
+    let mut dv: f64 = 0.0;
+    let mut p: Vec<Vect2> = Vec::with_capacity(p0.len());
+    let mut vels: Vec<Vect2> = Vec::with_capacity(p0.len());
+    for (a, b) in p0.iter().zip(&p1) {
+        let d = [b[0] - a[0], b[1] - a[1]];
+        dv = dv.max(2.0 * e0 + 2.0 * e1 + 5.0 * U * (d[0].abs() + d[1].abs()));
+        p.push(Vect2::new(a[0], a[1]));
+        vels.push(Vect2::new(d[0] / h, d[1] / h));
+    }
+    if polyguard::api::signed_area2(&p) < 0.0 {
+        p.reverse();
+        vels.reverse();
+    }
+    (StandIn { p, vels }, dv)
+}
+
+/// What the Earth layer adds to a piece (zero on the plane): D's sandwich in plane units
+/// (`PlaneRelation::Near`) and extra distances of the mover's and the vertices' model
+/// from what is projected.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Margins {
+    /// A distance certainly within D.
+    pub d_lo: f64,
+    /// A distance beyond which the distance certainly exceeds D.
+    pub d_hi: f64,
+    /// Added to δ_p.
+    pub extra_point: f64,
+    /// Added to δ_v.
+    pub extra_area: f64,
+}
+
+/// The value over a piece of a ring's set when the piece is far from the ring
+/// ([`Prepared::far_from`]): from the exact winding number at the stand-in's start (odd:
+/// inside, 0: outside, even and not 0: a ring that is not simple, unknown).
+fn far_value(area: &PlaneArea, part: usize, ring: usize, s: [f64; 2], hole: bool) -> Holds {
+    let w = winding(ring_of(&area.frames[0], part, ring), s);
+    let inside = if w % 2 != 0 {
+        Holds::Yes
+    } else if w == 0 {
+        Holds::No
+    } else {
+        Holds::Maybe
+    };
+    if hole {
+        inside.not()
+    } else {
+        inside
+    }
+}
+
+/// The timeline of `relation` over the piece [t0, t1] (t0 < t1), in global time: each
+/// ring's sandwich (or its constant value when the piece is far from it), the region ∨
+/// over parts of (outer ∧ holes), ∧ the vertical condition, moved to t0 with outward
+/// rounding and cut to [t0, t1].
+#[allow(clippy::too_many_arguments)]
+pub(super) fn piece_timeline(
+    fixes: &[PlaneFix],
+    area: &PlaneArea,
+    prepared: &Prepared,
+    h_sep: f64,
+    m: Margins,
+    t0: f64,
+    t1: f64,
+) -> Timeline {
+    let (h, exact) = diff_exact(t1, t0);
+    let look = if exact { h } else { h.next_up() };
+    let (a0, e0, z0) = mover_at(fixes, t0);
+    let (a1, e1, z1) = mover_at(fixes, t1);
+    let da = [a1[0] - a0[0], a1[1] - a0[1]];
+    let dp: f64 = (0..2)
+        .map(|c| 2.0 * e0[c] + 2.0 * e1[c] + 5.0 * U * da[c].abs())
+        .sum::<f64>()
+        + m.extra_point;
+    let s = Vect2::new(a0[0], a0[1]);
+    let v = Vect2::new(da[0] / h, da[1] / h);
+    let frame0 = &area.frames[0];
+    let mut region = Timeline::constant(0.0, look, Holds::No);
+    for (k, part) in frame0.parts.iter().enumerate() {
+        let mut tl: Option<Timeline> = None;
+        for ring in 0..=part.holes.len() {
+            let hole = ring > 0;
+            let (d_lo, d_hi) = (m.d_lo, m.d_hi);
+            let set = if hole {
+                RingSet::Hole { d_lo, d_hi }
+            } else {
+                RingSet::Outer { d_lo, d_hi }
+            };
+            // Static rings: δ_v is the projection's alone; the reach covers every set.
+            let reach = (d_hi.max(0.0) + (dp + m.extra_area) * (1.0 + 8.0 * U)).next_up();
+            let r_tl = match prepared.far_from(k, ring, a0, a1, reach) {
+                Some(true) => Timeline::constant(0.0, look, far_value(area, k, ring, a0, hole)),
+                _ => {
+                    let (r, dv) = stand_in(area, k, ring, t0, t1, h);
+                    // δ summed in f64 (a few terms): relative rounding below 1e-15, covered.
+                    let delta = (dp + dv + m.extra_area) * (1.0 + 8.0 * U);
+                    ring_timeline(look, s, v, &r, set, delta)
+                }
+            };
+            tl = Some(match tl {
+                None => r_tl,
+                Some(t) => t.and(&r_tl),
+            });
+        }
+        if let Some(t) = tl {
+            region = region.or(&t);
+        }
+    }
+    let vert = vertical(area, h_sep, z0, z1, h, look);
+    region.and(&vert).shifted(t0).clipped(t0, t1)
+}

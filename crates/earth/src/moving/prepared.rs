@@ -1,0 +1,102 @@
+//! An area made ready for many pieces: for a static area, each ring's edges in an R-tree,
+//! so that a piece far from every edge is decided by one exact point-in-ring test
+//! instead of the engine (docs/moving-features.md, "How the answer is built").
+//!
+//! A piece's stand-in point sweeps the segment s + τ·v; when no edge's box meets the
+//! segment's box grown by a reach r (the largest separation any of the piece's sets
+//! uses, plus δ), every stand-in point is farther than r from the ring in the L∞ norm,
+//! so also in the Euclidean one; the model's point is then farther than r − δ ≥ the
+//! sets' separations from the model's ring, and its winding number is the stand-in's
+//! (piece module doc). So the ring's sets are constant over the piece, and the winding
+//! number at the piece's start, computed exactly ([`winding`]), decides them.
+
+use rstar::primitives::{GeomWithData, Rectangle};
+use rstar::{RTree, AABB};
+
+use super::plane::PlaneArea;
+
+/// An edge's box, and its index in the ring.
+type EdgeBox = GeomWithData<Rectangle<[f64; 2]>, usize>;
+
+/// The edge trees of a static area: `rings[part][ring]` (ring 0 the outer, k the hole
+/// k − 1). Empty for a keyframed area.
+pub struct Prepared {
+    rings: Vec<Vec<RTree<EdgeBox>>>,
+}
+
+impl Prepared {
+    /// The trees of `area` when it is static (none when keyframed).
+    pub fn new(area: &PlaneArea) -> Prepared {
+        let rings = match area.frames.first() {
+            Some(f) if area.is_static || area.frames.len() == 1 => f
+                .parts
+                .iter()
+                .map(|p| {
+                    core::iter::once(&p.outer)
+                        .chain(&p.holes)
+                        .map(|r| edge_tree(r))
+                        .collect()
+                })
+                .collect(),
+            _ => Vec::new(),
+        };
+        Prepared { rings }
+    }
+
+    /// Whether ring `ring` of part `part` has no edge whose box meets the box of the
+    /// segment from `a` to `b` grown by `reach` (rounded outward): `None` when the area
+    /// is keyframed (the test does not apply).
+    pub fn far_from(
+        &self,
+        part: usize,
+        ring: usize,
+        a: [f64; 2],
+        b: [f64; 2],
+        reach: f64,
+    ) -> Option<bool> {
+        let tree = self.rings.get(part)?.get(ring)?;
+        let lo = [
+            (a[0].min(b[0]) - reach).next_down(),
+            (a[1].min(b[1]) - reach).next_down(),
+        ];
+        let hi = [
+            (a[0].max(b[0]) + reach).next_up(),
+            (a[1].max(b[1]) + reach).next_up(),
+        ];
+        let env = AABB::from_corners(lo, hi);
+        Some(tree.locate_in_envelope_intersecting(&env).next().is_none())
+    }
+}
+
+/// The R-tree of a ring's edge boxes.
+fn edge_tree(ring: &[[f64; 2]]) -> RTree<EdgeBox> {
+    let n = ring.len();
+    let boxes = (0..n)
+        .map(|i| {
+            let (a, b) = (ring[i], ring[(i + 1) % n]);
+            GeomWithData::new(Rectangle::from_corners(a, b), i)
+        })
+        .collect();
+    RTree::bulk_load(boxes)
+}
+
+/// The winding number of the ring around `p`, exactly (orientations by
+/// `robust::orient2d`, exact on f64 inputs; the crossing rule counts an edge when it
+/// crosses the horizontal through `p` upward with `p` on its left, downward with `p` on
+/// its right). `p` must not lie on the ring (the callers know it is far from it).
+pub fn winding(ring: &[[f64; 2]], p: [f64; 2]) -> i64 {
+    let c = |q: [f64; 2]| robust::Coord { x: q[0], y: q[1] };
+    let n = ring.len();
+    let mut w = 0;
+    for i in 0..n {
+        let (a, b) = (ring[i], ring[(i + 1) % n]);
+        if a[1] <= p[1] {
+            if b[1] > p[1] && robust::orient2d(c(a), c(b), c(p)) > 0.0 {
+                w += 1;
+            }
+        } else if b[1] <= p[1] && robust::orient2d(c(a), c(b), c(p)) < 0.0 {
+            w -= 1;
+        }
+    }
+    w
+}

@@ -28,6 +28,10 @@ enum Command {
     Assure(polyguard_cli::commands::assure::AssureArgs),
     /// Which areas and tracks of a scenario GeoJSON conflict, and when (paper B).
     Conflicts(polyguard_cli::commands::conflicts::ConflictsArgs),
+    /// Whole flights (timed fixes, CSV or MF-JSON) against areas (GeoJSON, MF-JSON
+    /// moving polygons): certified intervals inside and within separation, one JSON line
+    /// per pair met (docs/moving-features.md).
+    Encounters(polyguard_cli::commands::encounters::EncountersArgs),
     /// A random scenario as in paper B, Section VI.D.
     Generate(polyguard_cli::commands::generate::GenerateArgs),
 }
@@ -40,6 +44,7 @@ fn main() -> ExitCode {
         Command::DetectEarth(a) => polyguard_cli::commands::detect_earth::run(a),
         Command::Assure(a) => polyguard_cli::commands::assure::run(a),
         Command::Conflicts(a) => polyguard_cli::commands::conflicts::run(a),
+        Command::Encounters(a) => polyguard_cli::commands::encounters::run(a),
         Command::Generate(a) => polyguard_cli::commands::generate::run(a),
     }
 }

@@ -453,7 +453,7 @@ pub fn suggest(key: &str, known: &[&'static str]) -> Option<&'static str> {
 }
 
 /// Levenshtein distance (insertions, deletions, substitutions), by characters.
-fn edit_distance(a: &str, b: &str) -> usize {
+pub fn edit_distance(a: &str, b: &str) -> usize {
     let b: Vec<char> = b.chars().collect();
     let mut row: Vec<usize> = (0..=b.len()).collect();
     for (i, ca) in a.chars().enumerate() {

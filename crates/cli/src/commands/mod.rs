@@ -8,4 +8,5 @@ pub mod conflicts;
 pub mod detect;
 pub mod detect_batch;
 pub mod detect_earth;
+pub mod encounters;
 pub mod generate;

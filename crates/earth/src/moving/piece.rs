@@ -26,6 +26,7 @@
 use super::plane::{PlaneArea, PlaneFix, PlaneFrame};
 use super::prepared::{winding, Prepared};
 use super::timeline::{Holds, Timeline};
+use super::{next_down, next_up};
 use polyguard::intervals::{intervals, Relation, Separation};
 use polyguard::{End, Span, Vect2};
 
@@ -111,6 +112,28 @@ fn ring_at(area: &PlaneArea, part: usize, ring: usize, t: f64) -> (Vec<[f64; 2]>
     (pts, err)
 }
 
+/// The area's polygons at time `t` (interpolated between keyframes), and the largest
+/// error bound (L1) of a vertex.
+pub(super) fn frame_at(area: &PlaneArea, t: f64) -> (PlaneFrame, f64) {
+    let mut err: f64 = 0.0;
+    let parts = area.frames[0]
+        .parts
+        .iter()
+        .enumerate()
+        .map(|(k, part)| {
+            let mut ring = |r: usize| {
+                let (v, e) = ring_at(area, k, r, t);
+                err = err.max(e);
+                v
+            };
+            let outer = ring(0);
+            let holes = (1..=part.holes.len()).map(&mut ring).collect();
+            super::plane::PlaneRings { outer, holes }
+        })
+        .collect();
+    (PlaneFrame { t, parts }, err)
+}
+
 /// The unit roundoff of f64, 2⁻⁵³.
 const U: f64 = f64::EPSILON / 2.0;
 
@@ -155,20 +178,20 @@ fn ring_timeline(look: f64, s: Vect2, v: Vect2, r: &StandIn, set: RingSet, delta
     let e = |rel, d: f64| engine(look, s, v, r, rel, d);
     match set {
         RingSet::Outer { d_lo, d_hi } => {
-            let upper = e(Relation::Near, (d_hi + delta).next_up());
+            let upper = e(Relation::Near, next_up(d_hi + delta));
             let lower = if d_lo > delta {
-                e(Relation::Near, (d_lo - delta).next_down())
+                e(Relation::Near, next_down(d_lo - delta))
             } else {
-                e(Relation::Breach, (delta - d_lo).next_up()).not()
+                e(Relation::Breach, next_up(delta - d_lo)).complement()
             };
             Timeline::sandwich(&lower, &upper)
         }
         RingSet::Hole { d_lo, d_hi } => {
-            let upper = e(Relation::Breach, (d_hi + delta).next_up());
+            let upper = e(Relation::Breach, next_up(d_hi + delta));
             let lower = if d_lo > 0.0 && d_lo >= 2.0 * delta {
-                e(Relation::Breach, (d_lo - delta).next_down())
+                e(Relation::Breach, next_down(d_lo - delta))
             } else {
-                e(Relation::Near, delta.next_up()).not()
+                e(Relation::Near, next_up(delta)).complement()
             };
             Timeline::sandwich(&lower, &upper)
         }
@@ -305,6 +328,8 @@ pub(crate) struct Margins {
     pub extra_point: f64,
     /// Added to δ_v.
     pub extra_area: f64,
+    /// Added to the heights' error bounds at the piece's ends (feet).
+    pub extra_z: f64,
 }
 
 /// The value over a piece of a ring's set when the piece is far from the ring
@@ -320,9 +345,52 @@ fn far_value(area: &PlaneArea, part: usize, ring: usize, s: [f64; 2], hole: bool
         Holds::Maybe
     };
     if hole {
-        inside.not()
+        inside.negated()
     } else {
         inside
+    }
+}
+
+/// The values of the rings' far pieces ([`far_value`]) carried from one piece to the
+/// next: a piece far from a ring that starts where the previous far piece of that ring
+/// ended has the same value, as the mover has not met the ring in between (both pieces'
+/// stand-ins are farther than the reach from it, and they join at the shared fix).
+#[derive(Default)]
+pub(super) struct FarCache {
+    /// Per (part, ring): the end time of the last far piece and its value.
+    last: Vec<Vec<Option<(f64, Holds)>>>,
+}
+
+impl FarCache {
+    /// The cached value of ring `ring` of part `k` for a far piece starting at `t0`, or
+    /// `compute`'s, which is remembered with the piece's end `t1`.
+    fn value(
+        &mut self,
+        k: usize,
+        ring: usize,
+        t0: f64,
+        t1: f64,
+        compute: impl FnOnce() -> Holds,
+    ) -> Holds {
+        if self.last.len() <= k {
+            self.last.resize(k + 1, Vec::new());
+        }
+        if self.last[k].len() <= ring {
+            self.last[k].resize(ring + 1, None);
+        }
+        let v = match self.last[k][ring] {
+            Some((end, v)) if end == t0 => v,
+            _ => compute(),
+        };
+        self.last[k][ring] = Some((t1, v));
+        v
+    }
+
+    /// Forgets ring `ring` of part `k` (a piece near it broke the run).
+    fn forget(&mut self, k: usize, ring: usize) {
+        if let Some(slot) = self.last.get_mut(k).and_then(|r| r.get_mut(ring)) {
+            *slot = None;
+        }
     }
 }
 
@@ -332,6 +400,7 @@ fn far_value(area: &PlaneArea, part: usize, ring: usize, s: [f64; 2], hole: bool
 /// rounding and cut to [t0, t1].
 #[allow(clippy::too_many_arguments)]
 pub(super) fn piece_timeline(
+    cache: &mut FarCache,
     fixes: &[PlaneFix],
     area: &PlaneArea,
     prepared: &Prepared,
@@ -341,7 +410,7 @@ pub(super) fn piece_timeline(
     t1: f64,
 ) -> Timeline {
     let (h, exact) = diff_exact(t1, t0);
-    let look = if exact { h } else { h.next_up() };
+    let look = if exact { h } else { next_up(h) };
     let (a0, e0, z0) = mover_at(fixes, t0);
     let (a1, e1, z1) = mover_at(fixes, t1);
     let da = [a1[0] - a0[0], a1[1] - a0[1]];
@@ -353,7 +422,22 @@ pub(super) fn piece_timeline(
     let v = Vect2::new(da[0] / h, da[1] / h);
     let frame0 = &area.frames[0];
     let mut region = Timeline::constant(0.0, look, Holds::No);
-    for (k, part) in frame0.parts.iter().enumerate() {
+    // Far from the area's box: outside every ring by more than every set's reach. A
+    // keyframed vertex's interpolation error is below 80u times the coordinates' size.
+    let c = prepared
+        .magnitude()
+        .max(a0[0].abs())
+        .max(a0[1].abs())
+        .max(a1[0].abs())
+        .max(a1[1].abs());
+    let reach_box =
+        next_up((m.d_hi.max(0.0) + dp + m.extra_area) * (1.0 + 8.0 * U) + 128.0 * U * c);
+    let parts = if prepared.box_meets(a0, a1, reach_box) {
+        &frame0.parts[..]
+    } else {
+        &[]
+    };
+    for (k, part) in parts.iter().enumerate() {
         let mut tl: Option<Timeline> = None;
         for ring in 0..=part.holes.len() {
             let hole = ring > 0;
@@ -364,10 +448,14 @@ pub(super) fn piece_timeline(
                 RingSet::Outer { d_lo, d_hi }
             };
             // Static rings: δ_v is the projection's alone; the reach covers every set.
-            let reach = (d_hi.max(0.0) + (dp + m.extra_area) * (1.0 + 8.0 * U)).next_up();
+            let reach = next_up(d_hi.max(0.0) + (dp + m.extra_area) * (1.0 + 8.0 * U));
             let r_tl = match prepared.far_from(k, ring, a0, a1, reach) {
-                Some(true) => Timeline::constant(0.0, look, far_value(area, k, ring, a0, hole)),
+                Some(true) => {
+                    let v = cache.value(k, ring, t0, t1, || far_value(area, k, ring, a0, hole));
+                    Timeline::constant(0.0, look, v)
+                }
                 _ => {
+                    cache.forget(k, ring);
                     let (r, dv) = stand_in(area, k, ring, t0, t1, h);
                     // δ summed in f64 (a few terms): relative rounding below 1e-15, covered.
                     let delta = (dp + dv + m.extra_area) * (1.0 + 8.0 * U);
@@ -383,6 +471,12 @@ pub(super) fn piece_timeline(
             region = region.or(&t);
         }
     }
-    let vert = vertical(area, h_sep, z0, z1, h, look);
-    region.and(&vert).shifted(t0).clipped(t0, t1)
+    let widen = |z: Option<(f64, f64)>| z.map(|(z, e)| (z, e + m.extra_z));
+    let vert = vertical(area, h_sep, widen(z0), widen(z1), h, look);
+    let both = region.and(&vert);
+    match both.as_constant() {
+        // A constant needs no shift: its window is [t0, t1] exactly.
+        Some(v) => Timeline::constant(t0, t1, v),
+        None => both.shifted(t0).clipped(t0, t1),
+    }
 }

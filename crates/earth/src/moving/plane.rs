@@ -79,7 +79,7 @@ pub struct TimeSpan {
     pub certain: bool,
 }
 
-use super::piece::{piece_timeline, Margins};
+use super::piece::{piece_timeline, FarCache, Margins};
 use super::prepared::Prepared;
 use super::timeline::Timeline;
 
@@ -199,11 +199,8 @@ fn validate(fixes: &[PlaneFix], area: &PlaneArea) -> Result<(), PlaneError> {
                     });
                 }
                 for (i, p) in ring.iter().enumerate() {
-                    for c in 0..2 {
-                        finite(
-                            || format!("frames[{k}].parts[{j}] ring {r}[{i}][{c}]"),
-                            p[c],
-                        )?;
+                    for (c, x) in p.iter().enumerate() {
+                        finite(|| format!("frames[{k}].parts[{j}] ring {r}[{i}][{c}]"), *x)?;
                     }
                 }
             }
@@ -243,6 +240,7 @@ pub fn plane_spans(
                 d_hi: 0.0,
                 extra_point: 0.0,
                 extra_area: 0.0,
+                extra_z: 0.0,
             },
         ),
         PlaneRelation::Near { d_lo, d_hi, h } => (
@@ -252,23 +250,27 @@ pub fn plane_spans(
                 d_hi,
                 extra_point: 0.0,
                 extra_area: 0.0,
+                extra_z: 0.0,
             },
         ),
     };
-    Ok(spans_with(fixes, area, &prepared, h, &|_, _| m))
+    Ok(timeline_with(fixes, area, &prepared, h, &|_, _| m)
+        .map(|t| t.closed().to_spans())
+        .unwrap_or_default())
 }
 
-/// [`plane_spans`] on validated input, with `margins` of each piece [t0, t1] (the Earth
-/// layer's) and the vertical separation `h_sep` (0 for inside).
-pub(crate) fn spans_with(
+/// The timeline under [`plane_spans`], on validated input, with `margins` of each piece
+/// [t0, t1] (the Earth layer's) and the vertical separation `h_sep` (0 for inside); `None`
+/// when the domain is empty.
+pub(crate) fn timeline_with(
     fixes: &[PlaneFix],
     area: &PlaneArea,
     prepared: &Prepared,
     h_sep: f64,
     margins: &dyn Fn(f64, f64) -> Margins,
-) -> Vec<TimeSpan> {
+) -> Option<Timeline> {
     let (Some(first), Some(last)) = (fixes.first(), fixes.last()) else {
-        return Vec::new();
+        return None;
     };
     let (mut a, mut b) = (first.t, last.t);
     if !area.is_static && area.frames.len() > 1 {
@@ -276,15 +278,10 @@ pub(crate) fn spans_with(
         b = b.min(area.frames[area.frames.len() - 1].t);
     }
     if a > b {
-        return Vec::new();
+        return None;
     }
     if a == b {
-        // One instant: the engine needs a duration; say "maybe" there.
-        return vec![TimeSpan {
-            start: [a, a],
-            end: [a, a],
-            certain: false,
-        }];
+        return Some(instant(fixes, area, h_sep, margins(a, b), a));
     }
     let mut cuts: Vec<f64> = vec![a, b];
     cuts.extend(fixes.iter().map(|f| f.t).filter(|&t| t > a && t < b));
@@ -294,8 +291,10 @@ pub(crate) fn spans_with(
     cuts.sort_by(f64::total_cmp);
     cuts.dedup();
     let mut tl: Option<Timeline> = None;
+    let mut cache = FarCache::default();
     for w in cuts.windows(2) {
         let p = piece_timeline(
+            &mut cache,
             fixes,
             area,
             prepared,
@@ -309,5 +308,35 @@ pub(crate) fn spans_with(
             Some(t) => t.then(&p),
         });
     }
-    tl.map(|t| t.closed().to_spans()).unwrap_or_default()
+    tl
+}
+
+/// The timeline of a domain that is one instant `a`: the engine needs a duration, so the
+/// mover and the area are frozen as they are at `a` over a piece of length 1, on which
+/// every set is constant; its value at the start is the answer.
+fn instant(fixes: &[PlaneFix], area: &PlaneArea, h_sep: f64, m: Margins, a: f64) -> Timeline {
+    let (frame, err) = super::piece::frame_at(area, a);
+    let m = Margins {
+        extra_area: m.extra_area + 2.0 * err,
+        ..m
+    };
+    let frozen = PlaneArea {
+        frames: vec![PlaneFrame { t: 0.0, ..frame }],
+        is_static: true,
+        floor: area.floor,
+        ceiling: area.ceiling,
+    };
+    let p = fixes.iter().find(|f| f.t == a).copied().unwrap_or(fixes[0]);
+    let still = [PlaneFix { t: 0.0, ..p }, PlaneFix { t: 1.0, ..p }];
+    let tl = piece_timeline(
+        &mut FarCache::default(),
+        &still,
+        &frozen,
+        &Prepared::new(&frozen),
+        h_sep,
+        m,
+        0.0,
+        1.0,
+    );
+    Timeline::constant(a, a, tl.value_at(0.0))
 }

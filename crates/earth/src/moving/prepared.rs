@@ -10,6 +10,7 @@
 //! (piece module doc). So the ring's sets are constant over the piece, and the winding
 //! number at the piece's start, computed exactly ([`winding`]), decides them.
 
+use super::{next_down, next_up};
 use rstar::primitives::{GeomWithData, Rectangle};
 use rstar::{RTree, AABB};
 
@@ -22,6 +23,9 @@ type EdgeBox = GeomWithData<Rectangle<[f64; 2]>, usize>;
 /// k − 1). Empty for a keyframed area.
 pub struct Prepared {
     rings: Vec<Vec<RTree<EdgeBox>>>,
+    /// [xmin, ymin, xmax, ymax] of every vertex of every frame: a moving vertex stays in
+    /// it (each moves linearly between two of its positions).
+    bbox: [f64; 4],
 }
 
 impl Prepared {
@@ -40,7 +44,41 @@ impl Prepared {
                 .collect(),
             _ => Vec::new(),
         };
-        Prepared { rings }
+        let mut bbox = [
+            f64::INFINITY,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NEG_INFINITY,
+        ];
+        for f in &area.frames {
+            for part in &f.parts {
+                for p in core::iter::once(&part.outer).chain(&part.holes).flatten() {
+                    bbox = [
+                        bbox[0].min(p[0]),
+                        bbox[1].min(p[1]),
+                        bbox[2].max(p[0]),
+                        bbox[3].max(p[1]),
+                    ];
+                }
+            }
+        }
+        Prepared { rings, bbox }
+    }
+
+    /// The largest magnitude of a coordinate of the area.
+    pub fn magnitude(&self) -> f64 {
+        self.bbox.iter().fold(0.0f64, |m, x| m.max(x.abs()))
+    }
+
+    /// Whether the box of the segment from `a` to `b`, grown by `reach` (rounded outward),
+    /// meets the area's box.
+    pub fn box_meets(&self, a: [f64; 2], b: [f64; 2], reach: f64) -> bool {
+        let lo = [a[0].min(b[0]) - reach, a[1].min(b[1]) - reach];
+        let hi = [a[0].max(b[0]) + reach, a[1].max(b[1]) + reach];
+        next_down(lo[0]) <= self.bbox[2]
+            && self.bbox[0] <= next_up(hi[0])
+            && next_down(lo[1]) <= self.bbox[3]
+            && self.bbox[1] <= next_up(hi[1])
     }
 
     /// Whether ring `ring` of part `part` has no edge whose box meets the box of the
@@ -56,12 +94,12 @@ impl Prepared {
     ) -> Option<bool> {
         let tree = self.rings.get(part)?.get(ring)?;
         let lo = [
-            (a[0].min(b[0]) - reach).next_down(),
-            (a[1].min(b[1]) - reach).next_down(),
+            next_down(a[0].min(b[0]) - reach),
+            next_down(a[1].min(b[1]) - reach),
         ];
         let hi = [
-            (a[0].max(b[0]) + reach).next_up(),
-            (a[1].max(b[1]) + reach).next_up(),
+            next_up(a[0].max(b[0]) + reach),
+            next_up(a[1].max(b[1]) + reach),
         ];
         let env = AABB::from_corners(lo, hi);
         Some(tree.locate_in_envelope_intersecting(&env).next().is_none())

@@ -7,7 +7,7 @@
 //! [`Holds::Yes`] (S holds at every time of it), [`Holds::No`] (S holds at none) or
 //! [`Holds::Maybe`] (unknown). The engine's spans (G1–G3 of `polyguard::intervals`)
 //! become a timeline ([`Timeline::from_spans`]); timelines combine pointwise by Kleene's
-//! logic ([`Timeline::and`], [`Timeline::or`], [`Timeline::not`], [`Timeline::sandwich`]),
+//! logic ([`Timeline::and`], [`Timeline::or`], [`Timeline::complement`], [`Timeline::sandwich`]),
 //! which keeps every value a true statement; and a timeline becomes spans again
 //! ([`Timeline::to_spans`]) that keep G1–G3:
 //! - G1: S misses every `No`; every other value lies in a span.
@@ -16,6 +16,7 @@
 //!   `Yes` and a `No`, and both are in a span's enclosure.
 
 use super::plane::TimeSpan;
+use super::{next_down, next_up};
 use polyguard::Span;
 
 /// What is known of S at a time or over an open interval of times.
@@ -31,7 +32,7 @@ pub enum Holds {
 
 impl Holds {
     /// Kleene's negation.
-    pub fn not(self) -> Holds {
+    pub fn negated(self) -> Holds {
         match self {
             Holds::Yes => Holds::No,
             Holds::No => Holds::Yes,
@@ -50,7 +51,7 @@ impl Holds {
 
     /// Kleene's disjunction.
     pub fn or(self, o: Holds) -> Holds {
-        self.not().and(o.not()).not()
+        self.negated().and(o.negated()).negated()
     }
 
     /// Two certified statements about one truth: `Yes` or `No` when either says so (and
@@ -77,12 +78,12 @@ pub struct Timeline {
 
 /// The next f64 below `x` (finite).
 fn down(x: f64) -> f64 {
-    x.next_down()
+    next_down(x)
 }
 
 /// The next f64 above `x` (finite).
 fn up(x: f64) -> f64 {
-    x.next_up()
+    next_up(x)
 }
 
 impl Timeline {
@@ -189,11 +190,11 @@ impl Timeline {
     }
 
     /// Kleene's negation, pointwise (the complement of S).
-    pub fn not(&self) -> Timeline {
+    pub fn complement(&self) -> Timeline {
         Timeline {
             t: self.t.clone(),
-            at: self.at.iter().map(|h| h.not()).collect(),
-            between: self.between.iter().map(|h| h.not()).collect(),
+            at: self.at.iter().map(|h| h.negated()).collect(),
+            between: self.between.iter().map(|h| h.negated()).collect(),
         }
     }
 
@@ -307,7 +308,22 @@ impl Timeline {
         self.t.extend_from_slice(&next.t[1..]);
         self.at.extend_from_slice(&next.at[1..]);
         self.between.extend_from_slice(&next.between);
-        self.simplified()
+        // Both parts are simplified; only the shared boundary may separate nothing.
+        if last > 0 && last + 1 < self.t.len() {
+            let (l, r) = (self.between[last - 1], self.between[last]);
+            if l == r && self.at[last] == l {
+                self.t.remove(last);
+                self.at.remove(last);
+                self.between.remove(last);
+            }
+        }
+        self
+    }
+
+    /// The one value of a timeline that has no other, if so.
+    pub fn as_constant(&self) -> Option<Holds> {
+        let v = self.at[0];
+        (self.at.iter().chain(&self.between).all(|&x| x == v)).then_some(v)
     }
 
     /// The spans that keep G1–G3 (the module doc): each maximal run of times that are not

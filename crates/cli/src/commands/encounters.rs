@@ -1,0 +1,258 @@
+//! `polyguard encounters MOVERS AREAS`: every mover (timed fixes: CSV, or MF-JSON
+//! trajectories) against every area (GeoJSON polygons, MF-JSON moving polygons), one JSON
+//! line per pair that meets, with the certified spans of inside and near
+//! (docs/moving-features.md).
+
+use polyguard_earth::moving::broad::{encounters_of, Areas};
+use polyguard_earth::moving::encounter::{Encounter, Options};
+use polyguard_earth::moving::model::{Area, Trajectory};
+use polyguard_earth::moving::plane::TimeSpan;
+use polyguard_earth::moving::time::{format, Round};
+use polyguard_earth::moving::{fixes_csv, mfjson};
+use rayon::prelude::*;
+use serde_json::{json, Value};
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::Instant;
+
+use super::conflicts::GeodesyArg;
+
+/// Exit code when some features or rows were rejected (the others are answered).
+const EXIT_BAD_INPUT: u8 = 1;
+/// Exit code when an input cannot be read at all.
+const EXIT_FATAL: u8 = 2;
+/// Movers answered together (in parallel) before their lines are written: bounds the
+/// memory held by answers waiting to be written.
+const CHUNK: usize = 256;
+
+/// Arguments of `polyguard encounters`.
+#[derive(clap::Args, Debug, Clone)]
+pub struct EncountersArgs {
+    /// The movers: a CSV of fixes (`.csv`: timestamp, icao24, latitude, longitude, and
+    /// optionally callsign, altitude, flight_id) or MF-JSON trajectories / MovingPoints
+    /// (docs/moving-features.md, "Formats"); `-` reads standard input (MF-JSON).
+    pub movers: PathBuf,
+    /// The areas: GeoJSON Polygons / MultiPolygons (optional `floor_ft`, `ceiling_ft`) or
+    /// MF-JSON MovingPolygons, as a FeatureCollection or JSON Lines.
+    pub areas: PathBuf,
+    /// D, nautical miles: "near" means within D horizontally (0: near is inside).
+    #[arg(long, default_value_t = 0.0)]
+    pub sep: f64,
+    /// H, feet: "near" also means within H of the area's floor–ceiling slab.
+    #[arg(long = "sep-v", default_value_t = 0.0)]
+    pub sep_v: f64,
+    /// Fixes more than this many seconds apart are not joined: the flight splits there
+    /// and the gap is reported.
+    #[arg(long = "max-gap", default_value_t = 60.0)]
+    pub max_gap: f64,
+    /// The model of the Earth: `sphere` (radius 3440.065 nm) or `wgs84`.
+    #[arg(long, value_enum, default_value_t = GeodesyArg::Sphere)]
+    pub geodesy: GeodesyArg,
+    /// Write the answer here instead of standard output.
+    #[arg(long, short)]
+    pub output: Option<PathBuf>,
+    /// No summary on standard error.
+    #[arg(long)]
+    pub quiet: bool,
+}
+
+/// The text of `path` (`-`: standard input), or a message.
+fn read_text(path: &Path) -> Result<String, String> {
+    if path == Path::new("-") {
+        let mut s = String::new();
+        std::io::Read::read_to_string(&mut std::io::stdin(), &mut s)
+            .map_err(|e| format!("standard input: {e}"))?;
+        Ok(s)
+    } else {
+        std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))
+    }
+}
+
+/// What the inputs gave: movers, areas, and the messages of what was rejected.
+#[derive(Default)]
+struct Inputs {
+    movers: Vec<Trajectory>,
+    areas: Vec<Area>,
+    errors: Vec<String>,
+    warnings: Vec<String>,
+}
+
+/// Reads one input (CSV by its extension, else MF-JSON) into `inp`; `want_movers` says
+/// which kind of feature the argument is for (the other kind is an error naming it).
+fn read_input(path: &Path, want_movers: bool, inp: &mut Inputs) -> Result<(), String> {
+    let text = read_text(path)?;
+    let name = path.display().to_string();
+    let is_csv = path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("csv"));
+    if is_csv {
+        if !want_movers {
+            return Err(format!("{name}: a CSV holds fixes of movers, not areas"));
+        }
+        let r = fixes_csv::read(&text).map_err(|e| format!("{name}: {e}"))?;
+        inp.movers.extend(r.trajectories);
+        inp.errors
+            .extend(r.errors.iter().map(|e| format!("{name}: {e}")));
+        inp.warnings
+            .extend(r.warnings.iter().map(|w| format!("{name}: {w}")));
+        return Ok(());
+    }
+    let r = mfjson::read(&text).map_err(|e| format!("{name}: {e}"))?;
+    inp.warnings
+        .extend(r.warnings.iter().map(|w| format!("{name}: {w}")));
+    for (i, item) in r.items.into_iter().enumerate() {
+        match item {
+            Ok(mfjson::Item::Mover(t)) if want_movers => inp.movers.push(t),
+            Ok(mfjson::Item::Area(a)) if !want_movers => inp.areas.push(a),
+            Ok(mfjson::Item::Mover(t)) => inp.errors.push(format!(
+                "{name}: feature {i} ({}) is a mover; AREAS takes areas",
+                t.id
+            )),
+            Ok(mfjson::Item::Area(a)) => inp.errors.push(format!(
+                "{name}: feature {i} ({}) is an area; MOVERS takes movers",
+                a.id
+            )),
+            Err(e) => inp.errors.push(format!("{name}: {e}")),
+        }
+    }
+    Ok(())
+}
+
+/// An epoch time as RFC 3339 rounded `r` (or `null` beyond years 0–9999).
+fn utc(t: f64, r: Round) -> Value {
+    format(t, r).map_or(Value::Null, Value::String)
+}
+
+/// One span of the answer: epoch-second enclosures, and the UTC text of its outer ends
+/// (the start's lower end rounded down, the end's upper end rounded up).
+fn span_json(s: &TimeSpan) -> Value {
+    json!({
+        "start": s.start,
+        "end": s.end,
+        "certain": s.certain,
+        "start_utc": utc(s.start[0], Round::Floor),
+        "end_utc": utc(s.end[1], Round::Ceil),
+    })
+}
+
+/// One line of the answer (docs/moving-features.md, "The answer").
+fn encounter_json(e: &Encounter) -> Value {
+    json!({
+        "mover": e.mover,
+        "callsign": e.callsign,
+        "area": e.area,
+        "inside": e.inside.iter().map(span_json).collect::<Vec<_>>(),
+        "near": e.near.iter().map(span_json).collect::<Vec<_>>(),
+        "loss_of_separation": e.loss_of_separation(),
+        "loss_of_separation_utc": e.loss_of_separation().map(|s| utc(s[0], Round::Floor)),
+        "gaps": e.gaps,
+    })
+}
+
+/// Runs `polyguard encounters`.
+pub fn run(a: &EncountersArgs) -> ExitCode {
+    let started = Instant::now();
+    for (name, x) in [
+        ("--sep", a.sep),
+        ("--sep-v", a.sep_v),
+        ("--max-gap", a.max_gap),
+    ] {
+        if !x.is_finite() || x < 0.0 {
+            eprintln!("polyguard encounters: {name} {x}: must be a finite number ≥ 0");
+            return ExitCode::from(EXIT_FATAL);
+        }
+    }
+    let mut inp = Inputs::default();
+    for (path, movers) in [(&a.movers, true), (&a.areas, false)] {
+        if let Err(e) = read_input(path, movers, &mut inp) {
+            eprintln!("polyguard encounters: {e}");
+            return ExitCode::from(EXIT_FATAL);
+        }
+    }
+    let opts = Options {
+        sep_nm: a.sep,
+        sep_v_ft: a.sep_v,
+        max_gap_s: a.max_gap,
+        geodesy: a.geodesy.into(),
+    };
+    let (areas, area_errors) = Areas::new(&inp.areas, opts.geodesy);
+    inp.errors
+        .extend(area_errors.iter().map(|e| format!("area {e}")));
+    let read_s = started.elapsed().as_secs_f64();
+
+    let mut out: Box<dyn Write> = match &a.output {
+        Some(p) => match std::fs::File::create(p) {
+            Ok(f) => Box::new(std::io::BufWriter::new(f)),
+            Err(e) => {
+                eprintln!("polyguard encounters: {}: {e}", p.display());
+                return ExitCode::from(EXIT_FATAL);
+            }
+        },
+        None => Box::new(std::io::BufWriter::new(std::io::stdout().lock())),
+    };
+    let (mut pairs, mut spans_inside, mut spans_near) = (0usize, 0usize, 0usize);
+    for chunk in inp.movers.chunks(CHUNK) {
+        let answers: Vec<_> = chunk
+            .par_iter()
+            .map(|t| encounters_of(t, &areas, &opts))
+            .collect();
+        for (t, ans) in chunk.iter().zip(answers) {
+            match ans {
+                Ok(list) => {
+                    for e in &list {
+                        pairs += 1;
+                        spans_inside += e.inside.len();
+                        spans_near += e.near.len();
+                        if writeln!(out, "{}", encounter_json(e)).is_err() {
+                            return ExitCode::from(EXIT_FATAL);
+                        }
+                    }
+                }
+                Err(e) => inp.errors.push(format!("mover {} {e}", t.id)),
+            }
+        }
+    }
+    if out.flush().is_err() {
+        return ExitCode::from(EXIT_FATAL);
+    }
+    for w in &inp.warnings {
+        eprintln!("warning: {w}");
+    }
+    for e in &inp.errors {
+        eprintln!("error: {e}");
+    }
+    if !a.quiet {
+        let gaps = inp
+            .movers
+            .iter()
+            .map(|t| {
+                t.fixes
+                    .windows(2)
+                    .filter(|w| w[1].t - w[0].t > a.max_gap)
+                    .count()
+            })
+            .sum::<usize>();
+        let fixes: usize = inp.movers.iter().map(|t| t.fixes.len()).sum();
+        eprintln!(
+            "{} movers ({} fixes), {} areas: {} pairs met, {} inside and {} near spans, {} \
+             gaps; {} errors, {} warnings; {:.3} s ({:.3} s reading)",
+            inp.movers.len(),
+            fixes,
+            areas.len(),
+            pairs,
+            spans_inside,
+            spans_near,
+            gaps,
+            inp.errors.len(),
+            inp.warnings.len(),
+            started.elapsed().as_secs_f64(),
+            read_s,
+        );
+    }
+    if inp.errors.is_empty() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(EXIT_BAD_INPUT)
+    }
+}

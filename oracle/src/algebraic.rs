@@ -612,6 +612,22 @@ impl RealAlg {
         RealAlg::rational(BigRational::from_integer(BigInt::from(n)))
     }
 
+    /// The number plus the rational c: a rational moves by c; a root of p in (lo, hi)
+    /// becomes the root of p(t − c) ([`Poly::shifted`] by −c, a positive multiple, so
+    /// the sign at the lower end is kept) in (lo + c, hi + c).
+    /// (The exact truth of moving features: a piece's times moved to global time.)
+    pub fn shifted_by(&self, c: &BigRational) -> RealAlg {
+        match &self.0 {
+            Repr::Rational(x) => RealAlg::rational(x + c),
+            Repr::Root(r) => RealAlg(Repr::Root(Root {
+                p: r.p.shifted(&-c),
+                lo: &r.lo + c,
+                hi: &r.hi + c,
+                lo_sign: r.lo_sign,
+            })),
+        }
+    }
+
     /// The one root of p in (lo, hi), checked exactly: `None` unless p(lo) and p(hi)
     /// have opposite signs and p's squarefree part has exactly one root there. A root
     /// of a linear or quadratic p that is rational comes back as a rational.

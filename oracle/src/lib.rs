@@ -45,7 +45,9 @@
 //! 5. [`case`]: a validated case and paper A's answer for it;
 //! 6. [`truth`](mod@truth): the exact ground truth of a case;
 //! 7. [`intervals`](mod@intervals): the exact sets of times a point is inside, near or
-//!    breaching the polygon, then [`fence`]: keep-in exit detection.
+//!    breaching the polygon, then [`fence`]: keep-in exit detection;
+//! 8. [`moving`]: the exact truth of moving features on the plane (a flight of timed
+//!    fixes against static or keyframed areas), pieced together from [`intervals`](mod@intervals).
 
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
@@ -60,6 +62,7 @@ pub mod fence;
 pub mod field;
 pub mod intervals;
 pub mod kernel;
+pub mod moving;
 pub mod proximity;
 pub mod qfield;
 pub mod quad;

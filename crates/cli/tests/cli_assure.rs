@@ -544,3 +544,52 @@ fn interval_hunts_pass_merge_exactly_and_catch_their_canary() {
         "{out}"
     );
 }
+
+/// The moving hunt: a small run passes; two shards merge into exactly the unsharded
+/// run's counts; a moving report beside an interval one is refused; the fixes-only canary
+/// is caught (exit 1) keeping `moving_missed` scenarios; `--canary` without
+/// `--paper moving` is refused (exit 2).
+#[test]
+fn moving_hunts_pass_merge_exactly_and_catch_their_canary() {
+    let dirs: Vec<PathBuf> = ["mv-0", "mv-1", "mv-all", "mv-merged", "mv-iv", "mv-canary"]
+        .iter()
+        .map(|n| out_dir(n))
+        .collect();
+    let base = [
+        "--paper", "moving", "--cases", "40", "--seed", "5", "--quiet",
+    ];
+    for (i, d) in dirs[..2].iter().enumerate() {
+        let shard = format!("{i}/2");
+        let (code, out, err) = assure(&[&base[..], &["--shard", &shard]].concat(), d);
+        assert_eq!(code, 0, "{out}{err}");
+    }
+    let (code, out, err) = assure(&base, &dirs[2]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(out.starts_with("PASS: 40 scenarios"), "{out}");
+    let (code, out, err) = merge(&[&dirs[0], &dirs[1]], &[], &dirs[3]);
+    assert_eq!(code, 0, "{out}{err}");
+    let read = |d: &PathBuf| -> serde_json::Value {
+        let text = std::fs::read_to_string(d.join("report.json")).expect("report.json");
+        serde_json::from_str(&text).expect("JSON")
+    };
+    let (whole, merged) = (read(&dirs[2]), read(&dirs[3]));
+    assert_eq!(whole["hunt"], "moving");
+    for key in ["cases", "segments", "classes", "relations", "modes"] {
+        assert_eq!(whole[key], merged[key], "{key}");
+    }
+    let (code, _, _) = assure(&["--intervals", "--cases", "10", "--quiet"], &dirs[4]);
+    assert_eq!(code, 0);
+    let (code, _, err) = merge(&[&dirs[0], &dirs[4]], &[], &dirs[3]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("moving hunts"), "{err}");
+    let canary = [&base[..], &["--canary", "fixes-only"]].concat();
+    let (code, out, err) = assure(&canary, &dirs[5]);
+    assert_eq!(code, 1, "{out}{err}");
+    assert!(out.starts_with("FAIL: 40 scenarios"), "{out}");
+    assert!(
+        out.lines().any(|l| l.starts_with("kept moving_missed ")),
+        "{out}"
+    );
+    let (code, _, err) = assure(&["--canary", "fixes-only", "--cases", "5"], &dirs[5]);
+    assert_eq!(code, 2, "{err}");
+}

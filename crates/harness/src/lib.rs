@@ -14,6 +14,8 @@
 //! - [`report`]: counts per function, mode and class; shards merge exactly.
 //! - [`minimise`]: a smaller case of the same class. [`svg`]: its picture.
 //! - [`paper_b`]: paper B's hunt (scenario generator, judge, pictures).
+//! - [`intervals`]: the hunt of certified intervals; [`moving`]: the hunt of moving
+//!   features (flights against static and keyframed areas).
 #![deny(missing_docs)]
 
 pub mod answer;
@@ -23,6 +25,7 @@ pub mod classify;
 pub mod gen;
 pub mod intervals;
 pub mod minimise;
+pub mod moving;
 pub mod paper_b;
 pub mod report;
 pub mod svg;

@@ -71,7 +71,8 @@ pub struct AssureArgs {
     /// The paper to hunt in: `a` (point vs polygon, the default) or `b` (interference of
     /// areas and tracks on the Earth: docs/assurance.md, "Paper B"). With `b`, `--engine`
     /// is `pipeline` (the default) or `sampled` (the canary), and `--contract` and `--aim`
-    /// are refused (paper A's).
+    /// are refused (paper A's). With `moving` (flights against static and keyframed areas:
+    /// docs/assurance.md, "Moving features"), `--canary fixes-only` judges the canary.
     #[arg(long, value_enum, default_value_t = PaperArg::A)]
     pub paper: PaperArg,
     /// Hunt the certified intervals (inside, near_D, breach_D: docs/cases.md) and keep-in
@@ -80,6 +81,18 @@ pub struct AssureArgs {
     /// canaries `shifted-end`, `drop-second`, `flat-exit`.
     #[arg(long, conflicts_with = "contract")]
     pub intervals: bool,
+    /// A canary of `--paper moving`: `fixes-only` decides the relations at the fix
+    /// times alone (class `moving_missed` on cells sweeping over the mover and legs
+    /// cutting a corner between fixes).
+    #[arg(long, value_enum)]
+    pub canary: Option<CanaryArg>,
+}
+
+/// `--canary` of `polyguard assure --paper moving`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum CanaryArg {
+    /// The relations decided at the fix times alone.
+    FixesOnly,
 }
 
 /// `--paper` of `polyguard assure`.
@@ -89,6 +102,10 @@ pub enum PaperArg {
     A,
     /// Paper B (Bienkowski et al.).
     B,
+    /// Moving features: whole flights against static and keyframed areas, the planar
+    /// engine's certified spans against the exact truth (docs/assurance.md, "Moving
+    /// features").
+    Moving,
 }
 
 /// `--aim path=1eA..1eB,buff=1eC..1eD,ends=E` → the narrowed scale space.
@@ -374,6 +391,15 @@ pub fn run(args: &AssureArgs) -> ExitCode {
         }) => return coverage(report, mode.as_deref(), *class),
         None => {}
     }
+    if args.paper == PaperArg::Moving {
+        return run_moving(args);
+    }
+    if args.canary.is_some() {
+        eprintln!(
+            "polyguard assure: --canary fixes-only is the moving hunt's canary: add --paper moving"
+        );
+        return ExitCode::from(2);
+    }
     if args.paper == PaperArg::B {
         return run_paper_b(args);
     }
@@ -563,6 +589,27 @@ fn run_intervals(args: &AssureArgs) -> ExitCode {
     super::assure_intervals::run(&campaign, &args.out)
 }
 
+/// `assure --paper moving`.
+fn run_moving(args: &AssureArgs) -> ExitCode {
+    use polyguard_harness::moving::judge::MovingEngine;
+    if args.contract || args.aim.is_some() || args.intervals || args.engine != EngineArg::F64 {
+        eprintln!("polyguard assure: --paper moving takes --cases, --seed, --shard, --threads, --out, --quiet and --canary fixes-only; drop --contract, --aim, --intervals and --engine");
+        return ExitCode::from(2);
+    }
+    let campaign = super::assure_moving::MovingCampaign {
+        seed: args.seed,
+        shard: args.shard.unwrap_or((0, 1)),
+        cases: args.cases,
+        engine: match args.canary {
+            None => MovingEngine::Certified,
+            Some(CanaryArg::FixesOnly) => MovingEngine::FixesOnly,
+        },
+        threads: threads(args),
+        quiet: args.quiet,
+    };
+    super::assure_moving::run(&campaign, &args.out)
+}
+
 /// `assure --paper b`.
 fn run_paper_b(args: &AssureArgs) -> ExitCode {
     use super::assure_b::{self, EngineB};
@@ -681,10 +728,11 @@ enum Hunt {
     PaperA,
     PaperB,
     Intervals,
+    Moving,
 }
 
 /// The hunt of every report in `texts`: paper B's say so (`"paper": "b"`), interval
-/// hunts too (`"hunt": "intervals"`); reports of different hunts are refused.
+/// and moving hunts too (`"hunt": "intervals"`, `"hunt": "moving"`); reports of different hunts are refused.
 fn hunt_of(texts: &[String]) -> Result<Hunt, String> {
     let member = |t: &str, key: &str| -> Option<String> {
         serde_json::from_str::<serde_json::Value>(t)
@@ -702,6 +750,19 @@ fn hunt_of(texts: &[String]) -> Result<Hunt, String> {
         .iter()
         .filter(|t| member(t, "paper").as_deref() == Some("b"))
         .count();
+    let mv = texts
+        .iter()
+        .filter(|t| member(t, "hunt").as_deref() == Some("moving"))
+        .count();
+    if mv > 0 {
+        return if mv == n {
+            Ok(Hunt::Moving)
+        } else {
+            Err(format!(
+                "{mv} of the {n} reports are moving hunts and the rest are not: merge each hunt apart"
+            ))
+        };
+    }
     match (iv, b) {
         (iv, 0) if iv == n => Ok(Hunt::Intervals),
         (0, b) if b == n => Ok(Hunt::PaperB),
@@ -730,6 +791,7 @@ fn merge(paths: &[PathBuf], out: &Path, partial: bool) -> ExitCode {
     match hunt_of(&texts) {
         Err(e) => return fail(e),
         Ok(Hunt::Intervals) => return super::assure_intervals::merge(paths, &texts, out, partial),
+        Ok(Hunt::Moving) => return super::assure_moving::merge(paths, &texts, out, partial),
         Ok(Hunt::PaperB) => return super::assure_b::merge(paths, &texts, out, partial),
         Ok(Hunt::PaperA) => {}
     }

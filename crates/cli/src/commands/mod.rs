@@ -3,6 +3,7 @@ pub mod assure;
 pub mod assure_b;
 pub mod assure_common;
 pub mod assure_intervals;
+pub mod assure_moving;
 pub mod conflicts;
 pub mod detect;
 pub mod detect_batch;

@@ -176,7 +176,7 @@ pub struct IntervalVerdict {
 }
 
 /// The exact comparison of an algebraic end with a float (every f64 is a rational).
-fn cmp_f64(a: &RealAlg, x: f64) -> Ordering {
+pub(crate) fn cmp_f64(a: &RealAlg, x: f64) -> Ordering {
     match polyguard_oracle::convert::q(x) {
         Some(r) => a.cmp_rational(&r),
         None if x > 0.0 => Ordering::Less,
@@ -185,7 +185,7 @@ fn cmp_f64(a: &RealAlg, x: f64) -> Ordering {
 }
 
 /// lo ≤ a ≤ hi, exactly.
-fn within(a: &RealAlg, lo: f64, hi: f64) -> bool {
+pub(crate) fn within(a: &RealAlg, lo: f64, hi: f64) -> bool {
     cmp_f64(a, lo) != Ordering::Less && cmp_f64(a, hi) != Ordering::Greater
 }
 

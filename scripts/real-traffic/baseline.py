@@ -11,7 +11,7 @@ It calls traffic the way its users do, in one process:
      (a vertex of the lon/lat/altitude intersection must lie strictly between
      100 x lower and 100 x upper; fixes without altitude are dropped first);
    - ``flight.intersects(fir.shape)``: the 2D test on the Shapely polygon alone.
-   Each loop is timed separately.
+   Each loop is timed separately, in wall time and in this process's CPU time.
 2. Intervals: for every pair whose 2D test holds,
    - ``flight.clip_iterate(fir)``: the pieces, each a ``Flight`` whose start/stop are
      the first and last fixes strictly inside the crossing times (``between(...,
@@ -44,6 +44,20 @@ import platform  # noqa: E402
 import sys  # noqa: E402
 import warnings  # noqa: E402
 from pathlib import Path  # noqa: E402
+
+
+class Clock:
+    """Wall time (``time.perf_counter``) and this process's CPU time
+    (``time.process_time``) of a block: on a shared machine the wall time grows with
+    the load, the CPU time much less."""
+
+    def __enter__(self):
+        self.w0, self.c0 = time.perf_counter(), time.process_time()
+        return self
+
+    def __exit__(self, *exc):
+        self.wall = time.perf_counter() - self.w0
+        self.cpu = time.process_time() - self.c0
 
 
 def epoch(ts) -> float:
@@ -110,17 +124,17 @@ def main(argv=None) -> int:
     tag = args.sample + (f"-first{args.limit}" if args.limit else "")
     shapes = {a.designator: a.shape for a in firs}
 
-    t0 = time.perf_counter()
-    occ3 = {(f.flight_id, a.designator): bool(f.intersects(a)) for f in flights for a in firs}
-    t_occ3 = time.perf_counter() - t0
-    print(f"intersects (Airspace, with altitude limits): {len(occ3)} pairs in {t_occ3:.1f} s, "
+    with Clock() as c_occ3:
+        occ3 = {(f.flight_id, a.designator): bool(f.intersects(a)) for f in flights for a in firs}
+    print(f"intersects (Airspace, with altitude limits): {len(occ3)} pairs in {c_occ3.wall:.1f} s "
+          f"(CPU {c_occ3.cpu:.1f} s), "
           f"{sum(occ3.values())} true")
 
-    t0 = time.perf_counter()
-    occ2 = {(f.flight_id, a.designator): bool(f.intersects(shapes[a.designator]))
-            for f in flights for a in firs}
-    t_occ2 = time.perf_counter() - t0
-    print(f"intersects (fir.shape, 2D): {len(occ2)} pairs in {t_occ2:.1f} s, "
+    with Clock() as c_occ2:
+        occ2 = {(f.flight_id, a.designator): bool(f.intersects(shapes[a.designator]))
+                for f in flights for a in firs}
+    print(f"intersects (fir.shape, 2D): {len(occ2)} pairs in {c_occ2.wall:.1f} s "
+          f"(CPU {c_occ2.cpu:.1f} s), "
           f"{sum(occ2.values())} true")
 
     with (args.out / f"baseline-{tag}-occupancy.jsonl").open("w") as fh:
@@ -132,22 +146,20 @@ def main(argv=None) -> int:
                                      "intersects": occ3[k], "intersects_2d": occ2[k]}) + "\n")
 
     pairs = [(f, a) for f in flights for a in firs if occ2[(f.flight_id, a.designator)]]
-    t0 = time.perf_counter()
-    pieces = {(f.flight_id, a.designator): [[epoch(p.start), epoch(p.stop)]
-                                            for p in f.clip_iterate(a)] for f, a in pairs}
-    t_iter = time.perf_counter() - t0
-    t0 = time.perf_counter()
+    with Clock() as c_iter:
+        pieces = {(f.flight_id, a.designator): [[epoch(p.start), epoch(p.stop)]
+                                                for p in f.clip_iterate(a)] for f, a in pairs}
     clips = {}
-    for f, a in pairs:
-        c = f.clip(a)
-        clips[(f.flight_id, a.designator)] = None if c is None else [epoch(c.start), epoch(c.stop)]
-    t_clip = time.perf_counter() - t0
-    t0 = time.perf_counter()
-    cross = {(f.flight_id, a.designator): crossings(f, shapes[a.designator]) for f, a in pairs}
-    t_cross = time.perf_counter() - t0
+    with Clock() as c_clip:
+        for f, a in pairs:
+            c = f.clip(a)
+            clips[(f.flight_id, a.designator)] = None if c is None else [epoch(c.start), epoch(c.stop)]
+    with Clock() as c_cross:
+        cross = {(f.flight_id, a.designator): crossings(f, shapes[a.designator]) for f, a in pairs}
     n_pieces = sum(len(v) for v in pieces.values())
-    print(f"clip_iterate: {len(pairs)} pairs, {n_pieces} pieces in {t_iter:.1f} s; "
-          f"clip: {t_clip:.1f} s; crossings: {t_cross:.1f} s")
+    print(f"clip_iterate: {len(pairs)} pairs, {n_pieces} pieces in {c_iter.wall:.1f} s "
+          f"(CPU {c_iter.cpu:.1f} s); clip: {c_clip.wall:.1f} s (CPU {c_clip.cpu:.1f} s); "
+          f"crossings: {c_cross.wall:.1f} s (CPU {c_cross.cpu:.1f} s)")
 
     with (args.out / f"baseline-{tag}-clip.jsonl").open("w") as fh:
         for f, a in pairs:
@@ -165,9 +177,14 @@ def main(argv=None) -> int:
         "intersects_true": sum(occ3.values()), "intersects_2d_true": sum(occ2.values()),
         "pieces": n_pieces,
         "seconds": {"import_and_load": t_loaded - t_import,
-                    "intersects_airspace_loop": t_occ3, "intersects_shape_loop": t_occ2,
-                    "clip_iterate_loop": t_iter, "clip_loop": t_clip,
-                    "crossings_loop": t_cross, "process": t_end - T_PROCESS},
+                    "intersects_airspace_loop": c_occ3.wall, "intersects_shape_loop": c_occ2.wall,
+                    "clip_iterate_loop": c_iter.wall, "clip_loop": c_clip.wall,
+                    "crossings_loop": c_cross.wall, "process": t_end - T_PROCESS},
+        "cpu_seconds": {"intersects_airspace_loop": c_occ3.cpu,
+                        "intersects_shape_loop": c_occ2.cpu, "clip_iterate_loop": c_iter.cpu,
+                        "clip_loop": c_clip.cpu, "crossings_loop": c_cross.cpu,
+                        "process": time.process_time()},
+        "load_average": os.getloadavg(),
         "versions": {"traffic": traffic.__version__, "pandas": pandas.__version__,
                      "shapely": shapely.__version__, "geos": ".".join(map(str, shapely.geos_version)),
                      "python": sys.version.split()[0]},

@@ -25,6 +25,10 @@ different count of intervals on each side is ``split_differs``. A pair with none
 these agrees. Each pair is classed by its first flag in the order traffic_only,
 ours_only, ends_differ, split_differs, agree.
 
+With ``--occupancy`` it also tables yes/no per pair (ours: at least one span) against
+traffic's ``Flight.intersects`` (with the FIR's altitude limits, or without them by
+``--occupancy-field intersects_2d``).
+
 Prints a markdown table (also written to ``--md``) and writes every difference to
 ``--json`` for inspection.
 """
@@ -177,6 +181,44 @@ def compare(ours: dict, theirs: dict, tol: float) -> dict:
     }
 
 
+def read_occupancy(path: Path, field: str, key: str) -> dict:
+    """Traffic's yes/no per (key, area) from baseline.py's occupancy JSONL (any flight of
+    the key counts)."""
+    out: dict = {}
+    with path.open() as fh:
+        for line in fh:
+            if line.strip():
+                o = json.loads(line)
+                k = (str(o[key]), str(o["area"]))
+                out[k] = out.get(k, False) or bool(o[field])
+    return out
+
+
+def occupancy(ours: dict, occ: dict) -> dict:
+    """The yes/no table: ours = at least one span, against traffic's ``intersects``. Pairs
+    absent from our file are ours = no; pairs absent from traffic's file are counted
+    apart (traffic did not test them)."""
+    table = {"both": 0, "ours_only": 0, "traffic_only": 0, "neither": 0, "untested": 0}
+    ours_only, traffic_only = [], []
+    for k in sorted(set(ours) | set(occ)):
+        a = bool(ours.get(k))
+        if k not in occ:
+            table["untested"] += 1
+            continue
+        b = occ[k]
+        if a and b:
+            table["both"] += 1
+        elif a:
+            table["ours_only"] += 1
+            ours_only.append(list(k))
+        elif b:
+            table["traffic_only"] += 1
+            traffic_only.append(list(k))
+        else:
+            table["neither"] += 1
+    return {"table": table, "ours_only": ours_only, "traffic_only": traffic_only}
+
+
 def markdown(r: dict, title: str) -> str:
     """The summary as a short markdown report."""
     lines = [f"## {title}", "",
@@ -211,6 +253,11 @@ def main(argv=None) -> int:
     ap.add_argument("--areas", default="",
                     help="comma-separated areas to keep (default: all in either file)")
     ap.add_argument("--tol", type=float, default=5.0, help="seconds (default 5)")
+    ap.add_argument("--occupancy", type=Path,
+                    help="also compare yes/no with baseline.py's occupancy JSONL")
+    ap.add_argument("--occupancy-field", default="intersects",
+                    choices=["intersects", "intersects_2d"],
+                    help="intersects: traffic with the FIR's altitude limits; intersects_2d: without")
     ap.add_argument("--json", type=Path, help="write the differences here")
     ap.add_argument("--md", type=Path, help="write the markdown table here")
     args = ap.parse_args(argv)
@@ -224,6 +271,15 @@ def main(argv=None) -> int:
     r = compare(ours, theirs, args.tol)
     md = markdown(r, f"{args.ours.name} ({args.ours_field}) vs {args.traffic.name} "
                      f"({args.traffic_field})")
+    if args.occupancy:
+        occ = read_occupancy(args.occupancy, args.occupancy_field, args.key)
+        if args.areas:
+            occ = {k: v for k, v in occ.items() if k[1] in keep}
+        r["occupancy"] = occupancy(ours, occ)
+        t = r["occupancy"]["table"]
+        md += (f"\nOccupancy against traffic's `{args.occupancy_field}` ({args.occupancy.name}): "
+               f"both {t['both']}, neither {t['neither']}, ours only {t['ours_only']}, "
+               f"traffic only {t['traffic_only']}, not tested by traffic {t['untested']}.\n")
     print(md, end="")
     if args.md:
         args.md.write_text(md)

@@ -31,6 +31,12 @@ Everything comes from the `traffic` package's bundled samples (no network):
   sample's time span), centred on fixes of the sample so that flights meet them;
   ``floor_ft`` / ``ceiling_ft`` properties. Seeded: the same arguments give the same
   bytes.
+- ``expected-<name>-<FIR>-gap<S>.jsonl``: the exact answer where it is plain: when the
+  sample's bounding box lies inside one FIR (quickstart: Paris) with a margin over twice
+  the rhumb deviation of the FIR's edges, every flight is inside that FIR, without
+  altitude limits, from its first fix to its last, split at gaps over S seconds (60 and
+  600). Written in baseline.py's clip format (``pieces``), so that compare.py checks
+  our enclosures against it with ``--tol 0``.
 - ``excerpt/``: small files for tests: 3 quickstart flights that cross FL195 (the Paris
   FIR's ceiling), each cut to 150 s either side of that crossing, as CSV (key columns)
   and MF-JSON; the Paris FIR (LFFF, which holds all of quickstart) and the Brest FIR
@@ -294,6 +300,58 @@ def cell_features(d, sample: str, n: int, seed: int, vertices: int,
     return feats
 
 
+def rhumb_deviation_deg(ring: list, samples: int = 32) -> float:
+    """The largest latitude gap, in degrees, between an edge drawn straight in lon/lat
+    and the rhumb line (straight on Mercator) joining the same vertices, over all edges
+    of ``ring``, sampled at ``samples`` points per edge. At a given longitude both lines
+    differ in latitude alone (a meridian edge is the same line in both), so this bounds
+    how far the area moves between the two readings of its edges."""
+    def merc(phi):
+        return math.log(math.tan(math.pi / 4 + math.radians(phi) / 2))
+
+    def inv(y):
+        return math.degrees(2 * math.atan(math.exp(y)) - math.pi / 2)
+
+    worst = 0.0
+    for (_, p1), (_, p2) in zip(ring, ring[1:]):
+        y1, y2 = merc(p1), merc(p2)
+        for k in range(1, samples):
+            s = k / samples
+            worst = max(worst, abs(inv(y1 + s * (y2 - y1)) - (p1 + s * (p2 - p1))))
+    return worst
+
+
+def expected_inside(d, fir: dict, max_gap_s: float) -> list | None:
+    """The exact inside intervals of every flight in ``fir`` without altitude limits,
+    when the sample's bounding box lies inside the FIR with a margin over twice the
+    rhumb deviation of its edges: every fix is then inside, and so is every segment
+    between fixes (a rhumb segment is straight on Mercator, where the box is a box too),
+    in both the lon/lat and the rhumb reading. Each flight is inside from its first to
+    its last fix, split where two fixes are more than ``max_gap_s`` apart (the gap is
+    outside the domain). None when the box is not inside with that margin."""
+    from shapely.geometry import box, shape
+
+    poly = shape(fir["geometry"])
+    b = box(d.longitude.min(), d.latitude.min(), d.longitude.max(), d.latitude.max())
+    dev = max(rhumb_deviation_deg(r) for r in fir["geometry"]["coordinates"])
+    if not poly.contains(b) or poly.exterior.distance(b) <= 2 * dev:
+        return None
+    rows = []
+    for fid, f in d.groupby("flight_id", sort=True):
+        t = (f.timestamp.astype("int64") // 10**9).tolist()
+        pieces, start = [], t[0]
+        for a, c in zip(t, t[1:]):
+            if c - a > max_gap_s:
+                pieces.append([float(start), float(a)])
+                start = c
+        pieces.append([float(start), float(t[-1])])
+        pieces = [p for p in pieces if p[1] > p[0]]
+        rows.append({"mover": fid, "icao24": f.icao24.iloc[0], "callsign": f.callsign.iloc[0],
+                     "area": fir["id"], "flight": [float(t[0]), float(t[-1])], "pieces": pieces,
+                     "margin_deg": poly.exterior.distance(b), "rhumb_deviation_deg": dev})
+    return rows
+
+
 def _iso(t: int) -> str:
     """Epoch seconds as RFC 3339 UTC."""
     import datetime as dt
@@ -374,6 +432,17 @@ def main(argv=None) -> int:
               f"{args.cell_vertices} vertices")
         summary[name]["cells"] = {"count": len(cells), "keyframes": nk,
                                   "vertices": args.cell_vertices}
+        for fir in firs2d:
+            for gap in (60, 600):
+                exp = expected_inside(d, fir, gap)
+                if exp is not None:
+                    fn = f"expected-{name}-{fir['id']}-gap{gap}.jsonl"
+                    with (out / fn).open("w") as fh:
+                        fh.writelines(json.dumps(r) + "\n" for r in exp)
+                    print(f"{fn}: {len(exp)} flights wholly inside {fir['id']} "
+                          f"(margin {exp[0]['margin_deg']:.4f} deg, rhumb deviation "
+                          f"{exp[0]['rhumb_deviation_deg']:.4f} deg), "
+                          f"{sum(len(r['pieces']) for r in exp)} intervals")
         if name == "quickstart":
             e, anchors = excerpt_flights(d, args.excerpt_flights)
             write_csv(t, e[CSV_FIRST], ex / "quickstart-3.csv")

@@ -94,6 +94,21 @@ class Frames(unittest.TestCase):
             got = compare.read_traffic(t, "clip", "mover")
             self.assertEqual(got, {("M", "X"): [(3.0, 9.0)], ("N", "X"): []})
 
+    def test_occupancy_table(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            t = self.write(tmp, "occ.jsonl", [
+                {"mover": "A", "area": "X", "intersects": True},
+                {"mover": "A", "area": "Y", "intersects": False},
+                {"mover": "B", "area": "X", "intersects": True},
+                {"mover": "B", "area": "Y", "intersects": False}])
+            ours = {("A", "X"): [(0, 1, 2, 3, True)], ("A", "Y"): [(0, 1, 2, 3, True)],
+                    ("B", "Y"): [], ("C", "X"): [(0, 1, 2, 3, True)]}
+            r = compare.occupancy(ours, compare.read_occupancy(t, "intersects", "mover"))
+            self.assertEqual(r["table"], {"both": 1, "ours_only": 1, "traffic_only": 1,
+                                          "neither": 1, "untested": 1})
+            self.assertEqual(r["ours_only"], [["A", "Y"]])
+            self.assertEqual(r["traffic_only"], [["B", "X"]])
+
     def test_disjoint_sides_are_separate_groups(self):
         gs = compare.groups([(0, 1, 10, 11, True)], [(50.0, 60.0)], 5.0)
         self.assertEqual([(len(g["ours"]), len(g["traffic"])) for g in gs], [(1, 0), (0, 1)])

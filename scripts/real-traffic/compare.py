@@ -7,6 +7,10 @@ Ours: JSON Lines, one object per pair met, as ``polyguard encounters`` prints th
 ``{"start": [lo, hi], "end": [lo, hi], "certain": bool, ...}`` (epoch seconds; each end
 an enclosure of the exact instant). The ``inside`` spans are used (``--ours-field``).
 
+Either side may also be an exact answer of export.py (``expected-*.jsonl``, in
+baseline.py's format): as the first file it is read as exact spans (traffic against the
+truth), as the second it checks that our enclosures hold the exact ends (``--tol 0``).
+
 Traffic's: baseline.py's ``baseline-S-clip.jsonl``; the intervals are ``pieces``
 (``Flight.clip_iterate``: ends snapped to the fixes strictly inside), or with
 ``--traffic-field crossings`` the instants Shapely interpolates at the boundary, or
@@ -50,14 +54,21 @@ def utc(t: float) -> str:
 
 
 def read_ours(path: Path, field: str) -> dict:
-    """Our spans per (mover, area): lists of (start_lo, start_hi, end_lo, end_hi, certain)."""
+    """Our spans per (mover, area): lists of (start_lo, start_hi, end_lo, end_hi, certain).
+    A line with ``pieces`` and without ``field`` (baseline.py's format, as export.py's
+    exact answers are written) gives exact spans."""
     out: dict = {}
     with path.open() as fh:
         for n, line in enumerate(fh, 1):
             if not line.strip():
                 continue
             o = json.loads(line)
-            spans = o.get(field) or []
+            if field not in o and "pieces" in o:
+                # A file in baseline.py's format (an exact answer of export.py):
+                # each end known exactly.
+                spans = [{"start": [a, a], "end": [b, b], "certain": True} for a, b in o["pieces"]]
+            else:
+                spans = o.get(field) or []
             key = (str(o["mover"]), str(o["area"]))
             lst = out.setdefault(key, [])
             for s in spans:

@@ -109,6 +109,11 @@ class Frames(unittest.TestCase):
             self.assertEqual(r["ours_only"], [["A", "Y"]])
             self.assertEqual(r["traffic_only"], [["B", "X"]])
 
+    def test_exact_answer_as_first_file(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            e = self.write(tmp, "e.jsonl", [{"mover": "M", "area": "X", "pieces": [[3, 9]]}])
+            self.assertEqual(compare.read_ours(e, "inside"), {("M", "X"): [(3, 3, 9, 9, True)]})
+
     def test_disjoint_sides_are_separate_groups(self):
         gs = compare.groups([(0, 1, 10, 11, True)], [(50.0, 60.0)], 5.0)
         self.assertEqual([(len(g["ours"]), len(g["traffic"])) for g in gs], [(1, 0), (0, 1)])

@@ -915,11 +915,14 @@ fn encounters_answers_validate() {
             .into_iter()
             .map(|p| p.display().to_string())
             .collect(),
-        vec![data.join("quickstart-3.mf.json"), data.join("cells-2.mf.json")]
-            .into_iter()
-            .map(|p| p.display().to_string())
-            .chain(["--sep".into(), "20".into(), "--sep-v".into(), "1000".into()])
-            .collect(),
+        vec![
+            data.join("quickstart-3.mf.json"),
+            data.join("cells-2.mf.json"),
+        ]
+        .into_iter()
+        .map(|p| p.display().to_string())
+        .chain(["--sep".into(), "20".into(), "--sep-v".into(), "1000".into()])
+        .collect(),
     ];
     let mut n = 0;
     for run in runs {

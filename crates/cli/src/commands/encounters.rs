@@ -150,6 +150,40 @@ fn encounter_json(e: &Encounter) -> Value {
     })
 }
 
+/// Answers every mover in chunks (each chunk in parallel, its lines written in input
+/// order): the counts of pairs met and of inside and near spans, or `None` when the
+/// output cannot be written. A mover's error goes to `inp.errors`.
+fn answer(
+    inp: &mut Inputs,
+    areas: &Areas,
+    opts: &Options,
+    out: &mut dyn Write,
+) -> Option<(usize, usize, usize)> {
+    let (mut pairs, mut spans_inside, mut spans_near) = (0usize, 0usize, 0usize);
+    let mut errors = Vec::new();
+    for chunk in inp.movers.chunks(CHUNK) {
+        let answers: Vec<_> = chunk
+            .par_iter()
+            .map(|t| encounters_of(t, areas, opts))
+            .collect();
+        for (t, ans) in chunk.iter().zip(answers) {
+            match ans {
+                Ok(list) => {
+                    for e in &list {
+                        pairs += 1;
+                        spans_inside += e.inside.len();
+                        spans_near += e.near.len();
+                        writeln!(out, "{}", encounter_json(e)).ok()?;
+                    }
+                }
+                Err(e) => errors.push(format!("mover {} {e}", t.id)),
+            }
+        }
+    }
+    inp.errors.extend(errors);
+    Some((pairs, spans_inside, spans_near))
+}
+
 /// Runs `polyguard encounters`.
 pub fn run(a: &EncountersArgs) -> ExitCode {
     let started = Instant::now();
@@ -191,28 +225,9 @@ pub fn run(a: &EncountersArgs) -> ExitCode {
         },
         None => Box::new(std::io::BufWriter::new(std::io::stdout().lock())),
     };
-    let (mut pairs, mut spans_inside, mut spans_near) = (0usize, 0usize, 0usize);
-    for chunk in inp.movers.chunks(CHUNK) {
-        let answers: Vec<_> = chunk
-            .par_iter()
-            .map(|t| encounters_of(t, &areas, &opts))
-            .collect();
-        for (t, ans) in chunk.iter().zip(answers) {
-            match ans {
-                Ok(list) => {
-                    for e in &list {
-                        pairs += 1;
-                        spans_inside += e.inside.len();
-                        spans_near += e.near.len();
-                        if writeln!(out, "{}", encounter_json(e)).is_err() {
-                            return ExitCode::from(EXIT_FATAL);
-                        }
-                    }
-                }
-                Err(e) => inp.errors.push(format!("mover {} {e}", t.id)),
-            }
-        }
-    }
+    let Some((pairs, spans_inside, spans_near)) = answer(&mut inp, &areas, &opts, &mut out) else {
+        return ExitCode::from(EXIT_FATAL);
+    };
     if out.flush().is_err() {
         return ExitCode::from(EXIT_FATAL);
     }

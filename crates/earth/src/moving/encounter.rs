@@ -212,64 +212,8 @@ impl PreparedArea {
                     "times must increase".into(),
                 ));
             }
-            let prev_frame = plane_frames.last().cloned();
-            let mut pparts = Vec::with_capacity(parts.len());
-            for (j, part) in parts.iter().enumerate() {
-                let mut rings_out = Vec::new();
-                for (r, ring) in core::iter::once(&part.outer).chain(&part.holes).enumerate() {
-                    let member = if r == 0 {
-                        format!("keyframes[{k}].parts[{j}].outer")
-                    } else {
-                        format!("keyframes[{k}].parts[{j}].holes[{}]", r - 1)
-                    };
-                    let before = prev_frame.as_ref().and_then(|f| {
-                        let p = f.parts.get(j)?;
-                        if r == 0 {
-                            Some(p.outer.clone())
-                        } else {
-                            p.holes.get(r - 1).cloned()
-                        }
-                    });
-                    if let Some(b) = &before {
-                        if b.len() != ring.len() {
-                            return Err(err(
-                                &member,
-                                format!(
-                                    "{} vertices where the keyframe before has {} (linear \
-                                     interpolation needs the same count)",
-                                    ring.len(),
-                                    b.len()
-                                ),
-                            ));
-                        }
-                    }
-                    let pr = ring_on_plane(geo, id, &member, ring, before.as_deref())?;
-                    rings_out.push(pr);
-                }
-                let outer = rings_out.remove(0);
-                pparts.push(PlaneRings {
-                    outer,
-                    holes: rings_out,
-                });
-            }
-            if let Some(pf) = &prev_frame {
-                if pf.parts.len() != pparts.len()
-                    || pf
-                        .parts
-                        .iter()
-                        .zip(&pparts)
-                        .any(|(a, b)| a.holes.len() != b.holes.len())
-                {
-                    return Err(err(
-                        &format!("keyframes[{k}].parts"),
-                        "the parts or holes differ from the keyframe before".into(),
-                    ));
-                }
-            }
-            plane_frames.push(PlaneFrame {
-                t: *t,
-                parts: pparts,
-            });
+            let frame = frame_on_plane(geo, id, k, *t, parts, plane_frames.last())?;
+            plane_frames.push(frame);
         }
         for (name, x) in [("floor_ft", area.floor_ft), ("ceiling_ft", area.ceiling_ft)] {
             if x.is_some_and(|x| !x.is_finite()) {
@@ -281,24 +225,7 @@ impl PreparedArea {
                 return Err(err("floor_ft", format!("{f} is above ceiling_ft {c}")));
             }
         }
-        let mut bbox = [
-            f64::INFINITY,
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-            f64::NEG_INFINITY,
-        ];
-        for f in &plane_frames {
-            for part in &f.parts {
-                for p in core::iter::once(&part.outer).chain(&part.holes).flatten() {
-                    bbox = [
-                        bbox[0].min(p[0]),
-                        bbox[1].min(p[1]),
-                        bbox[2].max(p[0]),
-                        bbox[3].max(p[1]),
-                    ];
-                }
-            }
-        }
+        let bbox = frames_box(&plane_frames);
         let plane = PlaneArea {
             frames: plane_frames,
             is_static,
@@ -316,6 +243,99 @@ impl PreparedArea {
             slack,
         })
     }
+}
+
+/// Keyframe `k` (time `t`, `parts`) on the plane: each ring laid out by
+/// [`ring_on_plane`], checked to have the structure of the keyframe `before`.
+fn frame_on_plane(
+    geo: Geodesy,
+    id: &str,
+    k: usize,
+    t: f64,
+    parts: &[Rings],
+    before: Option<&PlaneFrame>,
+) -> Result<PlaneFrame, EncounterError> {
+    let err = |member: String, message: String| EncounterError {
+        id: id.into(),
+        member,
+        message,
+    };
+    if let Some(pf) = before {
+        if pf.parts.len() != parts.len()
+            || pf
+                .parts
+                .iter()
+                .zip(parts)
+                .any(|(a, b)| a.holes.len() != b.holes.len())
+        {
+            return Err(err(
+                format!("keyframes[{k}].parts"),
+                "the parts or holes differ from the keyframe before".into(),
+            ));
+        }
+    }
+    let mut pparts = Vec::with_capacity(parts.len());
+    for (j, part) in parts.iter().enumerate() {
+        let mut rings_out = Vec::new();
+        for (r, ring) in core::iter::once(&part.outer).chain(&part.holes).enumerate() {
+            let member = if r == 0 {
+                format!("keyframes[{k}].parts[{j}].outer")
+            } else {
+                format!("keyframes[{k}].parts[{j}].holes[{}]", r - 1)
+            };
+            let prev: Option<&[[f64; 2]]> = before.and_then(|f| {
+                let p = &f.parts[j];
+                if r == 0 {
+                    Some(&p.outer[..])
+                } else {
+                    p.holes.get(r - 1).map(|h| &h[..])
+                }
+            });
+            if let Some(b) = prev {
+                if b.len() != ring.len() {
+                    return Err(err(
+                        member,
+                        format!(
+                            "{} vertices where the keyframe before has {} (linear \
+                             interpolation needs the same count)",
+                            ring.len(),
+                            b.len()
+                        ),
+                    ));
+                }
+            }
+            rings_out.push(ring_on_plane(geo, id, &member, ring, prev)?);
+        }
+        let outer = rings_out.remove(0);
+        pparts.push(PlaneRings {
+            outer,
+            holes: rings_out,
+        });
+    }
+    Ok(PlaneFrame { t, parts: pparts })
+}
+
+/// [xmin, ymin, xmax, ymax] of every vertex of `frames`.
+fn frames_box(frames: &[PlaneFrame]) -> [f64; 4] {
+    let mut bbox = [
+        f64::INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NEG_INFINITY,
+    ];
+    for f in frames {
+        for part in &f.parts {
+            for p in core::iter::once(&part.outer).chain(&part.holes).flatten() {
+                bbox = [
+                    bbox[0].min(p[0]),
+                    bbox[1].min(p[1]),
+                    bbox[2].max(p[0]),
+                    bbox[3].max(p[1]),
+                ];
+            }
+        }
+    }
+    bbox
 }
 
 /// On WGS84, the projection series' model error; 0 on the sphere.

@@ -9,7 +9,8 @@
 //! - [`geojson`]: GeoJSON positions, rings and polygons, checked, with their locations.
 //! - [`fixes_csv`]: a CSV of fixes (traffic and OpenSky columns), grouped into
 //!   trajectories.
-//! - [`plane`]: the planar model and its certified spans over one segment.
+//! - [`planar`]: the planar model's data (fixes, keyframed areas, relations, spans).
+//! - [`plane`]: the planar model's certified spans over one segment.
 //! - [`timeline`]: three-valued timelines, the algebra that composes the spans.
 //! - [`prepared`]: an area made ready for many pieces (edge trees, exact winding).
 //! - [`encounter`]: whole flights against areas on the Earth, the answer of
@@ -24,6 +25,7 @@ pub mod geojson;
 pub mod mfjson;
 pub mod model;
 mod piece;
+pub mod planar;
 pub mod plane;
 pub mod prepared;
 pub mod time;

@@ -23,7 +23,7 @@
 //! Every D handed to the engine is rounded the safe way (up for an upper set, down for
 //! a lower one).
 
-use super::plane::{PlaneArea, PlaneFix, PlaneFrame};
+use super::planar::{PlaneArea, PlaneFix, PlaneFrame, PlaneRings};
 use super::prepared::{winding, Prepared};
 use super::timeline::{Holds, Timeline};
 use super::{next_down, next_up};
@@ -128,7 +128,7 @@ pub(super) fn frame_at(area: &PlaneArea, t: f64) -> (PlaneFrame, f64) {
             };
             let outer = ring(0);
             let holes = (1..=part.holes.len()).map(&mut ring).collect();
-            super::plane::PlaneRings { outer, holes }
+            PlaneRings { outer, holes }
         })
         .collect();
     (PlaneFrame { t, parts }, err)

@@ -14,7 +14,7 @@ use super::{next_down, next_up};
 use rstar::primitives::{GeomWithData, Rectangle};
 use rstar::{RTree, AABB};
 
-use super::plane::PlaneArea;
+use super::planar::PlaneArea;
 
 /// An edge's box, and its index in the ring.
 type EdgeBox = GeomWithData<Rectangle<[f64; 2]>, usize>;

@@ -15,7 +15,7 @@
 //! - G3: S changes value only where the timeline is `Maybe` or at a boundary between a
 //!   `Yes` and a `No`, and both are in a span's enclosure.
 
-use super::plane::TimeSpan;
+use super::planar::TimeSpan;
 use super::{next_down, next_up};
 use polyguard::Span;
 

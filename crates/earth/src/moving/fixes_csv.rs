@@ -56,69 +56,86 @@ pub struct Record {
 pub fn records(text: &str) -> Result<Vec<Record>, MovingError> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut out = Vec::new();
-    let mut chars = text.chars().peekable();
+    let mut pos = 0;
     let mut line = 1;
-    while chars.peek().is_some() {
-        let start = line;
-        let mut fields = Vec::new();
-        let mut field = String::new();
-        let mut quoted = false;
-        loop {
-            match chars.next() {
-                None => {
-                    fields.push(std::mem::take(&mut field));
-                    break;
-                }
-                Some('"') if field.is_empty() && !quoted => {
-                    quoted = true;
-                    loop {
-                        match chars.next() {
-                            None => {
-                                return Err(MovingError::new(
-                                    Location {
-                                        line: Some(start),
-                                        ..Location::default()
-                                    },
-                                    ErrorKind::Syntax,
-                                    "a quoted field is not closed",
-                                ))
-                            }
-                            Some('"') if chars.peek() == Some(&'"') => {
-                                chars.next();
-                                field.push('"');
-                            }
-                            Some('"') => break,
-                            Some(c) => {
-                                if c == '\n' {
-                                    line += 1;
-                                }
-                                field.push(c);
-                            }
-                        }
-                    }
-                }
-                Some(',') => {
-                    fields.push(std::mem::take(&mut field));
-                    quoted = false;
-                }
-                Some('\r') if chars.peek() == Some(&'\n') => {}
-                Some('\n') => {
-                    line += 1;
-                    fields.push(std::mem::take(&mut field));
-                    break;
-                }
-                Some(c) => field.push(c),
-            }
-        }
-        let blank = fields.len() == 1 && fields[0].trim().is_empty() && !quoted;
+    while pos < text.len() {
+        let rest = &text[pos..];
+        let (end, next) = match rest.find('\n') {
+            Some(i) => (i, i + 1),
+            None => (rest.len(), rest.len()),
+        };
+        let row = &rest[..end];
+        let (fields, used, lines) = if row.contains('"') {
+            // A quoted field may hold commas, quotes and line breaks: read it char by char.
+            quoted_record(rest, line)?
+        } else {
+            // The common row: no quotes, so the fields are the pieces between commas (a
+            // CR just before the LF ends the line, as in CRLF text).
+            let row = if next > end {
+                row.strip_suffix('\r').unwrap_or(row)
+            } else {
+                row
+            };
+            (row.split(',').map(String::from).collect(), next, 1)
+        };
+        let blank = fields.len() == 1 && fields[0].trim().is_empty() && !row.contains('"');
         if !blank {
-            out.push(Record {
-                line: start,
-                fields,
-            });
+            out.push(Record { line, fields });
         }
+        pos += used;
+        line += lines;
     }
     Ok(out)
+}
+
+/// One record read char by char from the start of `text` (RFC 4180 quoting), starting
+/// on line `start`: its fields, the bytes it used (through its LF) and the lines it
+/// spans.
+fn quoted_record(text: &str, start: usize) -> Result<(Vec<String>, usize, usize), MovingError> {
+    let mut chars = text.char_indices().peekable();
+    let mut fields = Vec::new();
+    let mut field = String::new();
+    let mut lines = 1;
+    loop {
+        match chars.next() {
+            None => {
+                fields.push(field);
+                return Ok((fields, text.len(), lines));
+            }
+            Some((_, '"')) if field.is_empty() => loop {
+                match chars.next() {
+                    None => {
+                        return Err(MovingError::new(
+                            Location {
+                                line: Some(start),
+                                ..Location::default()
+                            },
+                            ErrorKind::Syntax,
+                            "a quoted field is not closed",
+                        ))
+                    }
+                    Some((_, '"')) if chars.peek().map(|c| c.1) == Some('"') => {
+                        chars.next();
+                        field.push('"');
+                    }
+                    Some((_, '"')) => break,
+                    Some((_, c)) => {
+                        if c == '\n' {
+                            lines += 1;
+                        }
+                        field.push(c);
+                    }
+                }
+            },
+            Some((_, ',')) => fields.push(std::mem::take(&mut field)),
+            Some((_, '\r')) if chars.peek().map(|c| c.1) == Some('\n') => {}
+            Some((i, '\n')) => {
+                fields.push(field);
+                return Ok((fields, i + 1, lines));
+            }
+            Some((_, c)) => field.push(c),
+        }
+    }
 }
 
 /// Which rows make one trajectory.

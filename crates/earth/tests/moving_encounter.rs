@@ -210,3 +210,51 @@ fn a_fix_without_altitude_takes_the_line_between_its_neighbours() {
     );
     assert!(s.end[1] - s.end[0] < 1e-3, "{s:?}");
 }
+
+#[test]
+fn a_separation_that_could_reach_the_pole_is_refused() {
+    let f = flight(&[(0.0, 0.0, 84.0), (60.0, 0.1, 84.0)]);
+    let pa = PreparedArea::new(&boxed(0.5, 48.5, 1.5, 49.5), Geodesy::Sphere).unwrap();
+    let opts = Options {
+        sep_nm: 400.0,
+        ..Options::default()
+    };
+    let e = encounter(&f, &pa, &opts).unwrap_err();
+    assert_eq!(e.member, "fixes[0].lat");
+    assert!(encounter(
+        &f,
+        &pa,
+        &Options {
+            sep_nm: 40.0,
+            ..Options::default()
+        }
+    )
+    .is_ok());
+}
+
+#[test]
+fn near_ends_enclose_the_great_circle_distance_to_a_meridian_edge() {
+    // From (λ, 49°) the distance to the meridian λ₀ is asin(sin|λ − λ₀|·cos 49°)·R; at 5 nm
+    // from the box's west and east edges the flight (1° an hour) is near.
+    let f = flight(&[(0.0, 0.0, 49.0), (7200.0, 2.0, 49.0)]);
+    let opts = Options {
+        sep_nm: 5.0,
+        max_gap_s: 1e9,
+        ..Options::default()
+    };
+    let pa = PreparedArea::new(&boxed(0.5, 48.5, 1.5, 49.5), Geodesy::Sphere).unwrap();
+    let e = encounter(&f, &pa, &opts).unwrap().unwrap();
+    let r = polyguard_earth::rhumb::EARTH_RADIUS_NM;
+    let dl = ((5.0 / r).sin() / 49f64.to_radians().cos())
+        .asin()
+        .to_degrees();
+    let (a, b) = (T0 + (0.5 - dl) * 3600.0, T0 + (1.5 + dl) * 3600.0);
+    let s = e.near[0];
+    assert!(s.start[0] <= a && a <= s.start[1], "{:?} vs {a}", s.start);
+    assert!(s.end[0] <= b && b <= s.end[1], "{:?} vs {b}", s.end);
+    // The band between d_lo and d_hi is a few tenths of a percent of D: seconds here.
+    assert!(
+        s.start[1] - s.start[0] < 5.0 && s.end[1] - s.end[0] < 5.0,
+        "{s:?}"
+    );
+}

@@ -41,6 +41,9 @@ use crate::sphere::{position_slack, BOUND_SAFETY};
 /// The format's latitude limit (degrees), as the scenario format: Mercator's plane
 /// stretches without bound towards the poles.
 pub const MAX_LAT_DEG: f64 = 85.0;
+/// The largest latitude (degrees) a path of D from a mover may reach: sec 89° ≈ 57 bounds
+/// the Mercator scale in [`d_band`].
+const MAX_REACH_LAT_DEG: f64 = 89.0;
 /// On WGS84, the projection series' model error (radians), as `aircraft_cell`'s.
 const WGS84_MODEL_RAD: f64 = 4e-10;
 /// A whole turn of longitude, radians.
@@ -565,11 +568,15 @@ fn d_band(geo: Geodesy, sep_nm: f64, lat: [f64; 2]) -> (f64, f64) {
         return (0.0, 0.0);
     }
     let (r_s, r_phi, r_up) = radii(geo);
-    let phi_b = (lat[1] + sep_nm / r_phi).min(89f64.to_radians());
+    // Below 89° (checked by `encounter`).
+    let phi_b = lat[1] + sep_nm / r_phi;
     let d_hi = sep_nm / (phi_b.cos() * r_s) * BOUND_SAFETY;
-    // A Mercator segment of length m ≤ 12·D/R_s changes latitude by at most m.
-    let phi_low = (lat[0] - 12.0 * sep_nm / r_s).max(0.0);
-    let d_lo = sep_nm / (phi_low.cos() * r_up) / BOUND_SAFETY;
+    // A Mercator segment of length m changes latitude by at most m (dφ/dy = cos φ ≤ 1).
+    // First with m ≤ 12·D/R_s (sec 85° < 12), then with the d_lo that gives: that d_lo
+    // is no larger, so the latitudes it reaches stay above the φ_low it used.
+    let d_lo_at = |phi_low: f64| sep_nm / (phi_low.cos() * r_up) / BOUND_SAFETY;
+    let first = d_lo_at((lat[0] - 12.0 * sep_nm / r_s).max(0.0));
+    let d_lo = d_lo_at((lat[0] - first * BOUND_SAFETY).max(0.0));
     (d_lo, d_hi)
 }
 
@@ -655,6 +662,24 @@ pub fn encounter(
     opts: &Options,
 ) -> Result<Option<Encounter>, EncounterError> {
     let (segs, gaps) = segments(traj, opts.max_gap_s);
+    // d_band's Φ_b: a path of D from the mover must stay below 89° of latitude.
+    let (_, r_phi, _) = radii(opts.geodesy);
+    let reach_deg = (opts.sep_nm / r_phi).to_degrees();
+    if let Some((i, f)) = traj
+        .fixes
+        .iter()
+        .enumerate()
+        .find(|(_, f)| f.lat.abs() + reach_deg >= MAX_REACH_LAT_DEG)
+    {
+        return Err(EncounterError {
+            id: traj.id.clone(),
+            member: format!("fixes[{i}].lat"),
+            message: format!(
+                "a path of {} nm from latitude {} could reach beyond {MAX_REACH_LAT_DEG}°",
+                opts.sep_nm, f.lat
+            ),
+        });
+    }
     let mut inside = Vec::new();
     let mut near = Vec::new();
     for r in segs {

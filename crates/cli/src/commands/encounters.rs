@@ -81,7 +81,6 @@ struct Inputs {
 /// Reads one input (CSV by its extension, else MF-JSON) into `inp`; `want_movers` says
 /// which kind of feature the argument is for (the other kind is an error naming it).
 fn read_input(path: &Path, want_movers: bool, inp: &mut Inputs) -> Result<(), String> {
-    let text = read_text(path)?;
     let name = path.display().to_string();
     let is_csv = path
         .extension()
@@ -90,7 +89,10 @@ fn read_input(path: &Path, want_movers: bool, inp: &mut Inputs) -> Result<(), St
         if !want_movers {
             return Err(format!("{name}: a CSV holds fixes of movers, not areas"));
         }
-        let r = fixes_csv::read(&text).map_err(|e| format!("{name}: {e}"))?;
+        // Streamed: a day of fixes is read row by row, never held as text.
+        let file = std::fs::File::open(path).map_err(|e| format!("{name}: {e}"))?;
+        let r = fixes_csv::read_from(std::io::BufReader::with_capacity(1 << 20, file))
+            .map_err(|e| format!("{name}: {e}"))?;
         inp.movers.extend(r.trajectories);
         inp.errors
             .extend(r.errors.iter().map(|e| format!("{name}: {e}")));
@@ -98,6 +100,7 @@ fn read_input(path: &Path, want_movers: bool, inp: &mut Inputs) -> Result<(), St
             .extend(r.warnings.iter().map(|w| format!("{name}: {w}")));
         return Ok(());
     }
+    let text = read_text(path)?;
     let r = mfjson::read(&text).map_err(|e| format!("{name}: {e}"))?;
     inp.warnings
         .extend(r.warnings.iter().map(|w| format!("{name}: {w}")));

@@ -54,38 +54,100 @@ pub struct Record {
 /// CRLF; a field in double quotes may hold commas, line breaks and `""` for a quote.
 /// Blank lines are skipped. The error is an unclosed quote, at its record's line.
 pub fn records(text: &str) -> Result<Vec<Record>, MovingError> {
-    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    let mut out = Vec::new();
-    let mut pos = 0;
-    let mut line = 1;
-    while pos < text.len() {
-        let rest = &text[pos..];
-        let (end, next) = match rest.find('\n') {
-            Some(i) => (i, i + 1),
-            None => (rest.len(), rest.len()),
-        };
-        let row = &rest[..end];
-        let (fields, used, lines) = if row.contains('"') {
-            // A quoted field may hold commas, quotes and line breaks: read it char by char.
-            quoted_record(rest, line)?
-        } else {
-            // The common row: no quotes, so the fields are the pieces between commas (a
-            // CR just before the LF ends the line, as in CRLF text).
-            let row = if next > end {
-                row.strip_suffix('\r').unwrap_or(row)
-            } else {
-                row
-            };
-            (row.split(',').map(String::from).collect(), next, 1)
-        };
-        let blank = fields.len() == 1 && fields[0].trim().is_empty() && !row.contains('"');
-        if !blank {
-            out.push(Record { line, fields });
+    RecordReader::new(text.as_bytes()).collect()
+}
+
+/// The records of a reader, one at a time ([`records`] without holding the text): a
+/// day of fixes need not be in memory at once.
+pub struct RecordReader<R> {
+    reader: R,
+    /// The next record's first line.
+    line: usize,
+    /// The text of the record being read.
+    buf: String,
+    /// Whether the first line (which may start with a byte order mark) has been read.
+    started: bool,
+}
+
+impl<R: std::io::BufRead> RecordReader<R> {
+    /// Records of `reader`.
+    pub fn new(reader: R) -> Self {
+        RecordReader {
+            reader,
+            line: 1,
+            buf: String::new(),
+            started: false,
         }
-        pos += used;
-        line += lines;
     }
-    Ok(out)
+
+    /// Appends the next line (with its LF) to `buf`: false at the end of the input.
+    fn next_line(&mut self) -> Result<bool, MovingError> {
+        let n = self.reader.read_line(&mut self.buf).map_err(|e| {
+            MovingError::new(
+                Location {
+                    line: Some(self.line),
+                    ..Location::default()
+                },
+                ErrorKind::Syntax,
+                format!("cannot read: {e}"),
+            )
+        })?;
+        Ok(n > 0)
+    }
+}
+
+impl<R: std::io::BufRead> Iterator for RecordReader<R> {
+    type Item = Result<Record, MovingError>;
+
+    /// The next record that is not blank: a line, or as many lines as a quoted field
+    /// that holds line breaks needs.
+    fn next(&mut self) -> Option<Self::Item> {
+        loop {
+            self.buf.clear();
+            match self.next_line() {
+                Ok(true) => {}
+                Ok(false) => return None,
+                Err(e) => return Some(Err(e)),
+            }
+            if !self.started {
+                self.started = true;
+                if let Some(rest) = self.buf.strip_prefix('\u{feff}') {
+                    self.buf = rest.to_owned();
+                }
+            }
+            let start = self.line;
+            let (fields, lines) = if self.buf.contains('"') {
+                // A quoted field may hold line breaks: take lines while a quote is open.
+                while self.buf.matches('"').count() % 2 == 1 {
+                    match self.next_line() {
+                        Ok(true) => {}
+                        Ok(false) => break,
+                        Err(e) => return Some(Err(e)),
+                    }
+                }
+                match quoted_record(&self.buf, start) {
+                    Ok((f, _, lines)) => (f, lines),
+                    Err(e) => return Some(Err(e)),
+                }
+            } else {
+                // The common row: no quotes, so the fields are the pieces between commas
+                // (a CR just before the LF ends the line, as in CRLF text).
+                let row = match self.buf.strip_suffix('\n') {
+                    Some(r) => r.strip_suffix('\r').unwrap_or(r),
+                    None => &self.buf,
+                };
+                (row.split(',').map(String::from).collect::<Vec<_>>(), 1)
+            };
+            self.line += lines;
+            let blank = fields.len() == 1 && fields[0].trim().is_empty() && !self.buf.contains('"');
+            if !blank {
+                return Some(Ok(Record {
+                    line: start,
+                    fields,
+                }));
+            }
+        }
+    }
 }
 
 /// One record read char by char from the start of `text` (RFC 4180 quoting), starting
@@ -325,20 +387,38 @@ struct Building {
 /// header (not CSV, or a required column missing); row problems are in
 /// [`CsvRead::errors`].
 pub fn read(input: &str) -> Result<CsvRead, MovingError> {
-    let recs = records(input)?;
+    read_from(input.as_bytes())
+}
+
+/// [`read`] from a reader, one record at a time: the memory it holds is the
+/// trajectories', not the text's.
+pub fn read_from(input: impl std::io::BufRead) -> Result<CsvRead, MovingError> {
+    let mut recs = RecordReader::new(input);
     let mut out = CsvRead::default();
-    let Some((header, rows)) = recs.split_first() else {
-        return Err(MovingError::new(
-            Location::default(),
-            ErrorKind::Missing,
-            "no header line (timestamp, icao24, latitude, longitude, …)",
-        ));
+    let header = match recs.next() {
+        Some(h) => h?,
+        None => {
+            return Err(MovingError::new(
+                Location::default(),
+                ErrorKind::Missing,
+                "no header line (timestamp, icao24, latitude, longitude, …)",
+            ))
+        }
     };
-    let cols = columns(header, &mut out.warnings)?;
+    let cols = columns(&header, &mut out.warnings)?;
     let (mut no_position, mut first_no_position, mut no_offset) = (0usize, None, 0usize);
     let mut built: Vec<Building> = Vec::new();
     let mut index: HashMap<Group, usize> = HashMap::new();
-    for r in rows {
+    for r in recs {
+        let r = match r {
+            Ok(r) => r,
+            Err(e) => {
+                // An unclosed quote runs to the end of the input; a read error stops it.
+                out.errors.push(e);
+                break;
+            }
+        };
+        let r = &r;
         if r.fields.len() != header.fields.len() {
             out.errors.push(MovingError::new(
                 Location {

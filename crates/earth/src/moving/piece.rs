@@ -337,17 +337,63 @@ pub(crate) struct Margins {
 /// inside, 0: outside, even and not 0: a ring that is not simple, unknown).
 fn far_value(area: &PlaneArea, part: usize, ring: usize, s: [f64; 2], hole: bool) -> Holds {
     let w = winding(ring_of(&area.frames[0], part, ring), s);
-    let inside = if w % 2 != 0 {
-        Holds::Yes
-    } else if w == 0 {
-        Holds::No
-    } else {
-        Holds::Maybe
+    let inside = match w {
+        w if w % 2 != 0 => Holds::Yes,
+        0 => Holds::No,
+        _ => Holds::Maybe,
     };
     if hole {
         inside.negated()
     } else {
         inside
+    }
+}
+
+/// Whether the stand-in point's segment from `a` to `b`, grown by `reach`, misses the box
+/// swept by every edge of the moving stand-in ring over [0, look] (each vertex moves
+/// linearly, so an edge stays in the box of its four end positions; those at `look` are
+/// rounded, by at most 2u of the coordinates' size, which the growth covers). Then the
+/// stand-in point is farther than `reach` from the ring throughout, and the ring's sets
+/// are constant over the piece (the `prepared` module doc's argument).
+fn swept_far(r: &StandIn, look: f64, a: [f64; 2], b: [f64; 2], reach: f64) -> bool {
+    let n = r.p.len();
+    let end: Vec<Vect2> = (0..n)
+        .map(|i| Vect2::new(r.p[i].x + look * r.vels[i].x, r.p[i].y + look * r.vels[i].y))
+        .collect();
+    let c = r.p.iter().chain(&end).fold(
+        a[0].abs().max(a[1].abs()).max(b[0].abs()).max(b[1].abs()),
+        |m, q| m.max(q.x.abs()).max(q.y.abs()),
+    );
+    let g = next_up(reach + 8.0 * U * c);
+    let lo = [a[0].min(b[0]) - g, a[1].min(b[1]) - g];
+    let hi = [a[0].max(b[0]) + g, a[1].max(b[1]) + g];
+    (0..n).all(|i| {
+        let j = (i + 1) % n;
+        let xs = [r.p[i].x, r.p[j].x, end[i].x, end[j].x];
+        let ys = [r.p[i].y, r.p[j].y, end[i].y, end[j].y];
+        let (x0, x1) = (
+            xs.iter().fold(f64::INFINITY, |m, &x| m.min(x)),
+            xs.iter().fold(f64::NEG_INFINITY, |m, &x| m.max(x)),
+        );
+        let (y0, y1) = (
+            ys.iter().fold(f64::INFINITY, |m, &y| m.min(y)),
+            ys.iter().fold(f64::NEG_INFINITY, |m, &y| m.max(y)),
+        );
+        x1 < lo[0] || x0 > hi[0] || y1 < lo[1] || y0 > hi[1]
+    })
+}
+
+/// The value of inside for the exact winding number of the ring `p` around `a`: odd
+/// inside, 0 outside, even and not 0 unknown (a ring that is not simple).
+fn winding_of(p: &[Vect2], a: [f64; 2]) -> Holds {
+    let ring: Vec<[f64; 2]> = p.iter().map(|q| [q.x, q.y]).collect();
+    let w = winding(&ring, a);
+    if w % 2 != 0 {
+        Holds::Yes
+    } else if w == 0 {
+        Holds::No
+    } else {
+        Holds::Maybe
     }
 }
 
@@ -459,7 +505,13 @@ pub(super) fn piece_timeline(
                     let (r, dv) = stand_in(area, k, ring, t0, t1, h);
                     // δ summed in f64 (a few terms): relative rounding below 1e-15, covered.
                     let delta = (dp + dv + m.extra_area) * (1.0 + 8.0 * U);
-                    ring_timeline(look, s, v, &r, set, delta)
+                    let reach = next_up(d_hi.max(0.0) + delta);
+                    if swept_far(&r, look, a0, a1, reach) {
+                        let w = winding_of(&r.p, a0);
+                        Timeline::constant(0.0, look, if hole { w.negated() } else { w })
+                    } else {
+                        ring_timeline(look, s, v, &r, set, delta)
+                    }
                 }
             };
             tl = Some(match tl {

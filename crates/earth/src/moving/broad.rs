@@ -14,7 +14,9 @@ use super::{next_down, next_up};
 use rstar::primitives::{GeomWithData, Rectangle};
 use rstar::{RTree, AABB};
 
-use super::encounter::{encounter, unwrap_near, Encounter, EncounterError, Options, PreparedArea};
+use super::encounter::{
+    check_mover, encounter, reach, unwrap_near, Encounter, EncounterError, Options, PreparedArea,
+};
 use super::model::{Area, Trajectory};
 use crate::geodesy::Geodesy;
 
@@ -76,8 +78,8 @@ impl Areas {
     /// The indices of the areas that the box [x0, y0, x1, y1] (radians, longitudes
     /// unwrapped) may reach within `sep_nm`, every copy a whole turn away included;
     /// sorted, without repeats.
-    fn candidates(&self, b: [f64; 4], sep_nm: f64) -> Vec<usize> {
-        let reach = 60.0 * sep_nm / self.geodesy.radius_nm() + 1e-9 * TURN;
+    fn candidates(&self, b: [f64; 4], max_lat: f64, sep_nm: f64) -> Vec<usize> {
+        let reach = reach(self.geodesy, sep_nm, max_lat);
         let (x0, x1) = (b[0] - reach, b[2] + reach);
         let (y0, y1) = (b[1] - reach, b[3] + reach);
         let mut out = Vec::new();
@@ -104,10 +106,11 @@ impl Areas {
 }
 
 /// The fixes' box of each segment of `traj` on the plane of `geo` (longitudes unwrapped
-/// each the shorter way from the one before, as the encounter does), [x0, y0, x1, y1].
-fn segment_boxes(traj: &Trajectory, opts: &Options) -> Vec<[f64; 4]> {
+/// each the shorter way from the one before, as the encounter does), [x0, y0, x1, y1],
+/// and its largest |latitude| (radians).
+fn segment_boxes(traj: &Trajectory, opts: &Options) -> Vec<([f64; 4], f64)> {
     let mut out = Vec::new();
-    let mut cur: Option<[f64; 4]> = None;
+    let mut cur: Option<([f64; 4], f64)> = None;
     let mut prev: Option<(f64, f64)> = None;
     for f in &traj.fixes {
         let lon = match prev {
@@ -125,9 +128,13 @@ fn segment_boxes(traj: &Trajectory, opts: &Options) -> Vec<[f64; 4]> {
         if !x.is_finite() || !y.is_finite() {
             continue;
         }
+        let lat = f.lat.to_radians().abs();
         cur = Some(match cur {
-            None => [x, y, x, y],
-            Some(b) => [b[0].min(x), b[1].min(y), b[2].max(x), b[3].max(y)],
+            None => ([x, y, x, y], lat),
+            Some((b, l)) => (
+                [b[0].min(x), b[1].min(y), b[2].max(x), b[3].max(y)],
+                l.max(lat),
+            ),
         });
     }
     out.extend(cur);
@@ -141,9 +148,10 @@ pub fn encounters_of(
     areas: &Areas,
     opts: &Options,
 ) -> Result<Vec<Encounter>, EncounterError> {
+    check_mover(traj, opts)?;
     let mut cand: Vec<usize> = segment_boxes(traj, opts)
         .into_iter()
-        .flat_map(|b| areas.candidates(b, opts.sep_nm))
+        .flat_map(|(b, lat)| areas.candidates(b, lat, opts.sep_nm))
         .collect();
     cand.sort_unstable();
     cand.dedup();

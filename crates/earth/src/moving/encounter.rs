@@ -580,6 +580,14 @@ fn d_band(geo: Geodesy, sep_nm: f64, lat: [f64; 2]) -> (f64, f64) {
     (d_lo, d_hi)
 }
 
+/// How far (plane units) anything within D nm of a mover whose |latitude| stays below
+/// `max_lat` (radians) can be: [`d_band`]'s `d_hi` there, and room for every margin δ (all
+/// below 10⁻⁹ of a turn: paper B's slack is 2⁻⁴⁰ of the coordinates, the rhumb deviation
+/// is kept below 2⁻³⁰ rad).
+pub(crate) fn reach(geo: Geodesy, sep_nm: f64, max_lat: f64) -> f64 {
+    d_band(geo, sep_nm, [0.0, max_lat]).1 + 1e-9 * TURN
+}
+
 /// The spans of one segment against one area (every copy a whole turn away that its
 /// longitudes reach): inside (`near` false) or near.
 fn segment_spans(seg: &Segment, area: &PreparedArea, opts: &Options, near: bool) -> Vec<TimeSpan> {
@@ -589,8 +597,8 @@ fn segment_spans(seg: &Segment, area: &PreparedArea, opts: &Options, near: bool)
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
             (a.min(p.x), b.max(p.x))
         });
-    // Farther than any d_hi (sec 89° < 60) and δ (below 10⁻⁹ of a turn) can reach.
-    let reach = 60.0 * opts.sep_nm / radii(opts.geodesy).0 + 1e-9 * TURN;
+    let max_lat = seg.legs.iter().fold(0.0f64, |m, l| m.max(l.0[1]));
+    let reach = reach(opts.geodesy, opts.sep_nm, max_lat);
     let ks = (((xmin - reach - area.bbox[2]) / TURN).ceil() as i64)
         ..=(((xmax + reach - area.bbox[0]) / TURN).floor() as i64);
     let mut total: Option<Timeline> = None;
@@ -654,6 +662,43 @@ fn segments(traj: &Trajectory, max_gap_s: f64) -> (Vec<core::ops::Range<usize>>,
     (segs, gaps)
 }
 
+/// The mover's rules (docs/moving-features.md): finite times strictly increasing,
+/// positions in range, and a path of D nm from any fix staying below 89° of latitude
+/// ([`d_band`]'s Φ_b). Checked before the broad phase, so that a bad mover is reported
+/// whether or not it comes near an area.
+pub(crate) fn check_mover(traj: &Trajectory, opts: &Options) -> Result<(), EncounterError> {
+    let (_, r_phi, _) = radii(opts.geodesy);
+    let reach_deg = (opts.sep_nm / r_phi).to_degrees();
+    for (i, f) in traj.fixes.iter().enumerate() {
+        let member = format!("fixes[{i}]");
+        check_position(&traj.id, &member, [f.lon, f.lat])?;
+        let err = |member: String, message: String| EncounterError {
+            id: traj.id.clone(),
+            member,
+            message,
+        };
+        if !f.t.is_finite() || f.alt_ft.is_some_and(|z| !z.is_finite()) {
+            return Err(err(member, "not a finite number".into()));
+        }
+        if i > 0 && f.t <= traj.fixes[i - 1].t {
+            return Err(err(
+                format!("{member}.t"),
+                "times must strictly increase".into(),
+            ));
+        }
+        if f.lat.abs() + reach_deg >= MAX_REACH_LAT_DEG {
+            return Err(err(
+                format!("{member}.lat"),
+                format!(
+                    "a path of {} nm from latitude {} could reach beyond {MAX_REACH_LAT_DEG}°",
+                    opts.sep_nm, f.lat
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
 /// The mover `traj` against the prepared area: `None` when they never meet (no near span,
 /// so no inside span either), else the [`Encounter`] (docs/moving-features.md).
 pub fn encounter(
@@ -662,24 +707,7 @@ pub fn encounter(
     opts: &Options,
 ) -> Result<Option<Encounter>, EncounterError> {
     let (segs, gaps) = segments(traj, opts.max_gap_s);
-    // d_band's Φ_b: a path of D from the mover must stay below 89° of latitude.
-    let (_, r_phi, _) = radii(opts.geodesy);
-    let reach_deg = (opts.sep_nm / r_phi).to_degrees();
-    if let Some((i, f)) = traj
-        .fixes
-        .iter()
-        .enumerate()
-        .find(|(_, f)| f.lat.abs() + reach_deg >= MAX_REACH_LAT_DEG)
-    {
-        return Err(EncounterError {
-            id: traj.id.clone(),
-            member: format!("fixes[{i}].lat"),
-            message: format!(
-                "a path of {} nm from latitude {} could reach beyond {MAX_REACH_LAT_DEG}°",
-                opts.sep_nm, f.lat
-            ),
-        });
-    }
+    check_mover(traj, opts)?;
     let mut inside = Vec::new();
     let mut near = Vec::new();
     for r in segs {

@@ -9,6 +9,7 @@
 //! - [`geojson`]: GeoJSON positions, rings and polygons, checked, with their locations.
 //! - [`fixes_csv`]: a CSV of fixes (traffic and OpenSky columns), grouped into
 //!   trajectories.
+//! - [`fixes_table`]: the same fixes held in columns (a data frame's arrays).
 //! - [`plane`]: the planar model and its certified spans over one segment.
 //! - [`timeline`]: three-valued timelines, the algebra that composes the spans.
 //! - [`prepared`]: an area made ready for many pieces (edge trees, exact winding).
@@ -20,6 +21,7 @@ pub mod broad;
 pub mod encounter;
 pub mod error;
 pub mod fixes_csv;
+pub mod fixes_table;
 pub mod geojson;
 pub mod mfjson;
 pub mod model;

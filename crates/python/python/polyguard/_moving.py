@@ -17,6 +17,7 @@ from ._native import _encounters_columns, _encounters_json
 
 COLUMNS = ["mover", "callsign", "area", "relation", "start_lo", "start_hi", "end_lo",
            "end_hi", "certain", "start", "end"]
+TEXT = ("mover", "callsign", "area", "relation")
 
 
 def _pandas() -> Any:
@@ -146,7 +147,12 @@ def encounters(movers: Any, areas: Any, *, sep: float = 0.0, sep_v: float = 0.0,
                       + "\n".join(errors), stacklevel=2)
     if remarks:
         warnings.warn("polyguard.encounters: " + "\n".join(remarks), stacklevel=2)
-    frame = pd.DataFrame(cols, columns=COLUMNS[:-2])
-    frame["start"] = pd.to_datetime(frame["start_lo"], unit="s", utc=True)
-    frame["end"] = pd.to_datetime(frame["end_hi"], unit="s", utc=True)
+    # The dtypes do not depend on the rows: an empty answer (a Dask `meta`) has the
+    # dtypes of a full one. Text takes the dtype pandas gives a list of str.
+    text = pd.Series(["x"]).dtype
+    frame = pd.DataFrame({k: pd.Series(cols[k], dtype=text if k in TEXT else None)
+                          for k in COLUMNS[:-2]})
+    for name, seconds in (("start", "start_lo"), ("end", "end_hi")):
+        frame[name] = pd.to_datetime(frame[seconds], unit="s", utc=True).astype(
+            "datetime64[ns, UTC]")
     return frame

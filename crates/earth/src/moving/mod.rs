@@ -16,7 +16,9 @@
 //! - [`encounter`]: whole flights against areas on the Earth, the answer of
 //!   `polyguard encounters`.
 //! - [`broad`]: many movers against many areas: the broad phase.
+//! - [`answer`]: the answer as JSON, one object per pair that meets.
 
+pub mod answer;
 pub mod broad;
 pub mod encounter;
 pub mod error;

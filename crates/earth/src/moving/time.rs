@@ -234,7 +234,7 @@ pub fn from_nanos(ns: i64) -> f64 {
     text.unwrap_or(ns as f64 / 1e9)
 }
 
-/// Which way [`format`] rounds to whole milliseconds.
+/// Which way [`format()`] rounds to whole milliseconds.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Round {
     /// Toward the past: the printed instant is ≤ the exact one.

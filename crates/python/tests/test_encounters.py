@@ -116,3 +116,12 @@ def test_nothing_readable_raises():
     with pytest.raises(polyguard.Error, match="geodesy"):
         polyguard.encounters(fixes_frame(), (DATA / "fir-LFFF.geojson").read_text(),
                              geodesy="flat")
+
+
+def test_epoch_seconds_as_numbers_are_the_same_instants():
+    f = fixes_frame()
+    want = polyguard.encounters(f, (DATA / "cells-2.mf.json").read_text(), sep=5, sep_v=1000)
+    epoch = pd.Timestamp(0, tz="UTC")
+    f["timestamp"] = (f["timestamp"] - epoch).dt.total_seconds()
+    got = polyguard.encounters(f, (DATA / "cells-2.mf.json").read_text(), sep=5, sep_v=1000)
+    assert frame_rows(got) == frame_rows(want) and len(want) > 0

@@ -83,11 +83,15 @@ def _texts(frame: Any, name: str) -> Optional[List[Optional[str]]]:
 
 
 def _columns(frame: Any) -> Dict[str, Any]:
-    """The arrays of a frame of fixes: ``timestamp`` (a column, else a DatetimeIndex;
-    tz-naive is UTC) as int64 nanoseconds, coordinates and altitude as float64."""
+    """The arrays of a frame of fixes: ``timestamp`` (a column of datetimes, texts or
+    epoch seconds, else a DatetimeIndex; tz-naive is UTC) as int64 nanoseconds,
+    coordinates and altitude as float64."""
     pd = _pandas()
     if "timestamp" in frame.columns:
-        times = pd.to_datetime(frame["timestamp"], utc=True)
+        col = frame["timestamp"]
+        # numbers are epoch seconds, as in the CSV of fixes (not pandas' nanoseconds)
+        numeric = pd.api.types.is_numeric_dtype(col) and not pd.api.types.is_bool_dtype(col)
+        times = pd.to_datetime(col, utc=True, unit="s" if numeric else None)
     elif isinstance(frame.index, pd.DatetimeIndex):
         times = pd.Series(frame.index, index=frame.index)
         times = times.dt.tz_localize("UTC") if times.dt.tz is None else times

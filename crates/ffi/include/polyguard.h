@@ -24,9 +24,12 @@
  *  - Ownership: the caller owns every array. The library reads them during the call
  *    only, keeps no pointer, and never returns memory the caller must free: results are
  *    written through the caller's out-pointers (pg_detect_batch and pg_intervals into
- *    a caller-allocated array of capacity cap, see there). Array pointers may be NULL
- *    only when their length is 0, or where a NULL is documented (velocities: at rest;
- *    slabs: 2D).
+ *    a caller-allocated array of capacity cap, see there). The one exception is the
+ *    text of pg_encounters (whole flights against areas, docs/moving-features.md),
+ *    which the library allocates and pg_free_text frees; pg_encounters may also
+ *    return PG_PARTIAL (1): answered, but some input was rejected. Array pointers may
+ *    be NULL only when their length is 0, or where a NULL is documented (velocities:
+ *    at rest; slabs: 2D; the options of pg_encounters: the defaults).
  *  - On an error, pg_detect, pg_detect_time, pg_detect_exit and pg_intervals still
  *    write the most conservative answer (detected; entry possible at any time; one
  *    possible span over all time), so that an unchecked status never reads as "no".
@@ -94,6 +97,19 @@
 // Any other invalid input: a pointer not aligned for its type (the message names it).
 #define PG_ERR_INVALID -13
 
+// A text that must be UTF-8 is not (`pg_encounters`; the message names it and the
+// first bad byte).
+#define PG_ERR_UTF8 -14
+
+// An input text that cannot be read at all (`pg_encounters`: not JSON, a CSV without
+// its header line; the message says where).
+#define PG_ERR_INPUT -15
+
+// Not an error: the answer is written, but some of the input was rejected
+// (`pg_encounters`: features, rows, areas or movers; `pg_last_error_message` lists them,
+// one a line). The only status above 0.
+#define PG_PARTIAL 1
+
 // `pg_detection.kind` and `pg_hit.kind`: every comparison behind the answer was
 // certified; paper A computed without rounding answers the same.
 #define PG_KIND_EXACT 0
@@ -135,6 +151,12 @@
 // breach_D(t), for a keep-in fence: the point is not inside P(t) at a distance > D from
 // its boundary (or, in 3D, not more than H inside the slab's bottom and top).
 #define PG_RELATION_BREACH 2
+
+// `pg_encounter_options.geodesy`: the sphere of radius 3440.065 nm.
+#define PG_GEODESY_SPHERE 0
+
+// `pg_encounter_options.geodesy`: the WGS84 ellipsoid.
+#define PG_GEODESY_WGS84 1
 
 // The case's parameters: the lookahead T (> 0), BUFF (> 0, paper A §II.A), F (in
 // (0, 1), §II.I) and the corner angle κ in degrees (in (0, 180), §II.J).
@@ -287,6 +309,19 @@ typedef struct pg_span {
   // settle the stretch, the relation may hold there or not.
   int certain;
 } pg_span;
+
+// What `pg_encounters` asks of every pair of mover and area (the options of
+// `polyguard encounters`).
+typedef struct pg_encounter_options {
+  // D, nautical miles (≥ 0): near means within D horizontally (0: near is inside).
+  double sep_nm;
+  // H, feet (≥ 0): near also means within H of the area's floor–ceiling slab.
+  double sep_v_ft;
+  // Fixes more than this many seconds apart are not joined (≥ 0; 60 by default).
+  double max_gap_s;
+  // `PG_GEODESY_SPHERE` or `PG_GEODESY_WGS84`.
+  int geodesy;
+} pg_encounter_options;
 
 #ifdef __cplusplus
 extern "C" {
@@ -454,6 +489,52 @@ int pg_last_error_message(char *buf, size_t len);
 // For logs beside `pg_last_error_message`. (Extends this interface's status codes;
 // no paper section.)
 const char *pg_status_name(int status);
+
+// Writes the defaults of `polyguard encounters` into `*out`: D = H = 0, gaps beyond
+// 60 s, the sphere. Returns `PG_OK`, or `PG_ERR_NULL_POINTER` when `out` is NULL.
+//
+// # Safety
+// `out` is NULL or points to a writable `pg_encounter_options`.
+int pg_encounter_options_default(struct pg_encounter_options *out);
+
+// Every mover against every area (docs/moving-features.md): the JSON Lines that
+// `polyguard encounters MOVERS AREAS` writes for the same inputs and options, byte for
+// byte, one line per pair that meets.
+//
+// - `movers`, `movers_len`: the movers' text, UTF-8 (not NUL-terminated; its length in
+//   bytes): a CSV of fixes when `movers_is_csv` is non-zero, else MF-JSON.
+// - `areas`, `areas_len`: GeoJSON / MF-JSON areas, UTF-8.
+// - `opts`: the options; NULL takes the defaults (`pg_encounter_options_default`).
+// - `*out`, `*out_len`: on `PG_OK` and `PG_PARTIAL`, a NUL-terminated text the library
+//   allocates (free it with `pg_free_text`) and its length without the NUL; on any
+//   other status, NULL and 0.
+//
+// Returns `PG_OK`; `PG_PARTIAL` when some features, rows, areas or movers were
+// rejected (the others are answered; `pg_last_error_message` lists the rejections, one
+// a line, as the CLI's standard error does); `PG_ERR_NULL_POINTER` (a NULL text, `out`
+// or `out_len`), `PG_ERR_UTF8` (a text that is not UTF-8), `PG_ERR_INPUT` (a text that
+// cannot be read at all: not JSON, a CSV without its header), `PG_ERR_BAD_PARAMETER`
+// (an option out of range).
+//
+// # Safety
+// `movers` and `areas` are NULL or point to `movers_len` / `areas_len` readable bytes;
+// `opts` is NULL or points to a `pg_encounter_options`; `out` and `out_len` are NULL or
+// writable.
+int pg_encounters(const char *movers,
+                  size_t movers_len,
+                  int movers_is_csv,
+                  const char *areas,
+                  size_t areas_len,
+                  const struct pg_encounter_options *opts,
+                  char **out,
+                  size_t *out_len);
+
+// Frees a text that `pg_encounters` allocated; NULL is ignored. (Extends this
+// interface's ownership rule: the one kind of memory the library hands out.)
+//
+// # Safety
+// `text` is NULL or a pointer `pg_encounters` wrote into `*out`, not yet freed.
+void pg_free_text(char *text);
 
 #ifdef __cplusplus
 }  // extern "C"

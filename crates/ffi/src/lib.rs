@@ -17,7 +17,10 @@
 //!   panic becomes `PG_ERR_PANIC`.
 //! - It reads the caller's arrays only during the call and never keeps a pointer; it
 //!   never allocates memory the caller must free (the batch and `pg_intervals` write
-//!   into the caller's array and say how many items the answer has).
+//!   into the caller's array and say how many items the answer has), but for the text
+//!   of `pg_encounters`, whose length only the answer knows, freed by `pg_free_text`.
+//! - `pg_encounters` (whole flights against areas, docs/moving-features.md, in
+//!   [`moving`]) may also return `PG_PARTIAL` (> 0): answered, some input rejected.
 //! - On an error, the answer written for a single case is the most conservative one
 //!   (detected; entry possible at any time; one possible span over all time), so that a
 //!   caller who forgets the status still does not read "no".
@@ -33,6 +36,12 @@ use polyguard::entry::EntryTime;
 use polyguard::error::CaseError;
 use polyguard::well_formed::Fault;
 use polyguard::{Method, Relation, Separation, Span, Vect2};
+
+pub mod moving;
+pub use moving::{
+    pg_encounter_options_default, pg_encounters, pg_free_text, PgEncounterOptions,
+    PG_GEODESY_SPHERE, PG_GEODESY_WGS84,
+};
 
 /// Success.
 pub const PG_OK: c_int = 0;
@@ -70,6 +79,16 @@ pub const PG_ERR_CAPACITY: c_int = -11;
 pub const PG_ERR_PANIC: c_int = -12;
 /// Any other invalid input: a pointer not aligned for its type (the message names it).
 pub const PG_ERR_INVALID: c_int = -13;
+/// A text that must be UTF-8 is not (`pg_encounters`; the message names it and the
+/// first bad byte).
+pub const PG_ERR_UTF8: c_int = -14;
+/// An input text that cannot be read at all (`pg_encounters`: not JSON, a CSV without
+/// its header line; the message says where).
+pub const PG_ERR_INPUT: c_int = -15;
+/// Not an error: the answer is written, but some of the input was rejected
+/// (`pg_encounters`: features, rows, areas or movers; `pg_last_error_message` lists them,
+/// one a line). The only status above 0.
+pub const PG_PARTIAL: c_int = 1;
 
 /// `pg_detection.kind` and `pg_hit.kind`: every comparison behind the answer was
 /// certified; paper A computed without rounding answers the same.
@@ -1031,6 +1050,9 @@ pub extern "C" fn pg_status_name(status: c_int) -> *const c_char {
         PG_ERR_CAPACITY => b"PG_ERR_CAPACITY\0",
         PG_ERR_PANIC => b"PG_ERR_PANIC\0",
         PG_ERR_INVALID => b"PG_ERR_INVALID\0",
+        PG_ERR_UTF8 => b"PG_ERR_UTF8\0",
+        PG_ERR_INPUT => b"PG_ERR_INPUT\0",
+        PG_PARTIAL => b"PG_PARTIAL\0",
         _ => b"unknown\0",
     };
     s.as_ptr().cast()

@@ -33,7 +33,12 @@ static_libs=(-lpthread -ldl -lm)
 args=()
 if [ -n "$cli" ]; then
   "$cli" detect --time examples/cases.jsonl > "$out/cli.jsonl"
-  args=(--cli "$out/cli.jsonl")
+  # pg_encounters' lines against the CLI's on the same files and options (the C test's
+  # test_encounters)
+  "$cli" encounters crates/earth/tests/data/moving/quickstart-3.csv \
+    crates/earth/tests/data/moving/cells-2.mf.json --sep 5 --sep-v 1000 --quiet \
+    > "$out/cli-encounters.jsonl"
+  args=(--cli "$out/cli.jsonl" --encounters-cli "$out/cli-encounters.jsonl")
 fi
 
 echo "== C, static library"

@@ -9,6 +9,7 @@
 //!   `detect_exit` (keep-in exits) on a case object (docs/cases.md, "Separation and
 //!   fences").
 //! - [`earth`]: `conflicts` on a scenario GeoJSON (docs/scenario.md).
+//! - [`moving`]: `encounters` of whole flights with areas (docs/moving-features.md).
 //!
 //! Bad input raises `polyguard.CaseError` (or `polyguard.ScenarioError`), a `ValueError`
 //! whose `field` names the field as the case format spells it.
@@ -22,6 +23,7 @@ pub mod args;
 pub mod batch;
 pub mod earth;
 pub mod intervals;
+pub mod moving;
 pub mod single;
 
 create_exception!(
@@ -106,5 +108,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(intervals::detect_exit, m)?)?;
     m.add_function(wrap_pyfunction!(batch::detect_batch, m)?)?;
     m.add_function(wrap_pyfunction!(earth::conflicts, m)?)?;
+    m.add_function(wrap_pyfunction!(moving::_encounters_json, m)?)?;
+    m.add_function(wrap_pyfunction!(moving::_encounters_columns, m)?)?;
     Ok(())
 }

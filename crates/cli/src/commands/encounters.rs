@@ -3,14 +3,12 @@
 //! line per pair that meets, with the certified spans of inside and near
 //! (docs/moving-features.md).
 
+use polyguard_earth::moving::answer::encounter_json;
 use polyguard_earth::moving::broad::{encounters_of, Areas};
-use polyguard_earth::moving::encounter::{Encounter, Options};
+use polyguard_earth::moving::encounter::Options;
 use polyguard_earth::moving::model::{Area, Trajectory};
-use polyguard_earth::moving::plane::TimeSpan;
-use polyguard_earth::moving::time::{format, Round};
 use polyguard_earth::moving::{fixes_csv, mfjson};
 use rayon::prelude::*;
-use serde_json::{json, Value};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -120,37 +118,6 @@ fn read_input(path: &Path, want_movers: bool, inp: &mut Inputs) -> Result<(), St
         }
     }
     Ok(())
-}
-
-/// An epoch time as RFC 3339 rounded `r` (or `null` beyond years 0–9999).
-fn utc(t: f64, r: Round) -> Value {
-    format(t, r).map_or(Value::Null, Value::String)
-}
-
-/// One span of the answer: epoch-second enclosures, and the UTC text of its outer ends
-/// (the start's lower end rounded down, the end's upper end rounded up).
-fn span_json(s: &TimeSpan) -> Value {
-    json!({
-        "start": s.start,
-        "end": s.end,
-        "certain": s.certain,
-        "start_utc": utc(s.start[0], Round::Floor),
-        "end_utc": utc(s.end[1], Round::Ceil),
-    })
-}
-
-/// One line of the answer (docs/moving-features.md, "The answer").
-fn encounter_json(e: &Encounter) -> Value {
-    json!({
-        "mover": e.mover,
-        "callsign": e.callsign,
-        "area": e.area,
-        "inside": e.inside.iter().map(span_json).collect::<Vec<_>>(),
-        "near": e.near.iter().map(span_json).collect::<Vec<_>>(),
-        "loss_of_separation": e.loss_of_separation(),
-        "loss_of_separation_utc": e.loss_of_separation().map(|s| utc(s[0], Round::Floor)),
-        "gaps": e.gaps,
-    })
 }
 
 /// Answers every mover in chunks (each chunk in parallel, its lines written in input

@@ -163,3 +163,65 @@ pub fn encounters_of(
     }
     Ok(out)
 }
+
+/// Every encounter of `movers` with `areas` (docs/moving-features.md, the answer of
+/// `polyguard encounters`): the areas are laid out once, then each mover meets the areas
+/// its segments reach. Items come in the CLI's order: first the error of each area that
+/// cannot be laid out, then, mover by mover, its encounters in the areas' order or the
+/// one error that stops that mover. An error's `id` names its area or mover.
+///
+/// ```
+/// use polyguard_earth::moving::broad::encounters;
+/// use polyguard_earth::moving::encounter::Options;
+/// use polyguard_earth::moving::model::{Area, Fix, Rings, Shape, Trajectory};
+///
+/// // Eastbound along 0.5° N at 1° per 10 minutes, through the box 0°–1° E, 0°–1° N.
+/// let fix = |t: f64, lon: f64| Fix { t, lon, lat: 0.5, alt_ft: None };
+/// let flight = Trajectory {
+///     id: "f1".into(),
+///     callsign: None,
+///     fixes: (0..=12).map(|k| fix(50.0 * k as f64, -0.5 + k as f64 / 12.0)).collect(),
+/// };
+/// let square = Area {
+///     id: "box".into(),
+///     name: None,
+///     shape: Shape::Static(vec![Rings {
+///         outer: vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]],
+///         holes: vec![],
+///     }]),
+///     floor_ft: None,
+///     ceiling_ft: None,
+/// };
+/// let found: Vec<_> = encounters([flight], &[square], &Options::default())
+///     .collect::<Result<_, _>>()
+///     .expect("a good flight and a good box");
+/// assert_eq!(found.len(), 1);
+/// // It crosses 0° E at t = 300 s and flies on to its last fix (600 s, 0.5° E) inside.
+/// let inside = &found[0].inside;
+/// assert_eq!(inside.len(), 1);
+/// assert!(inside[0].start[0] <= 300.0 && 300.0 <= inside[0].start[1]);
+/// assert!(inside[0].end[0] <= 600.0 && 600.0 <= inside[0].end[1]);
+/// assert!(inside[0].certain);
+/// ```
+pub fn encounters<I>(
+    movers: I,
+    areas: &[Area],
+    opts: &Options,
+) -> impl Iterator<Item = Result<Encounter, EncounterError>>
+where
+    I: IntoIterator<Item = Trajectory>,
+{
+    let opts = *opts;
+    let (laid, errors) = Areas::new(areas, opts.geodesy);
+    errors
+        .into_iter()
+        .map(Err)
+        .chain(
+            movers
+                .into_iter()
+                .flat_map(move |t| match encounters_of(&t, &laid, &opts) {
+                    Ok(list) => list.into_iter().map(Ok).collect::<Vec<_>>(),
+                    Err(e) => vec![Err(e)],
+                }),
+        )
+}

@@ -344,7 +344,7 @@ fn row(
     cols: &Columns,
     r: &Record,
     no_offset: &mut usize,
-) -> Result<Option<(Group, Fix)>, MovingError> {
+) -> Result<Option<(Keys, Fix)>, MovingError> {
     let [ti, ii, lai, loi] = cols.required;
     let cell = |k: usize| r.fields[k].as_str();
     if cell(lai).trim().is_empty() && cell(loi).trim().is_empty() {
@@ -360,12 +360,13 @@ fn row(
         None => None,
     };
     let callsign = cols.callsign.and_then(|k| text(r.fields.get(k)));
-    let group = match cols.flight_id.and_then(|k| text(r.fields.get(k))) {
-        Some(f) => Group::Flight(f),
-        None => Group::Aircraft(icao24, callsign),
+    let keys = Keys {
+        icao24,
+        callsign,
+        flight_id: cols.flight_id.and_then(|k| text(r.fields.get(k))),
     };
     Ok(Some((
-        group,
+        keys,
         Fix {
             t,
             lon,
@@ -373,14 +374,6 @@ fn row(
             alt_ft,
         },
     )))
-}
-
-/// One trajectory being built: its group, callsign, fixes and first line.
-struct Building {
-    group: Group,
-    callsign: Option<String>,
-    fixes: Vec<Fix>,
-    first_line: usize,
 }
 
 /// Reads a CSV of fixes into trajectories. The error is for a text without a usable
@@ -407,8 +400,7 @@ pub fn read_from(input: impl std::io::BufRead) -> Result<CsvRead, MovingError> {
     };
     let cols = columns(&header, &mut out.warnings)?;
     let (mut no_position, mut first_no_position, mut no_offset) = (0usize, None, 0usize);
-    let mut built: Vec<Building> = Vec::new();
-    let mut index: HashMap<Group, usize> = HashMap::new();
+    let mut grouping = Grouping::default();
     for r in recs {
         let r = match r {
             Ok(r) => r,
@@ -434,7 +426,7 @@ pub fn read_from(input: impl std::io::BufRead) -> Result<CsvRead, MovingError> {
             ));
             continue;
         }
-        let (group, fix) = match row(&cols, r, &mut no_offset) {
+        let (keys, fix) = match row(&cols, r, &mut no_offset) {
             Ok(Some(g)) => g,
             Ok(None) => {
                 no_position += 1;
@@ -446,38 +438,17 @@ pub fn read_from(input: impl std::io::BufRead) -> Result<CsvRead, MovingError> {
                 continue;
             }
         };
-        let callsign = cols.callsign.and_then(|k| text(r.fields.get(k)));
-        let k = *index.entry(group.clone()).or_insert_with(|| {
-            built.push(Building {
-                group,
-                callsign: callsign.clone(),
-                fixes: Vec::new(),
-                first_line: r.line,
-            });
-            built.len() - 1
-        });
-        let b = &mut built[k];
-        if let Some(last) = b.fixes.last() {
-            if fix.t <= last.t {
-                out.errors.push(cell_err(
-                    r.line,
-                    "timestamp",
-                    ErrorKind::TimesNotIncreasing,
-                    format!(
-                        "{} is not after the trajectory's previous fix at {} (row skipped)",
-                        shown(fix.t),
-                        shown(last.t)
-                    ),
-                ));
-                continue;
-            }
+        let at = Location {
+            line: Some(r.line),
+            ..Location::default()
+        };
+        if let Err(e) = grouping.push(at, keys, fix) {
+            out.errors.push(e);
         }
-        if b.callsign.is_none() {
-            b.callsign = callsign;
-        }
-        b.fixes.push(fix);
     }
-    finish(built, &mut out);
+    let (trajectories, errors) = grouping.finish();
+    out.trajectories = trajectories;
+    out.errors.extend(errors);
     if no_position > 0 {
         out.warnings.push(MovingWarning::new(
             Location {
@@ -503,40 +474,124 @@ fn shown(t: f64) -> String {
     time::format(t, time::Round::Floor).unwrap_or_else(|| format!("{t} s"))
 }
 
-/// The trajectories with their ids (the rule of the module's documentation); those with
-/// fewer than 2 fixes become errors.
-fn finish(built: Vec<Building>, out: &mut CsvRead) {
-    let mut groups_of: HashMap<String, usize> = HashMap::new();
-    for b in &built {
-        if let Group::Aircraft(icao, _) = &b.group {
-            *groups_of.entry(icao.clone()).or_default() += 1;
-        }
-    }
-    for b in built {
-        let id = match &b.group {
-            Group::Flight(f) => f.clone(),
-            Group::Aircraft(icao, Some(cs)) if groups_of.get(icao).is_some_and(|&n| n > 1) => {
-                format!("{icao}/{cs}")
-            }
-            Group::Aircraft(icao, _) => icao.clone(),
+/// What groups a fix: its aircraft, callsign and flight (the module's grouping rule).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Keys {
+    /// The aircraft's ICAO 24-bit address (non-empty).
+    pub icao24: String,
+    /// The callsign, when known (non-empty).
+    pub callsign: Option<String>,
+    /// The flight's id, when known (non-empty).
+    pub flight_id: Option<String>,
+}
+
+/// One trajectory being built: its group, callsign, fixes and the location of its first
+/// row.
+struct Building {
+    group: Group,
+    callsign: Option<String>,
+    fixes: Vec<Fix>,
+    first: Location,
+}
+
+/// Fixes grouped into trajectories by the rule of the module's documentation (flight_id,
+/// else icao24 and callsign), row by row in input order: the CSV reader's grouping, shared
+/// with readers of other tables of fixes (a data frame's columns).
+#[derive(Default)]
+pub struct Grouping {
+    built: Vec<Building>,
+    index: HashMap<Group, usize>,
+}
+
+impl Grouping {
+    /// Adds the fix of one row located `at` (its line, or its row as `member`) to its
+    /// trajectory. The error is a fix not after the trajectory's previous one: the row is
+    /// skipped.
+    pub fn push(&mut self, at: Location, keys: Keys, fix: Fix) -> Result<(), MovingError> {
+        let Keys {
+            icao24,
+            callsign,
+            flight_id,
+        } = keys;
+        let group = match flight_id {
+            Some(f) => Group::Flight(f),
+            None => Group::Aircraft(icao24, callsign.clone()),
         };
-        if b.fixes.len() < 2 {
-            out.errors.push(MovingError::new(
-                Location {
-                    line: Some(b.first_line),
-                    id: Some(id),
-                    ..Location::default()
-                },
-                ErrorKind::TooFewFixes,
-                format!("a mover needs at least 2 fixes, found {}", b.fixes.len()),
-            ));
-            continue;
-        }
-        out.trajectories.push(Trajectory {
-            id,
-            callsign: b.callsign,
-            fixes: b.fixes,
+        let built = &mut self.built;
+        let k = *self.index.entry(group.clone()).or_insert_with(|| {
+            built.push(Building {
+                group,
+                callsign: callsign.clone(),
+                fixes: Vec::new(),
+                first: at.clone(),
+            });
+            built.len() - 1
         });
+        let b = &mut self.built[k];
+        if let Some(last) = b.fixes.last() {
+            if fix.t <= last.t {
+                let member = match &at.member {
+                    Some(m) => format!("{m}, column timestamp"),
+                    None => "column timestamp".into(),
+                };
+                return Err(MovingError::new(
+                    Location {
+                        member: Some(member),
+                        ..at
+                    },
+                    ErrorKind::TimesNotIncreasing,
+                    format!(
+                        "{} is not after the trajectory's previous fix at {} (row skipped)",
+                        shown(fix.t),
+                        shown(last.t)
+                    ),
+                ));
+            }
+        }
+        if b.callsign.is_none() {
+            b.callsign = callsign;
+        }
+        b.fixes.push(fix);
+        Ok(())
+    }
+
+    /// The trajectories with their ids (the rule of the module's documentation), in the
+    /// order of their first row, and the errors of those with fewer than 2 fixes (left
+    /// out).
+    pub fn finish(self) -> (Vec<Trajectory>, Vec<MovingError>) {
+        let mut groups_of: HashMap<String, usize> = HashMap::new();
+        for b in &self.built {
+            if let Group::Aircraft(icao, _) = &b.group {
+                *groups_of.entry(icao.clone()).or_default() += 1;
+            }
+        }
+        let (mut trajectories, mut errors) = (Vec::new(), Vec::new());
+        for b in self.built {
+            let id = match &b.group {
+                Group::Flight(f) => f.clone(),
+                Group::Aircraft(icao, Some(cs)) if groups_of.get(icao).is_some_and(|&n| n > 1) => {
+                    format!("{icao}/{cs}")
+                }
+                Group::Aircraft(icao, _) => icao.clone(),
+            };
+            if b.fixes.len() < 2 {
+                errors.push(MovingError::new(
+                    Location {
+                        id: Some(id),
+                        ..b.first
+                    },
+                    ErrorKind::TooFewFixes,
+                    format!("a mover needs at least 2 fixes, found {}", b.fixes.len()),
+                ));
+                continue;
+            }
+            trajectories.push(Trajectory {
+                id,
+                callsign: b.callsign,
+                fixes: b.fixes,
+            });
+        }
+        (trajectories, errors)
     }
 }
 

@@ -9,6 +9,7 @@
 //! - [`geojson`]: GeoJSON positions, rings and polygons, checked, with their locations.
 //! - [`fixes_csv`]: a CSV of fixes (traffic and OpenSky columns), grouped into
 //!   trajectories.
+//! - [`fixes_table`]: the same fixes held in columns (a data frame's arrays).
 //! - [`planar`]: the planar model's data (fixes, keyframed areas, relations, spans).
 //! - [`plane`]: the planar model's certified spans over one segment.
 //! - [`timeline`]: three-valued timelines, the algebra that composes the spans.
@@ -16,11 +17,14 @@
 //! - [`encounter`]: whole flights against areas on the Earth, the answer of
 //!   `polyguard encounters`.
 //! - [`broad`]: many movers against many areas: the broad phase.
+//! - [`answer`]: the answer as JSON, one object per pair that meets.
 
+pub mod answer;
 pub mod broad;
 pub mod encounter;
 pub mod error;
 pub mod fixes_csv;
+pub mod fixes_table;
 pub mod geojson;
 pub mod mfjson;
 pub mod model;

@@ -215,7 +215,26 @@ pub fn epoch_seconds(x: f64) -> Result<f64, String> {
     Err(format!("{x} s is outside the years 0000 to 9999"))
 }
 
-/// Which way [`format`] rounds to whole milliseconds.
+/// The nearest f64 to `ns`·10⁻⁹ seconds (nanoseconds since the epoch, as numpy's and
+/// pandas' `datetime64[ns]` hold them): the instant rounded once, as [`parse`] rounds
+/// the same instant written in RFC 3339 with its nanoseconds.
+pub fn from_nanos(ns: i64) -> f64 {
+    let (whole, frac) = (ns.div_euclid(1_000_000_000), ns.rem_euclid(1_000_000_000));
+    if frac == 0 {
+        return whole as f64;
+    }
+    let digits = format!("{frac:09}");
+    let text = if whole >= 0 {
+        format!("{whole}.{digits}").parse::<f64>().ok()
+    } else {
+        exact_sum(whole, &digits).ok()
+    };
+    // Both readings take digits only: they cannot fail; the two-rounding quotient is
+    // the fallback all the same.
+    text.unwrap_or(ns as f64 / 1e9)
+}
+
+/// Which way [`format()`] rounds to whole milliseconds.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Round {
     /// Toward the past: the printed instant is ≤ the exact one.
@@ -362,5 +381,18 @@ mod tests {
             .expect_err("ms")
             .contains("milliseconds"));
         assert!(epoch_seconds(f64::INFINITY).is_err());
+    }
+
+    #[test]
+    fn nanoseconds_round_as_the_same_instant_written_out() {
+        for (ns, text) in [
+            (1_633_613_562_123_456_789, "2021-10-07T13:32:42.123456789Z"),
+            (1_633_613_562_000_000_000, "2021-10-07T13:32:42Z"),
+            (-1, "1969-12-31T23:59:59.999999999Z"),
+            (-86_400_000_000_001, "1969-12-30T23:59:59.999999999Z"),
+        ] {
+            let p = parse(text).expect(text);
+            assert_eq!(from_nanos(ns).to_bits(), p.t.to_bits(), "{text}");
+        }
     }
 }

@@ -14,6 +14,11 @@
  * 4. pg_intervals and pg_detect_exit on cases worked out by hand (a square crossed, and
  *    the two cases of examples/intervals.jsonl: a cell entered twice, a drone leaving its
  *    keep-in box through the ceiling), the buffer protocol, errors naming the field.
+ * 5. pg_encounters on the repository's three real flights (CSV of fixes) against two
+ *    drifting cells (MF-JSON): the JSON Lines, their count, and with --encounters-cli
+ *    FILE (the output of `polyguard encounters` on the same files and options) the text
+ *    byte for byte; NULL texts, bad UTF-8, unreadable input, bad options and rejected
+ *    rows as statuses.
  *
  * Exit status 0 when every check passes; each failure is printed.
  */
@@ -675,16 +680,134 @@ static void test_intervals(void) {
     }
 }
 
+#define MOVING_DATA "crates/earth/tests/data/moving/"
+
+/* The whole of a file, NUL-terminated (NULL when it cannot be read); *len its bytes. */
+static char *read_file(const char *path, size_t *len) {
+    FILE *f = fopen(path, "rb");
+    char *buf = NULL;
+    size_t cap = 0, n = 0;
+    if (f == NULL)
+        return NULL;
+    for (;;) {
+        if (n + 4096 + 1 > cap) {
+            char *grown;
+            cap = 2 * cap + 4096 + 1;
+            grown = realloc(buf, cap);
+            if (grown == NULL) {
+                free(buf);
+                fclose(f);
+                return NULL;
+            }
+            buf = grown;
+        }
+        size_t got = fread(buf + n, 1, 4096, f);
+        n += got;
+        if (got < 4096)
+            break;
+    }
+    fclose(f);
+    buf[n] = '\0';
+    *len = n;
+    return buf;
+}
+
+static size_t count_lines(const char *s) {
+    size_t n = 0;
+    for (; *s; s++)
+        n += *s == '\n';
+    return n;
+}
+
+static void test_encounters(const char *cli_path) {
+    size_t movers_len = 0, areas_len = 0, want_len = 0, out_len = 99;
+    char *movers = read_file(MOVING_DATA "quickstart-3.csv", &movers_len);
+    char *areas = read_file(MOVING_DATA "cells-2.mf.json", &areas_len);
+    char *out = NULL;
+    pg_encounter_options opts;
+    int rc;
+    CHECK(movers != NULL && areas != NULL, "the test data (run from the repository's root)");
+    if (movers == NULL || areas == NULL) {
+        free(movers);
+        free(areas);
+        return;
+    }
+    CHECK(pg_encounter_options_default(&opts) == PG_OK, "defaults");
+    CHECK(opts.max_gap_s == 60.0 && opts.geodesy == PG_GEODESY_SPHERE, "defaults");
+    opts.sep_nm = 5.0;
+    opts.sep_v_ft = 1000.0;
+    rc = pg_encounters(movers, movers_len, 1, areas, areas_len, &opts, &out, &out_len);
+    CHECK(rc == PG_OK, "pg_encounters: %s %s", pg_status_name(rc), last_message());
+    CHECK(out != NULL && strlen(out) == out_len, "the text and its length");
+    /* two flights reach the cells within 5 nm; one of them meets both cells */
+    CHECK(out != NULL && count_lines(out) == 3, "3 lines, not %zu", out ? count_lines(out) : 0);
+    CHECK(out != NULL && starts_with(out, "{\"mover\":\"ABR471_198\""), "%.40s", out);
+    if (cli_path != NULL && out != NULL) {
+        char *want = read_file(cli_path, &want_len);
+        CHECK(want != NULL, "cannot read %s", cli_path);
+        CHECK(want != NULL && want_len == out_len && memcmp(want, out, out_len) == 0,
+              "the lines differ from the CLI's:\n%s\nCLI:\n%s", out, want ? want : "");
+        free(want);
+    }
+    pg_free_text(out);
+    pg_free_text(NULL);
+
+    /* statuses: the text and its length are NULL and 0 on each */
+    out = (char *)movers;
+    rc = pg_encounters(NULL, 0, 1, areas, areas_len, NULL, &out, &out_len);
+    expect_error(rc, PG_ERR_NULL_POINTER, "movers", "NULL movers");
+    CHECK(out == NULL && out_len == 0, "NULL and 0 written on an error");
+    rc = pg_encounters(movers, movers_len, 1, areas, areas_len, NULL, NULL, &out_len);
+    expect_error(rc, PG_ERR_NULL_POINTER, "out", "NULL out");
+    rc = pg_encounters("\xff\xfe", 2, 0, areas, areas_len, NULL, &out, &out_len);
+    expect_error(rc, PG_ERR_UTF8, "movers", "bad UTF-8");
+    rc = pg_encounters(movers, movers_len, 1, "not json", 8, NULL, &out, &out_len);
+    expect_error(rc, PG_ERR_INPUT, "areas", "areas that are not JSON");
+    rc = pg_encounters("no,header\n", 10, 1, areas, areas_len, NULL, &out, &out_len);
+    expect_error(rc, PG_ERR_INPUT, "movers", "a CSV without the required columns");
+    opts.sep_nm = -1.0;
+    rc = pg_encounters(movers, movers_len, 1, areas, areas_len, &opts, &out, &out_len);
+    expect_error(rc, PG_ERR_BAD_PARAMETER, "sep_nm", "a negative separation");
+    opts.sep_nm = 5.0;
+    opts.geodesy = 7;
+    rc = pg_encounters(movers, movers_len, 1, areas, areas_len, &opts, &out, &out_len);
+    expect_error(rc, PG_ERR_BAD_PARAMETER, "geodesy", "an unknown geodesy");
+
+    /* a row with a latitude out of range: rejected and named, the rest answered */
+    {
+        const char *bad = "timestamp,icao24,latitude,longitude\n"
+                          "0,abc,95,2\n10,abc,45,2\n20,abc,45.1,2.1\n";
+        rc = pg_encounters(bad, strlen(bad), 1, areas, areas_len, NULL, &out, &out_len);
+        CHECK(rc == PG_PARTIAL, "%s", pg_status_name(rc));
+        CHECK(starts_with(last_message(), "movers: line 2"), "%s", last_message());
+        CHECK(out != NULL && out_len == 0, "an empty answer, still a text");
+        pg_free_text(out);
+    }
+    free(movers);
+    free(areas);
+}
+
 int main(int argc, char **argv) {
     FILE *cli = NULL;
-    if (argc == 3 && strcmp(argv[1], "--cli") == 0) {
-        cli = fopen(argv[2], "r");
-        if (cli == NULL) {
-            fprintf(stderr, "cannot read %s\n", argv[2]);
-            return 2;
+    const char *encounters_cli = NULL;
+    int k;
+    for (k = 1; k + 1 < argc; k += 2) {
+        if (strcmp(argv[k], "--cli") == 0 && cli == NULL) {
+            cli = fopen(argv[k + 1], "r");
+            if (cli == NULL) {
+                fprintf(stderr, "cannot read %s\n", argv[k + 1]);
+                return 2;
+            }
+        } else if (strcmp(argv[k], "--encounters-cli") == 0) {
+            encounters_cli = argv[k + 1];
+        } else {
+            break;
         }
-    } else if (argc != 1) {
-        fprintf(stderr, "usage: %s [--cli FILE]  (FILE: polyguard detect --time output)\n",
+    }
+    if (k != argc) {
+        fprintf(stderr,
+                "usage: %s [--cli FILE] [--encounters-cli FILE]  (FILE: polyguard detect "
+                "--time output; polyguard encounters output)\n",
                 argv[0]);
         return 2;
     }
@@ -694,6 +817,7 @@ int main(int argc, char **argv) {
     test_bad_input();
     test_batch();
     test_intervals();
+    test_encounters(encounters_cli);
     printf("%d checks, %d failed%s\n", checks, failures,
            cli != NULL ? " (examples also compared with the CLI)" : "");
     return failures == 0 ? 0 : 1;

@@ -9,6 +9,9 @@
 - Beyond paper A (docs/cases.md, "Separation and fences"): ``intervals`` encloses every
   time the point is inside, within a separation of (loss of separation) or breaching a
   keep-in polygon; ``detect_exit`` says whether it leaves a keep-in fence.
+- Moving features (docs/moving-features.md): ``encounters`` answers whole flights (MF-JSON,
+  or pandas frames of fixes as traffic and MovingPandas hold them) against static and
+  moving areas with the certified spans of inside and near, as a pandas DataFrame.
 - Paper B (A. Bienkowski, D. Sidoti and K. R. Pattipati, IEEE Access 9, 2021):
   ``conflicts`` runs the four-stage interference identification (§IV) on a scenario
   GeoJSON.
@@ -38,6 +41,7 @@ from ._native import (
     truth,
     truth_case,
 )
+from ._moving import encounters
 
 __all__ = [
     "KIND_CONSERVATIVE",
@@ -56,6 +60,7 @@ __all__ = [
     "detect_exit",
     "detect_time",
     "detect_time_case",
+    "encounters",
     "intervals",
     "truth",
     "truth_case",

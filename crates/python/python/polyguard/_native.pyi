@@ -33,6 +33,8 @@ __all__ = [
     "ScenarioError",
     "Truth",
     "__version__",
+    "_encounters_columns",
+    "_encounters_json",
     "conflicts",
     "detect",
     "detect_batch",
@@ -300,4 +302,40 @@ def conflicts(
     Returns the answer object of ``polyguard conflicts``: ``conflicts``, ``stats``,
     ``errors`` (rejected features; the others are still answered), ``warnings``.
     Raises ScenarioError when the text cannot be read at all.
+    """
+
+_Encountered = Tuple[dict[str, Any], list[str], list[str]]
+
+def _encounters_json(
+    movers: str,
+    areas: str,
+    *,
+    sep: float = 0.0,
+    sep_v: float = 0.0,
+    max_gap: float = 60.0,
+    geodesy: str = "sphere",
+) -> _Encountered:
+    """The encounters of MF-JSON movers with GeoJSON / MF-JSON areas
+    (docs/moving-features.md): (columns, errors, warnings), one entry per span in the
+    columns; ``polyguard.encounters`` makes the DataFrame. Raises Error when nothing can
+    be read or an option is bad. Releases the GIL.
+    """
+
+def _encounters_columns(
+    t_ns: npt.NDArray[np.int64],
+    lon: npt.NDArray[np.float64],
+    lat: npt.NDArray[np.float64],
+    alt: Optional[npt.NDArray[np.float64]],
+    icao24: Sequence[Optional[str]],
+    callsign: Optional[Sequence[Optional[str]]],
+    flight_id: Optional[Sequence[Optional[str]]],
+    areas: str,
+    *,
+    sep: float = 0.0,
+    sep_v: float = 0.0,
+    max_gap: float = 60.0,
+    geodesy: str = "sphere",
+) -> _Encountered:
+    """``_encounters_json`` for movers given as the columns of a table of fixes
+    (int64 nanoseconds, NaT as missing; NaN altitude: none), grouped as the CSV of fixes.
     """

@@ -252,3 +252,27 @@ fn bad_input_is_named() {
     let e = plane_spans(&fixes, &area, PlaneRelation::Inside).unwrap_err();
     assert!(e.to_string().contains("fixes[0].x"), "{e}");
 }
+
+/// A comb of 40 teeth (162 vertices: large rings are clipped to a box around each piece
+/// before the engine sees them, and the clip is reused by the next pieces), crossed along
+/// y = 5 at unit speed from x = −1 with a fix every half time unit: inside each tooth
+/// [2i, 2i + 1] at t ∈ [2i + 1, 2i + 2]; within 0.25, [2i + 0.75, 2i + 2.25].
+#[test]
+fn a_large_ring_is_answered_through_its_clips() {
+    let mut comb = vec![[0.0, -1.0], [80.0, -1.0]];
+    for i in (0..40).rev() {
+        let x = 2.0 * i as f64;
+        comb.extend([[x + 1.0, 0.0], [x + 1.0, 10.0], [x, 10.0], [x, 0.0]]);
+    }
+    comb.truncate(comb.len() - 1); // the last tooth's foot is the first vertex's column
+    comb.push([0.0, 0.0]);
+    let comb: Vec<[f64; 2]> = comb.into_iter().rev().collect();
+    assert!(comb.len() > 100);
+    let fixes: Vec<PlaneFix> = (0..=170).map(|k| fix(k as f64 * 0.5, -1.0 + k as f64 * 0.5, 5.0)).collect();
+    let area = stat(vec![rings(comb, vec![])]);
+    let inside: Vec<(f64, f64)> = (0..40).map(|i| (2.0 * i as f64 + 1.0, 2.0 * i as f64 + 2.0)).collect();
+    assert_contract(&plane_spans(&fixes, &area, PlaneRelation::Inside).unwrap(), &inside);
+    let near = PlaneRelation::Near { d_lo: 0.25, d_hi: 0.25, h: 0.0 };
+    let within: Vec<(f64, f64)> = (0..40).map(|i| (2.0 * i as f64 + 0.75, 2.0 * i as f64 + 2.25)).collect();
+    assert_contract(&plane_spans(&fixes, &area, near).unwrap(), &within);
+}

@@ -24,7 +24,7 @@
 //! a lower one).
 
 use super::planar::{PlaneArea, PlaneFix, PlaneFrame, PlaneRings};
-use super::prepared::{winding, Prepared};
+use super::prepared::{clip_ring, winding, Prepared};
 use super::timeline::{Holds, Timeline};
 use super::{next_down, next_up};
 use polyguard::intervals::{intervals, Relation, Separation};
@@ -405,6 +405,71 @@ fn winding_of(p: &[Vect2], a: [f64; 2]) -> Holds {
 pub(super) struct FarCache {
     /// Per (part, ring): the end time of the last far piece and its value.
     last: Vec<Vec<Option<(f64, Holds)>>>,
+    /// Per (part, ring) of a static ring: the last clip box and the ring clipped to it,
+    /// counterclockwise ([`clip_ring`]).
+    clips: Vec<Vec<Option<Clip>>>,
+}
+
+/// A static ring clipped to a box (the `prepared` module's `clip_ring`), as a stand-in's
+/// vertices.
+struct Clip {
+    lo: [f64; 2],
+    hi: [f64; 2],
+    p: std::rc::Rc<Vec<Vect2>>,
+}
+
+/// Static rings with more vertices than this are clipped to a box around each piece
+/// before the engine sees them (a FIR has thousands).
+const CLIP_MIN_VERTICES: usize = 32;
+
+impl FarCache {
+    /// The static ring `ring` of part `k` clipped to a box around the piece's segment
+    /// from `a` to `b` that holds the segment's box grown by `2·reach`: the last clip when
+    /// it does, else a new one grown by `2·reach` plus eight times the segment's extent (so
+    /// that the next pieces reuse it). Counterclockwise.
+    fn clip(
+        &mut self,
+        area: &PlaneArea,
+        k: usize,
+        ring: usize,
+        a: [f64; 2],
+        b: [f64; 2],
+        reach: f64,
+    ) -> std::rc::Rc<Vec<Vect2>> {
+        if self.clips.len() <= k {
+            self.clips.resize_with(k + 1, Vec::new);
+        }
+        if self.clips[k].len() <= ring {
+            self.clips[k].resize_with(ring + 1, || None);
+        }
+        let g = next_up(2.0 * reach);
+        let need_lo = [next_down(a[0].min(b[0]) - g), next_down(a[1].min(b[1]) - g)];
+        let need_hi = [next_up(a[0].max(b[0]) + g), next_up(a[1].max(b[1]) + g)];
+        if let Some(c) = &self.clips[k][ring] {
+            if c.lo[0] <= need_lo[0]
+                && c.lo[1] <= need_lo[1]
+                && c.hi[0] >= need_hi[0]
+                && c.hi[1] >= need_hi[1]
+            {
+                return c.p.clone();
+            }
+        }
+        let ext = 8.0 * (a[0] - b[0]).abs().max((a[1] - b[1]).abs());
+        let lo = [need_lo[0] - ext, need_lo[1] - ext];
+        let hi = [need_hi[0] + ext, need_hi[1] + ext];
+        let clipped = clip_ring(ring_of(&area.frames[0], k, ring), lo, hi);
+        let mut p: Vec<Vect2> = clipped.iter().map(|q| Vect2::new(q[0], q[1])).collect();
+        if polyguard::api::signed_area2(&p) < 0.0 {
+            p.reverse();
+        }
+        let p = std::rc::Rc::new(p);
+        self.clips[k][ring] = Some(Clip {
+            lo,
+            hi,
+            p: p.clone(),
+        });
+        p
+    }
 }
 
 impl FarCache {
@@ -499,6 +564,25 @@ pub(super) fn piece_timeline(
                 Some(true) => {
                     let v = cache.value(k, ring, t0, t1, || far_value(area, k, ring, a0, hole));
                     Timeline::constant(0.0, look, v)
+                }
+                Some(false) if ring_of(frame0, k, ring).len() > CLIP_MIN_VERTICES => {
+                    cache.forget(k, ring);
+                    // A clipped vertex lies within 8u·c of its edge (`clip_ring`); twice that.
+                    let dv = 16.0 * U * c;
+                    let delta = (dp + dv + m.extra_area) * (1.0 + 8.0 * U);
+                    let reach = next_up(d_hi.max(0.0) + delta);
+                    let p = cache.clip(area, k, ring, a0, a1, reach);
+                    if p.len() < 3 {
+                        // Nothing of the ring within twice the reach: constant, as far.
+                        let v = far_value(area, k, ring, a0, hole);
+                        Timeline::constant(0.0, look, v)
+                    } else {
+                        let r = StandIn {
+                            p: (*p).clone(),
+                            vels: vec![Vect2::new(0.0, 0.0); p.len()],
+                        };
+                        ring_timeline(look, s, v, &r, set, delta)
+                    }
                 }
                 _ => {
                     cache.forget(k, ring);

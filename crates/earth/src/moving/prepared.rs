@@ -138,3 +138,89 @@ pub fn winding(ring: &[[f64; 2]], p: [f64; 2]) -> i64 {
     }
     w
 }
+
+/// The ring clipped to the box [lo, hi] (Sutherland and Hodgman's algorithm, one side of
+/// the box at a time): a ring whose winding number around every point strictly inside
+/// the box is the ring's (the parts outside are moved onto the box's sides, which no
+/// such point crosses), with new edges only on the box's sides. Each vertex made on a
+/// side lies within 8u·c of the ring's edge it cuts (c the coordinates' largest size:
+/// one subtraction, one division, one product and one sum on the cut coordinate, the
+/// other coordinate exact), so every edge kept near the box's middle is within that of
+/// the ring's.
+pub fn clip_ring(ring: &[[f64; 2]], lo: [f64; 2], hi: [f64; 2]) -> Vec<[f64; 2]> {
+    let mut cur: Vec<[f64; 2]> = ring.to_vec();
+    // (axis, bound, keep the side ≥ bound)
+    for (axis, bound, ge) in [
+        (0, lo[0], true),
+        (0, hi[0], false),
+        (1, lo[1], true),
+        (1, hi[1], false),
+    ] {
+        if cur.is_empty() {
+            break;
+        }
+        let inside = |p: &[f64; 2]| {
+            if ge {
+                p[axis] >= bound
+            } else {
+                p[axis] <= bound
+            }
+        };
+        let cut = |p: [f64; 2], q: [f64; 2]| {
+            let o = 1 - axis;
+            let f = (bound - p[axis]) / (q[axis] - p[axis]);
+            let mut r = [0.0; 2];
+            r[axis] = bound;
+            r[o] = p[o] + f * (q[o] - p[o]);
+            r
+        };
+        let n = cur.len();
+        let mut out = Vec::with_capacity(n + 4);
+        for i in 0..n {
+            let (p, q) = (cur[i], cur[(i + 1) % n]);
+            match (inside(&p), inside(&q)) {
+                (true, true) => out.push(q),
+                (true, false) => out.push(cut(p, q)),
+                (false, true) => {
+                    out.push(cut(p, q));
+                    out.push(q);
+                }
+                (false, false) => {}
+            }
+        }
+        cur = out;
+    }
+    cur
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{clip_ring, winding};
+
+    #[test]
+    fn clipping_keeps_the_winding_number_inside_the_box() {
+        // A U shape clipped by a box that cuts both arms: points inside the box keep
+        // their winding numbers.
+        let u = [
+            [0.0, 0.0],
+            [3.0, 0.0],
+            [3.0, 3.0],
+            [2.0, 3.0],
+            [2.0, 1.0],
+            [1.0, 1.0],
+            [1.0, 3.0],
+            [0.0, 3.0],
+        ];
+        let c = clip_ring(&u, [0.5, 0.5], [2.5, 2.0]);
+        for p in [
+            [0.75, 1.5],
+            [1.5, 1.5],
+            [2.25, 1.5],
+            [1.5, 0.75],
+            [0.6, 1.9],
+        ] {
+            assert_eq!(winding(&c, p), winding(&u, p), "{p:?}");
+        }
+        assert!(clip_ring(&u, [10.0, 10.0], [11.0, 11.0]).is_empty());
+    }
+}

@@ -17,6 +17,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use super::conflicts::GeodesyArg;
+use super::encounters_svg;
 
 /// Exit code when some features or rows were rejected (the others are answered).
 const EXIT_BAD_INPUT: u8 = 1;
@@ -55,6 +56,27 @@ pub struct EncountersArgs {
     /// No summary on standard error.
     #[arg(long)]
     pub quiet: bool,
+    /// Also draw a picture to FILE (SVG): a map on the Mercator plane (the track, the
+    /// areas, the stretches inside drawn thick and near as a halo, possible ones dashed,
+    /// gaps dotted, the first loss of separation ringed) and a timeline in UTC with one
+    /// row per pair met. It shows one mover (`--svg-mover`), one area (`--svg-area`), or
+    /// without either the first mover that meets an area. The answer is written as
+    /// without --svg.
+    #[arg(long, value_name = "FILE")]
+    pub svg: Option<PathBuf>,
+    /// With --svg: draw the mover of this id (or, when no id matches, this callsign) and
+    /// every area it meets, one timeline row per area.
+    #[arg(long = "svg-mover", value_name = "ID", requires = "svg")]
+    pub svg_mover: Option<String>,
+    /// With --svg: draw the area of this id and every mover that meets it, one timeline
+    /// row per mover (the first 40; the rest are counted).
+    #[arg(
+        long = "svg-area",
+        value_name = "ID",
+        requires = "svg",
+        conflicts_with = "svg_mover"
+    )]
+    pub svg_area: Option<String>,
 }
 
 /// The text of `path` (`-`: standard input), or a message.
@@ -210,6 +232,19 @@ pub fn run(a: &EncountersArgs) -> ExitCode {
         max_gap_s: a.max_gap,
         geodesy: a.geodesy.into(),
     };
+    // an unknown id to draw stops before any answer
+    let focus = |inp: &Inputs| {
+        encounters_svg::focus(
+            &inp.movers,
+            &inp.areas,
+            a.svg_mover.as_deref(),
+            a.svg_area.as_deref(),
+        )
+    };
+    if let Err(e) = focus(&inp) {
+        eprintln!("polyguard encounters: {e}");
+        return ExitCode::from(EXIT_FATAL);
+    }
     let (areas, area_errors) = Areas::new(&inp.areas, opts.geodesy);
     inp.errors
         .extend(area_errors.iter().map(|e| format!("area {e}")));
@@ -230,6 +265,15 @@ pub fn run(a: &EncountersArgs) -> ExitCode {
     };
     if out.flush().is_err() {
         return ExitCode::from(EXIT_FATAL);
+    }
+    if let Some(p) = &a.svg {
+        let drawn = focus(&inp)
+            .and_then(|f| encounters_svg::draw(f, &inp.movers, &inp.areas, &areas, &opts))
+            .and_then(|svg| std::fs::write(p, svg).map_err(|e| format!("{}: {e}", p.display())));
+        if let Err(e) = drawn {
+            eprintln!("polyguard encounters: --svg: {e}");
+            return ExitCode::from(EXIT_FATAL);
+        }
     }
     for w in &inp.warnings {
         eprintln!("warning: {w}");

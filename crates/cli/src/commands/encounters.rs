@@ -79,6 +79,17 @@ pub struct EncountersArgs {
     pub svg_area: Option<String>,
 }
 
+impl EncountersArgs {
+    /// What the picture flags ask for.
+    fn svg_ask(&self) -> encounters_svg::Ask<'_> {
+        encounters_svg::Ask {
+            file: self.svg.as_deref(),
+            mover: self.svg_mover.as_deref(),
+            area: self.svg_area.as_deref(),
+        }
+    }
+}
+
 /// The text of `path` (`-`: standard input), or a message.
 fn read_text(path: &Path) -> Result<String, String> {
     if path == Path::new("-") {
@@ -233,15 +244,7 @@ pub fn run(a: &EncountersArgs) -> ExitCode {
         geodesy: a.geodesy.into(),
     };
     // an unknown id to draw stops before any answer
-    let focus = |inp: &Inputs| {
-        encounters_svg::focus(
-            &inp.movers,
-            &inp.areas,
-            a.svg_mover.as_deref(),
-            a.svg_area.as_deref(),
-        )
-    };
-    if let Err(e) = focus(&inp) {
+    if let Err(e) = encounters_svg::focus(a.svg_ask(), &inp.movers, &inp.areas) {
         eprintln!("polyguard encounters: {e}");
         return ExitCode::from(EXIT_FATAL);
     }
@@ -266,14 +269,9 @@ pub fn run(a: &EncountersArgs) -> ExitCode {
     if out.flush().is_err() {
         return ExitCode::from(EXIT_FATAL);
     }
-    if let Some(p) = &a.svg {
-        let drawn = focus(&inp)
-            .and_then(|f| encounters_svg::draw(f, &inp.movers, &inp.areas, &areas, &opts))
-            .and_then(|svg| std::fs::write(p, svg).map_err(|e| format!("{}: {e}", p.display())));
-        if let Err(e) = drawn {
-            eprintln!("polyguard encounters: --svg: {e}");
-            return ExitCode::from(EXIT_FATAL);
-        }
+    if let Err(e) = encounters_svg::write(a.svg_ask(), &inp.movers, &inp.areas, &areas, &opts) {
+        eprintln!("polyguard encounters: --svg: {e}");
+        return ExitCode::from(EXIT_FATAL);
     }
     for w in &inp.warnings {
         eprintln!("warning: {w}");

@@ -7,6 +7,18 @@ use polyguard_earth::moving::encounter::{Encounter, Options};
 use polyguard_earth::moving::model::{Area, Trajectory};
 use polyguard_earth::picture::{self, Met};
 use rayon::prelude::*;
+use std::path::Path;
+
+/// What `--svg`, `--svg-mover` and `--svg-area` ask for.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Ask<'a> {
+    /// Where to write the picture (`None`: no picture).
+    pub file: Option<&'a Path>,
+    /// The mover to draw, by id or callsign.
+    pub mover: Option<&'a str>,
+    /// The area to draw, by id.
+    pub area: Option<&'a str>,
+}
 
 /// What the picture shows: an index into the movers or the areas read.
 #[derive(Clone, Copy, Debug)]
@@ -31,15 +43,10 @@ fn some_ids<'a>(ids: impl ExactSizeIterator<Item = &'a str>) -> String {
     }
 }
 
-/// The focus the flags name: `--svg-mover ID` (an id, or else a callsign) or
-/// `--svg-area ID`; or a message naming a few ids that exist.
-pub fn focus(
-    movers: &[Trajectory],
-    areas: &[Area],
-    mover: Option<&str>,
-    area: Option<&str>,
-) -> Result<Option<Focus>, String> {
-    if let Some(id) = mover {
+/// The focus `a` names: `--svg-mover ID` (an id, or else a callsign) or
+/// `--svg-area ID` (`None`: neither); or a message naming a few ids that exist.
+pub fn focus(a: Ask, movers: &[Trajectory], areas: &[Area]) -> Result<Option<Focus>, String> {
+    if let Some(id) = a.mover {
         let found = movers.iter().position(|t| t.id == id).or_else(|| {
             movers
                 .iter()
@@ -53,7 +60,7 @@ pub fn focus(
             )),
         };
     }
-    if let Some(id) = area {
+    if let Some(id) = a.area {
         return match areas.iter().position(|a| a.id == id) {
             Some(a) => Ok(Some(Focus::Area(a))),
             None => Err(format!(
@@ -65,9 +72,25 @@ pub fn focus(
     Ok(None)
 }
 
+/// With `--svg FILE`: the picture `a` asks for, written to FILE (movers and
+/// areas as read, `areas` as laid out, `opts` as answered); or a message.
+pub fn write(
+    a: Ask,
+    movers: &[Trajectory],
+    inputs: &[Area],
+    areas: &Areas,
+    opts: &Options,
+) -> Result<(), String> {
+    let Some(p) = a.file else {
+        return Ok(());
+    };
+    let svg = draw(focus(a, movers, inputs)?, movers, inputs, areas, opts)?;
+    std::fs::write(p, svg).map_err(|e| format!("{}: {e}", p.display()))
+}
+
 /// The picture's SVG for `focus` (`None`: the first mover, in input order, that meets an
 /// area), or a message when there is nothing to draw.
-pub fn draw(
+fn draw(
     focus: Option<Focus>,
     movers: &[Trajectory],
     inputs: &[Area],

@@ -18,13 +18,21 @@ use std::fmt::Write as _;
 
 /// One pair met, seen from the side drawn: the other side (an area, or a mover) and the
 /// encounter's spans.
-#[derive(Clone, Copy, Debug)]
+#[derive(Debug)]
 pub struct Met<'a, T> {
     /// The area or the mover met.
     pub other: &'a T,
     /// The pair's spans and the mover's gaps.
     pub encounter: &'a Encounter,
 }
+
+// two references: copied whatever `T` is (a derive would ask `T: Copy`)
+impl<T> Clone for Met<'_, T> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+impl<T> Copy for Met<'_, T> {}
 
 /// Colours of the pairs met, in turn (the scenario pictures' four first); red is kept
 /// for the loss of separation, grey for gaps.
@@ -295,6 +303,19 @@ fn mover_name(id: &str, callsign: Option<&str>) -> String {
     }
 }
 
+/// The pairs in the order of their first loss of separation (the timeline reads down
+/// in time), ties in the order given.
+fn by_first_loss<'a, T>(met: &[Met<'a, T>]) -> Vec<Met<'a, T>> {
+    let mut out = met.to_vec();
+    let first = |m: &Met<T>| {
+        m.encounter
+            .loss_of_separation()
+            .map_or(f64::INFINITY, |s| s[0])
+    };
+    out.sort_by(|a, b| first(a).total_cmp(&first(b)));
+    out
+}
+
 /// The options in words, for the title.
 fn options_text(opts: &Options) -> String {
     format!(
@@ -306,6 +327,7 @@ fn options_text(opts: &Options) -> String {
 /// The picture of one mover `traj` and every area it meets (`met`), with the options
 /// the encounters were answered with, as an SVG document.
 pub fn mover_svg(traj: &Trajectory, met: &[Met<Area>], opts: &Options) -> String {
+    let met = &by_first_loss(met);
     let geo = opts.geodesy;
     let reference = traj.fixes.first().map_or(0.0, |f| f.lon);
     let track = Track::new(traj, geo, opts.max_gap_s, reference);
@@ -415,10 +437,39 @@ fn place_labels(
     body.push_str(&placer.svg());
 }
 
+/// The times an area's timeline shows: every near span of `met`, and 5 % more either
+/// side (at least 5 minutes).
+fn near_times(met: &[Met<Trajectory>]) -> [f64; 2] {
+    let near = met.iter().flat_map(|m| &m.encounter.near);
+    let lo = near
+        .clone()
+        .map(|s| s.start[0])
+        .fold(f64::INFINITY, f64::min);
+    let hi = near.map(|s| s.end[1]).fold(f64::NEG_INFINITY, f64::max);
+    let pad = ((hi - lo) * 0.05).max(300.0);
+    if lo <= hi {
+        [lo - pad, hi + pad]
+    } else {
+        [0.0, 1.0]
+    }
+}
+
+/// The frame of an area's map: the area, a quarter of its size around it, and at least
+/// twice D (at the area's latitude, where D nm span D/R·sec(lat) radians of the plane).
+fn around(outline: &Outline, opts: &Options) -> Frame {
+    let geo = opts.geodesy;
+    let ab = outline.bbox();
+    let lat = geo.inverse_mercator([0.0, (ab[1] + ab[3]) / 2.0]).lat;
+    let d = 2.0 * opts.sep_nm / geo.radius_nm() / lat.cos().max(0.05);
+    let grow = ((ab[2] - ab[0]).max(ab[3] - ab[1]) * 0.25).max(d);
+    frame_for([ab[0] - grow, ab[1] - grow, ab[2] + grow, ab[3] + grow])
+}
+
 /// The picture of one area and every mover that meets it (`met`; the timeline shows the
 /// first [`MAX_ROWS`]), with the options the encounters were answered with, as an SVG
 /// document. The map shows the area and the movers near it.
 pub fn area_svg(area: &Area, met: &[Met<Trajectory>], opts: &Options) -> String {
+    let met = &by_first_loss(met);
     let geo = opts.geodesy;
     let probe = Outline::new(area, geo, 0.0);
     let reference = probe
@@ -428,25 +479,8 @@ pub fn area_svg(area: &Area, met: &[Met<Trajectory>], opts: &Options) -> String 
         .and_then(|r| r.first())
         .map_or(0.0, |p| p[0].to_degrees());
     let outline = Outline::new(area, geo, reference);
-    let near = met.iter().flat_map(|m| &m.encounter.near);
-    let lo = near
-        .clone()
-        .map(|s| s.start[0])
-        .fold(f64::INFINITY, f64::min);
-    let hi = near.map(|s| s.end[1]).fold(f64::NEG_INFINITY, f64::max);
-    let pad = ((hi - lo) * 0.05).max(300.0);
-    let shown = if lo <= hi {
-        [lo - pad, hi + pad]
-    } else {
-        [0.0, 1.0]
-    };
-    let ab = outline.bbox();
-    // a quarter of the area's size around it, and at least twice D (at the area's
-    // latitude, where D nm span D/R·sec(lat) radians of the plane)
-    let lat = geo.inverse_mercator([0.0, (ab[1] + ab[3]) / 2.0]).lat;
-    let d = 2.0 * opts.sep_nm / geo.radius_nm() / lat.cos().max(0.05);
-    let grow = ((ab[2] - ab[0]).max(ab[3] - ab[1]) * 0.25).max(d);
-    let f = frame_for([ab[0] - grow, ab[1] - grow, ab[2] + grow, ab[3] + grow]);
+    let shown = near_times(met);
+    let f = around(&outline, opts);
     let mut body = clip(&f);
     let area_colour = COLOURS[0];
     let mut all_entries: Vec<f64> = met

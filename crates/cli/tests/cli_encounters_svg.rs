@@ -105,7 +105,7 @@ fn a_flight_is_drawn_with_every_area_it_meets_and_a_timeline() {
         "time, UTC (2021-10-07)",
         ">12:30<",
         "first loss of separation",
-        "gaps over 900 s",
+        "--sep 0 nm, --sep-v 0 ft, --max-gap 900 s",
     ] {
         assert!(svg.contains(s), "{s} is missing");
     }

@@ -154,7 +154,6 @@ fn track_line(
     name: &str,
     dense: &mut usize,
 ) {
-    let mut length = 0.0;
     for s in &track.segments {
         let pts = &track.p[s.clone()];
         line(
@@ -164,11 +163,14 @@ fn track_line(
             &format!("stroke=\"{colour}\" stroke-width=\"1.2\""),
             name,
         );
-        length += pts
-            .windows(2)
-            .map(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]) * f.k)
-            .sum::<f64>();
     }
+    // the whole track's length on the map, gaps included (a fix alone between two gaps
+    // is seen by its dot only)
+    let length: f64 = track
+        .p
+        .windows(2)
+        .map(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]) * f.k)
+        .sum();
     for [a, b] in track.gaps() {
         line(
             out,
@@ -316,10 +318,29 @@ fn by_first_loss<'a, T>(met: &[Met<'a, T>]) -> Vec<Met<'a, T>> {
     out
 }
 
+/// The timeline's rows of `met`: each named by `label`, coloured by the palette index
+/// `colour` gives its place.
+fn rows_of<'a, T>(
+    met: &[Met<'a, T>],
+    label: impl Fn(&T) -> String,
+    colour: impl Fn(usize) -> usize,
+) -> Vec<Row<'a>> {
+    met.iter()
+        .enumerate()
+        .map(|(i, m)| Row {
+            label: label(m.other),
+            colour: (COLOURS[colour(i)], colour(i)),
+            inside: &m.encounter.inside,
+            near: &m.encounter.near,
+            gaps: &m.encounter.gaps,
+        })
+        .collect()
+}
+
 /// The options in words, for the title.
 fn options_text(opts: &Options) -> String {
     format!(
-        "near: within {} nm and {} ft; gaps over {} s",
+        "--sep {} nm, --sep-v {} ft, --max-gap {} s",
         opts.sep_nm, opts.sep_v_ft, opts.max_gap_s
     )
 }
@@ -383,17 +404,7 @@ pub fn mover_svg(traj: &Trajectory, met: &[Met<Area>], opts: &Options) -> String
         labels.insert(0, (name.clone(), f.pt(p, 0.0), "#333", Prefer::Above));
     }
     place_labels(&mut body, &mut placer, &f, &labels);
-    let rows = met
-        .iter()
-        .enumerate()
-        .map(|(i, m)| Row {
-            label: m.other.id.clone(),
-            colour: (COLOURS[i % COLOURS.len()], i % COLOURS.len()),
-            inside: &m.encounter.inside,
-            near: &m.encounter.near,
-            gaps: &m.encounter.gaps,
-        })
-        .collect();
+    let rows = rows_of(met, |a| a.id.clone(), |i| i % COLOURS.len());
     let mut notes = vec!["colours: areas met in turn".to_owned()];
     if dense > 0 {
         notes.push("fixes too dense to dot at this scale".to_owned());
@@ -520,19 +531,19 @@ pub fn area_svg(area: &Area, met: &[Met<Trajectory>], opts: &Options) -> String 
             }
         }
     }
+    // the area's outline again over the tracks, which may hide it
+    let first = if outline.is_static {
+        Some(0.0)
+    } else {
+        all_entries.first().copied()
+    };
+    if let Some(r) = first.and_then(|t| outline.at(t)) {
+        let style = format!("fill=\"none\" stroke=\"{area_colour}\" stroke-width=\"1.5\"");
+        rings_path(&mut body, &f, &r, &style);
+    }
     body.push_str("</g>\n");
     place_labels(&mut body, &mut placer, &f, &labels);
-    let rows = met
-        .iter()
-        .enumerate()
-        .map(|(i, m)| Row {
-            label: mover_name(&m.other.id, m.other.callsign.as_deref()),
-            colour: (COLOURS[colour(i)], colour(i)),
-            inside: &m.encounter.inside,
-            near: &m.encounter.near,
-            gaps: &m.encounter.gaps,
-        })
-        .collect();
+    let rows = rows_of(met, |t| mover_name(&t.id, t.callsign.as_deref()), colour);
     let mut notes = vec!["colours: movers in turn; the area in blue".to_owned()];
     if dense > 0 {
         notes.push(format!(

@@ -284,3 +284,29 @@ pub(super) fn hatches(out: &mut String, palette: &[&str]) {
     }
     out.push_str("</defs>\n");
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The axis's step is the first round step that keeps ticks apart, and clock labels
+    /// are UTC hours and minutes (seconds too under a minute's step).
+    #[test]
+    fn ticks_are_round_and_clocks_are_utc() {
+        let axis = Axis {
+            left: 0.0,
+            top: 0.0,
+            width: 640.0,
+            t: [0.0, 3600.0],
+        };
+        // 10 ticks at most in 640 pixels: a step of at least 360 s, so 600 s
+        assert_eq!(step(&axis), 600.0);
+        assert_eq!(clock(1_633_613_562.0, false), "13:32");
+        assert_eq!(clock(1_633_613_562.0, true), "13:32:42");
+        // a span too short to see is drawn MIN_BAR_PX wide about its place
+        let (x, w) = axis.bar(1800.0, 1800.0).expect("on the axis");
+        assert_eq!(w, MIN_BAR_PX);
+        assert!((x + w / 2.0 - axis.x(1800.0)).abs() < 1e-9);
+        assert!(axis.bar(4000.0, 5000.0).is_none());
+    }
+}

@@ -238,3 +238,101 @@ pub(super) fn line(out: &mut String, f: &Frame, pts: &[P], style: &str, title: &
         super::esc(title)
     );
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::moving::model::{Fix, Keyframe};
+
+    /// A fix at `t` s on the equator at `lon` degrees.
+    fn fix(t: f64, lon: f64) -> Fix {
+        Fix {
+            t,
+            lon,
+            lat: 0.0,
+            alt_ft: None,
+        }
+    }
+
+    /// A square of side 1° whose west edge is at `lon`, on the equator.
+    fn square(lon: f64) -> Vec<Rings> {
+        vec![Rings {
+            outer: vec![[lon, 0.0], [lon + 1.0, 0.0], [lon + 1.0, 1.0], [lon, 1.0]],
+            holes: vec![],
+        }]
+    }
+
+    /// A stretch starts and ends at the positions interpolated in time, holds the fixes
+    /// between, and is cut at a gap into one line per segment.
+    #[test]
+    fn a_stretch_is_interpolated_and_cut_at_gaps() {
+        let traj = Trajectory {
+            id: "m".into(),
+            callsign: None,
+            fixes: vec![
+                fix(0.0, 0.0),
+                fix(10.0, 1.0),
+                fix(20.0, 2.0),
+                fix(200.0, 3.0),
+                fix(210.0, 4.0),
+            ],
+        };
+        let tr = Track::new(&traj, Geodesy::Sphere, 60.0, 0.0);
+        assert_eq!(tr.segments, vec![0..3, 3..5]);
+        let one = tr.stretch(5.0, 15.0);
+        assert_eq!(one.len(), 1);
+        let lons: Vec<f64> = one[0].iter().map(|p| p[0].to_degrees()).collect();
+        assert_eq!(lons.len(), 3);
+        for (got, want) in lons.iter().zip([0.5, 1.0, 1.5]) {
+            assert!((got - want).abs() < 1e-12, "{lons:?}");
+        }
+        assert_eq!(
+            tr.stretch(15.0, 205.0).len(),
+            2,
+            "one line each side of the gap"
+        );
+        assert!(tr.point(100.0).is_none(), "nowhere in a gap");
+        assert_eq!(tr.gaps().len(), 1);
+    }
+
+    /// Across the antimeridian a track goes on eastward rather than jumping back.
+    #[test]
+    fn a_track_is_unwrapped_across_the_antimeridian() {
+        let traj = Trajectory {
+            id: "m".into(),
+            callsign: None,
+            fixes: vec![fix(0.0, 179.5), fix(10.0, -179.5)],
+        };
+        let tr = Track::new(&traj, Geodesy::Sphere, 60.0, 179.5);
+        assert!((tr.p[1][0].to_degrees() - 180.5).abs() < 1e-9);
+    }
+
+    /// A keyframed area halfway between two keyframes is halfway between their
+    /// vertices, and exists only from its first keyframe to its last.
+    #[test]
+    fn a_keyframed_outline_moves_linearly_between_keyframes() {
+        let area = Area {
+            id: "a".into(),
+            name: None,
+            shape: Shape::Keyframed(vec![
+                Keyframe {
+                    t: 0.0,
+                    parts: square(0.0),
+                },
+                Keyframe {
+                    t: 100.0,
+                    parts: square(2.0),
+                },
+            ]),
+            floor_ft: None,
+            ceiling_ft: None,
+        };
+        let o = Outline::new(&area, Geodesy::Sphere, 0.0);
+        let mid = o.at(50.0).expect("exists at 50 s");
+        assert!((mid[0][0][0].to_degrees() - 1.0).abs() < 1e-12);
+        assert!(o.at(-1.0).is_none() && o.at(101.0).is_none());
+        assert!(o.at(100.0).is_some());
+        let b = o.bbox();
+        assert!((b[2].to_degrees() - 3.0).abs() < 1e-12, "{b:?}");
+    }
+}

@@ -56,20 +56,22 @@ pub struct EncountersArgs {
     /// No summary on standard error.
     #[arg(long)]
     pub quiet: bool,
-    /// Also draw a picture to FILE (SVG): a map on the Mercator plane (the track, the
-    /// areas, the stretches inside drawn thick and near as a halo, possible ones dashed,
-    /// gaps dotted, the first loss of separation ringed) and a timeline in UTC with one
-    /// row per pair met. It shows one mover (`--svg-mover`), one area (`--svg-area`), or
-    /// without either the first mover that meets an area. The answer is written as
-    /// without --svg.
+    /// Also draw a picture to FILE (SVG) of one mover (`--svg-mover`), one area
+    /// (`--svg-area`), or without either the first mover that meets an area: a map on
+    /// the Mercator plane (tracks, areas, the stretches inside drawn thick and near as a
+    /// halo, possible ones dashed, gaps dotted, each first loss of separation ringed in
+    /// red) and a timeline in UTC, one row per pair met in the order of their first loss
+    /// of separation. The answer is still written (standard output or --output).
     #[arg(long, value_name = "FILE")]
     pub svg: Option<PathBuf>,
     /// With --svg: draw the mover of this id (or, when no id matches, this callsign) and
-    /// every area it meets, one timeline row per area.
+    /// every area it meets, one timeline row per area. An unknown ID is refused (exit 2)
+    /// before any answer, naming some ids there are.
     #[arg(long = "svg-mover", value_name = "ID", requires = "svg")]
     pub svg_mover: Option<String>,
     /// With --svg: draw the area of this id and every mover that meets it, one timeline
-    /// row per mover (the first 40; the rest are counted).
+    /// row per mover (the first 40; the rest are counted). An unknown ID is refused
+    /// (exit 2) before any answer, naming some ids there are.
     #[arg(
         long = "svg-area",
         value_name = "ID",

@@ -174,6 +174,14 @@ pub(super) fn timeline(
     shown: usize,
     shared_gaps: bool,
 ) -> f64 {
+    if rows.is_empty() {
+        let _ = writeln!(
+            out,
+            "<text x=\"{:.2}\" y=\"{:.2}\" fill=\"#555\">nothing met: no timeline</text>",
+            axis.left, axis.top
+        );
+        return 8.0;
+    }
     let n = rows.len().min(shown);
     ticks(out, axis, n);
     let shade = |out: &mut String, g: &[f64; 2], y: f64, h: f64| {

@@ -15,6 +15,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use super::conflicts::GeodesyArg;
+use super::encounters_svg;
 
 /// Exit code when some features or rows were rejected (the others are answered).
 const EXIT_BAD_INPUT: u8 = 1;
@@ -53,6 +54,40 @@ pub struct EncountersArgs {
     /// No summary on standard error.
     #[arg(long)]
     pub quiet: bool,
+    /// Also draw a picture to FILE (SVG) of one mover (`--svg-mover`), one area
+    /// (`--svg-area`), or without either the first mover that meets an area: a map on
+    /// the Mercator plane (tracks, areas, the stretches inside drawn thick and near as a
+    /// halo, possible ones dashed, gaps dotted, each first loss of separation ringed in
+    /// red) and a timeline in UTC, one row per pair met in the order of their first loss
+    /// of separation. The answer is still written (standard output or --output).
+    #[arg(long, value_name = "FILE")]
+    pub svg: Option<PathBuf>,
+    /// With --svg: draw the mover of this id (or, when no id matches, this callsign) and
+    /// every area it meets, one timeline row per area. An unknown ID is refused (exit 2)
+    /// before any answer, naming some ids there are.
+    #[arg(long = "svg-mover", value_name = "ID", requires = "svg")]
+    pub svg_mover: Option<String>,
+    /// With --svg: draw the area of this id and every mover that meets it, one timeline
+    /// row per mover (the first 40; the rest are counted). An unknown ID is refused
+    /// (exit 2) before any answer, naming some ids there are.
+    #[arg(
+        long = "svg-area",
+        value_name = "ID",
+        requires = "svg",
+        conflicts_with = "svg_mover"
+    )]
+    pub svg_area: Option<String>,
+}
+
+impl EncountersArgs {
+    /// What the picture flags ask for.
+    fn svg_ask(&self) -> encounters_svg::Ask<'_> {
+        encounters_svg::Ask {
+            file: self.svg.as_deref(),
+            mover: self.svg_mover.as_deref(),
+            area: self.svg_area.as_deref(),
+        }
+    }
 }
 
 /// The text of `path` (`-`: standard input), or a message.
@@ -180,6 +215,11 @@ pub fn run(a: &EncountersArgs) -> ExitCode {
         max_gap_s: a.max_gap,
         geodesy: a.geodesy.into(),
     };
+    // an unknown id to draw stops before any answer
+    if let Err(e) = encounters_svg::focus(a.svg_ask(), &inp.movers, &inp.areas) {
+        eprintln!("polyguard encounters: {e}");
+        return ExitCode::from(EXIT_FATAL);
+    }
     let (areas, area_errors) = Areas::new(&inp.areas, opts.geodesy);
     inp.errors
         .extend(area_errors.iter().map(|e| format!("area {e}")));
@@ -199,6 +239,10 @@ pub fn run(a: &EncountersArgs) -> ExitCode {
         return ExitCode::from(EXIT_FATAL);
     };
     if out.flush().is_err() {
+        return ExitCode::from(EXIT_FATAL);
+    }
+    if let Err(e) = encounters_svg::write(a.svg_ask(), &inp.movers, &inp.areas, &areas, &opts) {
+        eprintln!("polyguard encounters: --svg: {e}");
         return ExitCode::from(EXIT_FATAL);
     }
     for w in &inp.warnings {

@@ -9,4 +9,5 @@ pub mod detect;
 pub mod detect_batch;
 pub mod detect_earth;
 pub mod encounters;
+pub mod encounters_svg;
 pub mod generate;

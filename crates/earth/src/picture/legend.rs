@@ -26,14 +26,14 @@ fn wrap(text: &str) -> Vec<String> {
 }
 
 /// A legend entry's sample: a box or a line, in an SVG style.
-enum Sample {
+pub(super) enum Sample {
     Boxed(String),
     Lined(String),
 }
 
 /// The legend's entries: a sample and what it stands for (stage 1's boxes and stage 3's
 /// projections too with `detail`).
-fn entries(detail: bool) -> Vec<(Sample, &'static str)> {
+pub(super) fn entries(detail: bool) -> Vec<(Sample, &'static str)> {
     let c0 = PALETTE[0];
     let mut out = vec![
         (
@@ -81,13 +81,15 @@ fn entries(detail: bool) -> Vec<(Sample, &'static str)> {
     out
 }
 
-/// The legend at (`x`, `y`) (its top-left corner): the samples ([`entries`]), then
-/// `notes`. Its height (pixels).
-pub(super) fn legend(out: &mut String, (x, y): (f64, f64), detail: bool, notes: &[String]) -> f64 {
-    let entries = entries(detail);
-    let lines: Vec<String> = std::iter::once("colours: features in turn".to_owned())
-        .chain(notes.iter().flat_map(|n| wrap(n)))
-        .collect();
+/// The legend at (`x`, `y`) (its top-left corner): the samples `entries` (each with what
+/// it stands for), then `notes`. Its height (pixels).
+pub(super) fn legend(
+    out: &mut String,
+    (x, y): (f64, f64),
+    entries: &[(Sample, String)],
+    notes: &[String],
+) -> f64 {
+    let lines: Vec<String> = notes.iter().flat_map(|n| wrap(n)).collect();
     let height = 22.0 + 30.0 * entries.len() as f64 + 15.0 * lines.len() as f64 + 4.0;
     let _ = writeln!(
         out,
@@ -97,7 +99,7 @@ pub(super) fn legend(out: &mut String, (x, y): (f64, f64), detail: bool, notes: 
     );
     let sx = x + 10.0;
     let mut ly = y + 22.0;
-    for (sample, text) in &entries {
+    for (sample, text) in entries {
         let _ = match sample {
             Sample::Boxed(style) => write!(
                 out,
@@ -112,9 +114,10 @@ pub(super) fn legend(out: &mut String, (x, y): (f64, f64), detail: bool, notes: 
         };
         let _ = writeln!(
             out,
-            "<text x=\"{:.2}\" y=\"{:.2}\">{text}</text>",
+            "<text x=\"{:.2}\" y=\"{:.2}\">{}</text>",
             x + 48.0,
-            ly + 4.0
+            ly + 4.0,
+            super::esc(text)
         );
         ly += 30.0;
     }

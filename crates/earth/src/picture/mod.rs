@@ -12,13 +12,17 @@
 //! - `labels`: the labels placed without overlap, inside their panel;
 //! - `legend`: what each thing drawn is, and what the picture leaves out.
 
+mod encounters;
 mod frame;
 mod grid;
 mod labels;
 mod layout;
 mod legend;
 mod scene;
+mod timeline;
+mod track_map;
 
+pub use encounters::{area_svg, mover_svg, Met};
 pub use labels::Placed;
 
 use crate::conflict::{pipeline, Object};
@@ -211,7 +215,14 @@ fn page(
 ) -> String {
     let legend_at = (ORIGIN.0 + layout.size.0 + 12.0, 40.0);
     let mut legend = String::new();
-    let legend_h = legend::legend(&mut legend, legend_at, detail, notes);
+    let entries: Vec<(legend::Sample, String)> = legend::entries(detail)
+        .into_iter()
+        .map(|(s, t)| (s, t.to_owned()))
+        .collect();
+    let notes: Vec<String> = std::iter::once("colours: features in turn".to_owned())
+        .chain(notes.iter().cloned())
+        .collect();
+    let legend_h = legend::legend(&mut legend, legend_at, &entries, &notes);
     let total_w = legend_at.0 + legend::WIDTH;
     let total_h = (ORIGIN.1 + layout.size.1 + 16.0).max(legend_at.1 + legend_h + 16.0);
     let mut out = format!(

@@ -268,11 +268,24 @@ fn a_large_ring_is_answered_through_its_clips() {
     comb.push([0.0, 0.0]);
     let comb: Vec<[f64; 2]> = comb.into_iter().rev().collect();
     assert!(comb.len() > 100);
-    let fixes: Vec<PlaneFix> = (0..=170).map(|k| fix(k as f64 * 0.5, -1.0 + k as f64 * 0.5, 5.0)).collect();
+    let fixes: Vec<PlaneFix> = (0..=170)
+        .map(|k| fix(k as f64 * 0.5, -1.0 + k as f64 * 0.5, 5.0))
+        .collect();
     let area = stat(vec![rings(comb, vec![])]);
-    let inside: Vec<(f64, f64)> = (0..40).map(|i| (2.0 * i as f64 + 1.0, 2.0 * i as f64 + 2.0)).collect();
-    assert_contract(&plane_spans(&fixes, &area, PlaneRelation::Inside).unwrap(), &inside);
-    let near = PlaneRelation::Near { d_lo: 0.25, d_hi: 0.25, h: 0.0 };
-    let within: Vec<(f64, f64)> = (0..40).map(|i| (2.0 * i as f64 + 0.75, 2.0 * i as f64 + 2.25)).collect();
+    let inside: Vec<(f64, f64)> = (0..40)
+        .map(|i| (2.0 * i as f64 + 1.0, 2.0 * i as f64 + 2.0))
+        .collect();
+    assert_contract(
+        &plane_spans(&fixes, &area, PlaneRelation::Inside).unwrap(),
+        &inside,
+    );
+    let near = PlaneRelation::Near {
+        d_lo: 0.25,
+        d_hi: 0.25,
+        h: 0.0,
+    };
+    let within: Vec<(f64, f64)> = (0..40)
+        .map(|i| (2.0 * i as f64 + 0.75, 2.0 * i as f64 + 2.25))
+        .collect();
     assert_contract(&plane_spans(&fixes, &area, near).unwrap(), &within);
 }

@@ -505,6 +505,85 @@ impl FarCache {
     }
 }
 
+/// One piece's data, as [`piece_timeline`] works it out for its rings.
+struct Piece {
+    t0: f64,
+    t1: f64,
+    h: f64,
+    look: f64,
+    s: Vect2,
+    v: Vect2,
+    a0: [f64; 2],
+    a1: [f64; 2],
+    dp: f64,
+    c: f64,
+    m: Margins,
+}
+
+/// Ring `ring` of part `k` over the piece: constant from its exact winding number when the
+/// piece is far from it (static rings: the edge tree; moving ones: their swept boxes),
+/// else the module doc's sandwich by the engine on the ring (clipped to a box around
+/// the piece when it is large and static).
+fn ring_piece(
+    pc: &Piece,
+    cache: &mut FarCache,
+    area: &PlaneArea,
+    prepared: &Prepared,
+    k: usize,
+    ring: usize,
+) -> Timeline {
+    let frame0 = &area.frames[0];
+    let hole = ring > 0;
+    let (d_lo, d_hi) = (pc.m.d_lo, pc.m.d_hi);
+    let set = if hole {
+        RingSet::Hole { d_lo, d_hi }
+    } else {
+        RingSet::Outer { d_lo, d_hi }
+    };
+    // Static rings: δ_v is the projection's alone; the reach covers every set.
+    let reach = next_up(d_hi.max(0.0) + (pc.dp + pc.m.extra_area) * (1.0 + 8.0 * U));
+    match prepared.far_from(k, ring, pc.a0, pc.a1, reach) {
+        Some(true) => {
+            let val = cache.value(k, ring, pc.t0, pc.t1, || {
+                far_value(area, k, ring, pc.a0, hole)
+            });
+            Timeline::constant(0.0, pc.look, val)
+        }
+        Some(false) if ring_of(frame0, k, ring).len() > CLIP_MIN_VERTICES => {
+            cache.forget(k, ring);
+            // A clipped vertex lies within 8u·c of its edge (`clip_ring`); twice that.
+            let dv = 16.0 * U * pc.c;
+            let delta = (pc.dp + dv + pc.m.extra_area) * (1.0 + 8.0 * U);
+            let reach = next_up(d_hi.max(0.0) + delta);
+            let p = cache.clip(area, k, ring, pc.a0, pc.a1, reach);
+            if p.len() < 3 {
+                // Nothing of the ring within twice the reach: constant, as far.
+                let val = far_value(area, k, ring, pc.a0, hole);
+                Timeline::constant(0.0, pc.look, val)
+            } else {
+                let r = StandIn {
+                    p: (*p).clone(),
+                    vels: vec![Vect2::new(0.0, 0.0); p.len()],
+                };
+                ring_timeline(pc.look, pc.s, pc.v, &r, set, delta)
+            }
+        }
+        _ => {
+            cache.forget(k, ring);
+            let (r, dv) = stand_in(area, k, ring, pc.t0, pc.t1, pc.h);
+            // δ summed in f64 (a few terms): relative rounding below 1e-15, covered.
+            let delta = (pc.dp + dv + pc.m.extra_area) * (1.0 + 8.0 * U);
+            let reach = next_up(d_hi.max(0.0) + delta);
+            if swept_far(&r, pc.look, pc.a0, pc.a1, reach) {
+                let w = winding_of(&r.p, pc.a0);
+                Timeline::constant(0.0, pc.look, if hole { w.negated() } else { w })
+            } else {
+                ring_timeline(pc.look, pc.s, pc.v, &r, set, delta)
+            }
+        }
+    }
+}
+
 /// The timeline of `relation` over the piece [t0, t1] (t0 < t1), in global time: each
 /// ring's sandwich (or its constant value when the piece is far from it), the region ∨
 /// over parts of (outer ∧ holes), ∧ the vertical condition, moved to t0 with outward
@@ -548,56 +627,23 @@ pub(super) fn piece_timeline(
     } else {
         &[]
     };
+    let pc = Piece {
+        t0,
+        t1,
+        h,
+        look,
+        s,
+        v,
+        a0,
+        a1,
+        dp,
+        c,
+        m,
+    };
     for (k, part) in parts.iter().enumerate() {
         let mut tl: Option<Timeline> = None;
         for ring in 0..=part.holes.len() {
-            let hole = ring > 0;
-            let (d_lo, d_hi) = (m.d_lo, m.d_hi);
-            let set = if hole {
-                RingSet::Hole { d_lo, d_hi }
-            } else {
-                RingSet::Outer { d_lo, d_hi }
-            };
-            // Static rings: δ_v is the projection's alone; the reach covers every set.
-            let reach = next_up(d_hi.max(0.0) + (dp + m.extra_area) * (1.0 + 8.0 * U));
-            let r_tl = match prepared.far_from(k, ring, a0, a1, reach) {
-                Some(true) => {
-                    let v = cache.value(k, ring, t0, t1, || far_value(area, k, ring, a0, hole));
-                    Timeline::constant(0.0, look, v)
-                }
-                Some(false) if ring_of(frame0, k, ring).len() > CLIP_MIN_VERTICES => {
-                    cache.forget(k, ring);
-                    // A clipped vertex lies within 8u·c of its edge (`clip_ring`); twice that.
-                    let dv = 16.0 * U * c;
-                    let delta = (dp + dv + m.extra_area) * (1.0 + 8.0 * U);
-                    let reach = next_up(d_hi.max(0.0) + delta);
-                    let p = cache.clip(area, k, ring, a0, a1, reach);
-                    if p.len() < 3 {
-                        // Nothing of the ring within twice the reach: constant, as far.
-                        let v = far_value(area, k, ring, a0, hole);
-                        Timeline::constant(0.0, look, v)
-                    } else {
-                        let r = StandIn {
-                            p: (*p).clone(),
-                            vels: vec![Vect2::new(0.0, 0.0); p.len()],
-                        };
-                        ring_timeline(look, s, v, &r, set, delta)
-                    }
-                }
-                _ => {
-                    cache.forget(k, ring);
-                    let (r, dv) = stand_in(area, k, ring, t0, t1, h);
-                    // δ summed in f64 (a few terms): relative rounding below 1e-15, covered.
-                    let delta = (dp + dv + m.extra_area) * (1.0 + 8.0 * U);
-                    let reach = next_up(d_hi.max(0.0) + delta);
-                    if swept_far(&r, look, a0, a1, reach) {
-                        let w = winding_of(&r.p, a0);
-                        Timeline::constant(0.0, look, if hole { w.negated() } else { w })
-                    } else {
-                        ring_timeline(look, s, v, &r, set, delta)
-                    }
-                }
-            };
+            let r_tl = ring_piece(&pc, cache, area, prepared, k, ring);
             tl = Some(match tl {
                 None => r_tl,
                 Some(t) => t.and(&r_tl),

@@ -12,7 +12,7 @@
 //! the piece is paper A's case of a point s + τ·v and a polygon p_i + τ·v_i over
 //! τ ∈ [0, h] (§II for a rigid translation, §II.I for a warping polygon), with s, p_i
 //! the exact positions at t_k and v, v_i the exact differences to t_{k+1} over h. On
-//! each ring the oracle's [`intervals`](crate::intervals::intervals) gives the exact
+//! each ring the oracle's [`crate::intervals::intervals`] gives the exact
 //! components in 2D: the outer ring with inside (D = 0) or near_D, each hole with
 //! breach_D (breach_0: not in the hole's open interior), so that
 //! - region(τ) = ∨_parts [outer ∧ ∧_holes breach(hole)] (the closed outer minus the open

@@ -477,7 +477,7 @@ fn around(outline: &Outline, opts: &Options) -> Frame {
 }
 
 /// The picture of one area and every mover that meets it (`met`; the timeline shows the
-/// first [`MAX_ROWS`]), with the options the encounters were answered with, as an SVG
+/// first `MAX_ROWS`, 40), with the options the encounters were answered with, as an SVG
 /// document. The map shows the area and the movers near it.
 pub fn area_svg(area: &Area, met: &[Met<Trajectory>], opts: &Options) -> String {
     let met = &by_first_loss(met);

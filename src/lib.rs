@@ -107,6 +107,8 @@ pub mod error;
 pub mod fence;
 pub mod intervals;
 mod motion;
+#[cfg(feature = "std")]
+pub mod offset;
 #[cfg(feature = "plain")]
 pub mod plain;
 pub mod polygon;

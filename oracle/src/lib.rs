@@ -63,6 +63,7 @@ pub mod field;
 pub mod intervals;
 pub mod kernel;
 pub mod moving;
+pub mod offset;
 pub mod proximity;
 pub mod qfield;
 pub mod quad;

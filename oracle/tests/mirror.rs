@@ -1,7 +1,7 @@
 //! The oracle mirrors the engine's names, module by module. For each of paper A's
 //! modules (quad, contain, proximity, detect with every file of its folder, well_formed,
 //! ring) and of the modules built on them (intervals and fence: the times inside, near and
-//! breaching, and keep-in exits), walked as files in both crates and paired by module path (`detect::same` is
+//! breaching, keep-in exits, and offsets), walked as files in both crates and paired by module path (`detect::same` is
 //! src/detect/same.rs), every `pub fn` of the engine's module has a `pub fn` of the same
 //! name in the oracle's module of the same path, with the same parameter names in the
 //! same order. The oracle's paper functions are generic over a kernel and take it first,
@@ -19,7 +19,7 @@ use std::path::Path;
 
 /// Paper A's modules, by their names in both crates: a file `<name>.rs`, or a folder
 /// `<name>/` whose files are its submodules.
-const MODULES: [&str; 8] = [
+const MODULES: [&str; 9] = [
     "quad",
     "contain",
     "proximity",
@@ -28,6 +28,7 @@ const MODULES: [&str; 8] = [
     "ring",
     "intervals",
     "fence",
+    "offset",
 ];
 
 /// The name of a test module, skipped by the walk.
@@ -38,7 +39,22 @@ const KERNEL_PARAM: &str = "k";
 
 /// Engine modules with no oracle counterpart, each for its reason. Each must exist in
 /// the engine and not in the oracle (a stale entry fails the test).
-const ENGINE_ONLY_MODULES: [(&str, &str); 4] = [
+const ENGINE_ONLY_MODULES: [(&str, &str); 7] = [
+    (
+        "offset::raw",
+        "the f64 construction region (strips and circumscribed fans); the oracle checks a \
+         result against the true sets and builds none",
+    ),
+    (
+        "offset::arrange",
+        "the f64 arrangement that extracts the construction's boundary; the oracle builds \
+         no polygon",
+    ),
+    (
+        "offset::certify",
+        "the engine's certificate on balls; the oracle decides the same properties exactly \
+         (Buffer::check)",
+    ),
     (
         "detect::roots",
         "float enclosures of the roots of dot_nn_lin's quadratics; the oracle's roots are \

@@ -147,21 +147,40 @@ pub fn point_segment_sq(x: &V2<Q>, a: &V2<Q>, b: &V2<Q>) -> Q {
     }
 }
 
-/// The squared distance between two closed segments: 0 when they meet, else the least
-/// of the four end-to-segment distances.
-fn segment_segment_sq(a: &V2<Q>, b: &V2<Q>, c: &V2<Q>, d: &V2<Q>) -> Q {
-    if segments_meet(a, b, c, d) {
-        return Q::zero();
+/// dist(x, [a, b])² ≤ r2, exactly, without a division: the line's case compares
+/// |w|²·|e|² − (w·e)² with r2·|e|².
+fn point_segment_within(x: &V2<Q>, a: &V2<Q>, b: &V2<Q>, r2: &Q) -> bool {
+    let (w, e) = (x.minus(a), b.minus(a));
+    let (t, ee) = (w.dot(&e), e.sq());
+    if !t.is_pos() {
+        w.sq() <= *r2
+    } else if t >= ee {
+        x.minus(b).sq() <= *r2
+    } else {
+        w.sq() * &ee - &t * &t <= r2 * &ee
     }
-    [
-        point_segment_sq(a, c, d),
-        point_segment_sq(b, c, d),
-        point_segment_sq(c, a, b),
-        point_segment_sq(d, a, b),
-    ]
-    .into_iter()
-    .min()
-    .unwrap_or_else(Q::zero)
+}
+
+/// The closed segments are at distance < r (r2 = r²): they meet, or an end of one is
+/// closer than r to the other (the least distance of two disjoint segments is attained
+/// at an end of one of them).
+fn segments_closer(a: &V2<Q>, b: &V2<Q>, c: &V2<Q>, d: &V2<Q>, r2: &Q) -> bool {
+    let closer = |x: &V2<Q>, p: &V2<Q>, q: &V2<Q>| {
+        let (w, e) = (x.minus(p), q.minus(p));
+        let (t, ee) = (w.dot(&e), e.sq());
+        if !t.is_pos() {
+            w.sq() < *r2
+        } else if t >= ee {
+            x.minus(q).sq() < *r2
+        } else {
+            w.sq() * &ee - &t * &t < r2 * &ee
+        }
+    };
+    segments_meet(a, b, c, d)
+        || closer(a, c, d)
+        || closer(b, c, d)
+        || closer(c, a, b)
+        || closer(d, a, b)
 }
 
 /// The winding number of a ring about x and whether x is on it (exact).
@@ -186,15 +205,29 @@ fn winding_about(ring: &[V2<Q>], x: &V2<Q>) -> (i32, bool) {
 /// Whether x lies in the closed region of the result (rings given as f64 points):
 /// on a ring, or with a non-zero sum of winding numbers. Exact.
 pub fn locate(regions: &[Region], x: &V2<Q>) -> Result<bool, OracleError> {
+    Ok(locate_in(&exact_rings(regions)?, x))
+}
+
+/// Every ring of the result (outer rings and holes), exactly.
+pub fn exact_rings(regions: &[Region]) -> Result<Vec<Vec<V2<Q>>>, OracleError> {
+    regions
+        .iter()
+        .flat_map(|r| core::iter::once(&r.outer).chain(&r.holes))
+        .map(|ring| exact_ring(ring, "regions"))
+        .collect()
+}
+
+/// [`locate`] on rings already made exact ([`exact_rings`]).
+pub fn locate_in(rings: &[Vec<V2<Q>>], x: &V2<Q>) -> bool {
     let mut total = 0;
-    for ring in regions.iter().flat_map(|r| core::iter::once(&r.outer).chain(&r.holes)) {
-        let (w, on) = winding_about(&exact_ring(ring, "regions")?, x);
+    for ring in rings {
+        let (w, on) = winding_about(ring, x);
         if on {
-            return Ok(true);
+            return true;
         }
         total += w;
     }
-    Ok(total != 0)
+    total != 0
 }
 
 /// The interval {s ∈ [lo, hi] : a·s² + b·s + c ≤ 0} for a > 0, or `None` if empty.
@@ -208,13 +241,18 @@ fn quad_below(a: &Q, b: &Q, c: &Q) -> Option<(Alg<Q>, Alg<Q>)> {
 }
 
 /// The intersection of two closed intervals (`None` if empty).
-fn meet(
-    x: Option<(Alg<Q>, Alg<Q>)>,
-    y: Option<(Alg<Q>, Alg<Q>)>,
-) -> Option<(Alg<Q>, Alg<Q>)> {
+fn meet(x: Option<(Alg<Q>, Alg<Q>)>, y: Option<(Alg<Q>, Alg<Q>)>) -> Option<(Alg<Q>, Alg<Q>)> {
     let ((a, b), (c, d)) = (x?, y?);
-    let lo = if a.cmp_alg(&c) == Ordering::Less { c } else { a };
-    let hi = if b.cmp_alg(&d) == Ordering::Less { b } else { d };
+    let lo = if a.cmp_alg(&c) == Ordering::Less {
+        c
+    } else {
+        a
+    };
+    let hi = if b.cmp_alg(&d) == Ordering::Less {
+        b
+    } else {
+        d
+    };
     (lo.cmp_alg(&hi) != Ordering::Greater).then_some((lo, hi))
 }
 
@@ -232,14 +270,7 @@ fn linear_in(
         return inside.then_some(whole);
     }
     // s = (end − α)/β, for end = (p + q√d)/r: (p − α r + q√d)/(r β).
-    let at = |e: &Alg<Q>| {
-        Alg::new(
-            &e.p - alpha * &e.r,
-            e.q.clone(),
-            e.d.clone(),
-            &e.r * beta,
-        )
-    };
+    let at = |e: &Alg<Q>| Alg::new(&e.p - alpha * &e.r, e.q.clone(), e.d.clone(), &e.r * beta);
     let (s0, s1) = (at(lo)?, at(hi)?);
     Some(if beta.is_pos() { (s0, s1) } else { (s1, s0) })
 }
@@ -248,7 +279,10 @@ impl Buffer {
     fn new(p: Vec<V2<Q>>, d: f64, eps: f64, side: Side) -> Result<Buffer, OracleError> {
         if p.len() < 3 || check_simple(&p).is_err() || winding(&p) != Ok(Winding::Counterclockwise)
         {
-            return Err(OracleError::new("p", "not a simple counterclockwise polygon"));
+            return Err(OracleError::new(
+                "p",
+                "not a simple counterclockwise polygon",
+            ));
         }
         let d = exact(d, "d")?;
         let eps = exact(eps, "eps")?;
@@ -296,9 +330,17 @@ impl Buffer {
     }
 
     fn inside_at(&self, x: &V2<Q>, r: &Q) -> bool {
+        let r2 = r * r;
+        let near = |strict: bool| {
+            self.edges().any(|(a, b)| {
+                let within = point_segment_within(x, a, b, &r2);
+                // dist < r: within r and not exactly at r (dist² ≤ r² but not ≥ r²).
+                within && (!strict || !point_segment_sq(x, a, b).ge(&r2))
+            })
+        };
         match self.side {
-            Side::Out => self.in_p(x) || self.boundary_sq(x) <= r * r,
-            Side::In => self.in_p(x) && self.boundary_sq(x) >= r * r,
+            Side::Out => self.in_p(x) || near(false),
+            Side::In => self.in_p(x) && !near(true),
         }
     }
 
@@ -315,18 +357,26 @@ impl Buffer {
         Ok(Verdict {
             rings: self.rings_valid(regions, &rings),
             clear: self.clear(regions, &all)?,
-            close: all.iter().all(|r| self.ring_close(r)),
+            close: {
+                let pf = floats(&self.p);
+                all.iter().all(|r| self.ring_close(r, &pf))
+            },
         })
     }
 
     fn rings_valid(&self, regions: &[Region], rings: &[(bool, Vec<V2<Q>>)]) -> bool {
+        let all: Vec<Vec<V2<Q>>> = rings.iter().map(|(_, r)| r.clone()).collect();
+        let fl: Vec<Vec<[f64; 2]>> = all.iter().map(|r| floats(r)).collect();
+        if rings.iter().any(|(_, r)| r.len() < 3) || !rings_disjoint(&all, &fl) {
+            return false;
+        }
         let oriented = rings.iter().all(|(outer, r)| {
             let want = if *outer {
                 Winding::Counterclockwise
             } else {
                 Winding::Clockwise
             };
-            r.len() >= 3 && check_simple(r).is_ok() && winding(r) == Ok(want)
+            winding(r) == Ok(want)
         });
         if !oriented {
             return false;
@@ -342,31 +392,23 @@ impl Buffer {
                 k += 1;
             }
         }
-        for i in 0..rings.len() {
-            for j in i + 1..rings.len() {
-                let (ri, rj) = (&rings[i].1, &rings[j].1);
-                for a in 0..ri.len() {
-                    for b in 0..rj.len() {
-                        let (p, q) = (&ri[a], &ri[(a + 1) % ri.len()]);
-                        let (r, s) = (&rj[b], &rj[(b + 1) % rj.len()]);
-                        if boxes_meet(p, q, r, s) && segments_meet(p, q, r, s) {
-                            return false;
-                        }
-                    }
-                }
-            }
-        }
         true
     }
 
     fn clear(&self, regions: &[Region], rings: &[Vec<V2<Q>>]) -> Result<bool, OracleError> {
         let d2 = &self.d * &self.d;
         let d_float = to_float(&self.d);
+        let pf = floats(&self.p);
+        let n = pf.len();
         for r in rings {
+            let rf = floats(r);
             for i in 0..r.len() {
-                let (a, b) = (&r[i], &r[(i + 1) % r.len()]);
-                for (c, d) in self.edges() {
-                    if !far_apart(a, b, c, d, d_float) && segment_segment_sq(a, b, c, d) < d2 {
+                let i1 = (i + 1) % r.len();
+                let (a, b) = (&r[i], &r[i1]);
+                for (j, (c, d)) in self.edges().enumerate() {
+                    if !far_apart(rf[i], rf[i1], pf[j], pf[(j + 1) % n], d_float)
+                        && segments_closer(a, b, c, d, &d2)
+                    {
                         return Ok(false);
                     }
                 }
@@ -389,14 +431,22 @@ impl Buffer {
     }
 
     /// Every edge of the ring is covered by the capsules of P's edges at L.
-    fn ring_close(&self, r: &[V2<Q>]) -> bool {
-        (0..r.len()).all(|i| self.segment_close(&r[i], &r[(i + 1) % r.len()]))
+    fn ring_close(&self, r: &[V2<Q>], pf: &[[f64; 2]]) -> bool {
+        let rf = floats(r);
+        let n = r.len();
+        (0..n).all(|i| self.segment_close(&r[i], &r[(i + 1) % n], (rf[i], rf[(i + 1) % n]), pf))
     }
 
     /// [a, b] ⊆ ⋃ {dist(·, e) ≤ L} over P's edges e: the parameters s ∈ [0, 1] of
     /// a + s·(b − a) within L of each vertex (a quadratic's roots) and of each edge's
     /// band (linear ends, one with √(L²|e|²)), swept in exact order.
-    fn segment_close(&self, a: &V2<Q>, b: &V2<Q>) -> bool {
+    fn segment_close(
+        &self,
+        a: &V2<Q>,
+        b: &V2<Q>,
+        ab: ([f64; 2], [f64; 2]),
+        pf: &[[f64; 2]],
+    ) -> bool {
         let l = self.limit();
         let l2 = &l * &l;
         let l_float = to_float(&l);
@@ -408,9 +458,20 @@ impl Buffer {
         if ee.is_zero_() {
             return self.boundary_sq(a) <= l2;
         }
+        let n = pf.len();
+        // Enough (the distance to one segment is convex along [a, b]): both ends
+        // within L of one edge.
+        let near = |j: usize, c: &V2<Q>, d: &V2<Q>| {
+            !far_apart(ab.0, ab.1, pf[j], pf[(j + 1) % n], l_float)
+                && point_segment_within(a, c, d, &l2)
+                && point_segment_within(b, c, d, &l2)
+        };
+        if self.edges().enumerate().any(|(j, (c, d))| near(j, c, d)) {
+            return true;
+        }
         let mut spans: Vec<(Alg<Q>, Alg<Q>)> = Vec::new();
-        for (c, d) in self.edges() {
-            if far_apart(a, b, c, d, l_float) {
+        for (j, (c, d)) in self.edges().enumerate() {
+            if far_apart(ab.0, ab.1, pf[j], pf[(j + 1) % n], l_float) {
                 continue;
             }
             // The disc about c: |a − c + s·e|² ≤ L².
@@ -453,33 +514,79 @@ impl Buffer {
     }
 }
 
-/// The boxes of [p, q] and [r, s] share a point (exact: comparisons of the exact
-/// coordinates).
-fn boxes_meet(p: &V2<Q>, q: &V2<Q>, r: &V2<Q>, s: &V2<Q>) -> bool {
-    let mx = |a: &Q, b: &Q| if a > b { a.clone() } else { b.clone() };
-    let mn = |a: &Q, b: &Q| if a < b { a.clone() } else { b.clone() };
-    mx(&p.x, &q.x) >= mn(&r.x, &s.x)
-        && mx(&r.x, &s.x) >= mn(&p.x, &q.x)
-        && mx(&p.y, &q.y) >= mn(&r.y, &s.y)
-        && mx(&r.y, &s.y) >= mn(&p.y, &q.y)
-}
-
 /// A float prefilter that never drops a pair within `r` of each other: the boxes are
 /// more than 2r + 2⁻⁵⁰·m apart along x or y in floats, m the largest |coordinate|.
-/// Each float coordinate is within u·m of its exact value (u = 2⁻⁵³), the gap's
-/// subtraction adds at most u·2m, so the exact gap exceeds the float one less 4u·m; and
-/// r, the nearest float to the exact bound, is at least half of it.
-fn far_apart(a: &V2<Q>, b: &V2<Q>, c: &V2<Q>, d: &V2<Q>, r: f64) -> bool {
-    let f = |v: &V2<Q>| (to_float(&v.x), to_float(&v.y));
-    let ((ax, ay), (bx, by), (cx, cy), (dx, dy)) = (f(a), f(b), f(c), f(d));
-    let gx = (cx.min(dx) - ax.max(bx)).max(ax.min(bx) - cx.max(dx));
-    let gy = (cy.min(dy) - ay.max(by)).max(ay.min(by) - cy.max(dy));
+/// Each float coordinate is within u·m of its exact value (u = 2⁻⁵³; exact for the
+/// result's own points), the gap's subtraction adds at most u·2m, so the exact gap
+/// exceeds the float one less 4u·m; and r, the nearest float to the exact bound, is at
+/// least half of it.
+fn far_apart(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2], r: f64) -> bool {
+    let gx = (c[0].min(d[0]) - a[0].max(b[0])).max(a[0].min(b[0]) - c[0].max(d[0]));
+    let gy = (c[1].min(d[1]) - a[1].max(b[1])).max(a[1].min(b[1]) - c[1].max(d[1]));
     let gap = gx.max(gy);
-    let m = [ax, ay, bx, by, cx, cy, dx, dy]
+    let m = [a, b, c, d]
         .iter()
-        .fold(0.0f64, |m, v| m.max(v.abs()));
+        .fold(0.0f64, |m, v| m.max(v[0].abs()).max(v[1].abs()));
     let rounding = m / 1_125_899_906_842_624.0; // 2⁻⁵⁰·m
     gap.is_finite() && gap > 2.0 * r + rounding
+}
+
+/// The nearest floats of exact points (for prefilters only).
+fn floats(p: &[V2<Q>]) -> Vec<[f64; 2]> {
+    p.iter().map(|v| [to_float(&v.x), to_float(&v.y)]).collect()
+}
+
+/// No two edges of the rings meet, except neighbours of one ring at their common
+/// vertex (without folding back over each other). Pairs are pruned by their boxes
+/// (exact comparisons of the f64 coordinates), swept along x; each remaining pair is
+/// decided exactly.
+fn rings_disjoint(rings: &[Vec<V2<Q>>], floats: &[Vec<[f64; 2]>]) -> bool {
+    // (ring, index, min x, max x, min y, max y)
+    let mut es = Vec::new();
+    for (k, r) in floats.iter().enumerate() {
+        let n = r.len();
+        for i in 0..n {
+            let (a, b) = (r[i], r[(i + 1) % n]);
+            es.push((
+                k,
+                i,
+                a[0].min(b[0]),
+                a[0].max(b[0]),
+                a[1].min(b[1]),
+                a[1].max(b[1]),
+            ));
+        }
+    }
+    es.sort_by(|x, y| x.2.total_cmp(&y.2));
+    for (m, &(k, i, _, hx, ly, hy)) in es.iter().enumerate() {
+        for &(l, j, lx2, _, ly2, hy2) in &es[m + 1..] {
+            if lx2 > hx {
+                break;
+            }
+            if ly2 > hy || ly > hy2 {
+                continue;
+            }
+            let (ri, rj) = (&rings[k], &rings[l]);
+            let (p, q) = (&ri[i], &ri[(i + 1) % ri.len()]);
+            let (r, s) = (&rj[j], &rj[(j + 1) % rj.len()]);
+            let n = ri.len();
+            let neighbours = k == l && ((i + 1) % n == j || (j + 1) % n == i);
+            if neighbours {
+                // Sharing one vertex: they meet elsewhere only when they fold back.
+                let (shared, x, y) = if (i + 1) % n == j {
+                    (q, p, s)
+                } else {
+                    (p, q, r)
+                };
+                if orient(x, shared, y) == 0 && x.minus(shared).dot(&y.minus(shared)).is_pos() {
+                    return false;
+                }
+            } else if segments_meet(p, q, r, s) {
+                return false;
+            }
+        }
+    }
+    true
 }
 
 /// The exact point of an f64 pair (`None` if not finite), for sampling.
@@ -555,7 +662,12 @@ mod tests {
         let mut cw = SQUARE;
         cw.reverse();
         assert_eq!(offset(&cw, 1.0, 0.1).unwrap_err().field, "p");
-        assert_eq!(offset_at(&SQUARE, &[[0.0, 0.0]; 3], 1.0, 1.0, 0.1).unwrap_err().field, "vels");
+        assert_eq!(
+            offset_at(&SQUARE, &[[0.0, 0.0]; 3], 1.0, 1.0, 0.1)
+                .unwrap_err()
+                .field,
+            "vels"
+        );
         let moved = offset_at(&SQUARE, &[[1.0, 0.0]; 4], 2.0, 1.0, 0.1).expect("valid");
         assert_eq!(moved.p[0], exact_point([2.0, 0.0]).expect("finite"));
     }

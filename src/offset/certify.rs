@@ -125,7 +125,11 @@ fn membership(rings: &[&[Vect2]], x: Vect2) -> Result<Loc, OffsetError> {
         }
         total += w;
     }
-    Ok(if total != 0 { Loc::Inside } else { Loc::Outside })
+    Ok(if total != 0 {
+        Loc::Inside
+    } else {
+        Loc::Outside
+    })
 }
 
 /// Checks the result against P (see the parent module's doc): rings disjoint, every
@@ -157,8 +161,7 @@ pub(crate) fn certify(
     let p_edges = || (0..n).map(|j| (p[j], p[(j + 1) % n]));
     for (_, a, b) in edges(&rings) {
         for (c, d) in p_edges() {
-            if !boxes_apart(a, b, c, d, clear_hi) && !segments_at_least(a, b, c, d, bounds.clear)
-            {
+            if !boxes_apart(a, b, c, d, clear_hi) && !segments_at_least(a, b, c, d, bounds.clear) {
                 return Err(fail("an edge of the result is closer than D to P"));
             }
         }
@@ -168,7 +171,9 @@ pub(crate) fn certify(
                 && within(b, c, d, bounds.close)
         });
         if !close {
-            return Err(fail("an edge of the result is farther than D·(1 + ε) from P"));
+            return Err(fail(
+                "an edge of the result is farther than D·(1 + ε) from P",
+            ));
         }
     }
     let at_vertex = membership(&rings, p[0])?;
@@ -177,8 +182,8 @@ pub(crate) fn certify(
         Side::In if at_vertex != Loc::Outside => Err(fail("∂P is not outside the inset")),
         Side::In => {
             for r in regions {
-                let inside = winding_number(p, r.outer[0])
-                    .ok_or(fail("a location over- or underflows"))?;
+                let inside =
+                    winding_number(p, r.outer[0]).ok_or(fail("a location over- or underflows"))?;
                 if inside != (1, false) {
                     return Err(fail("a region of the inset is outside P"));
                 }

@@ -252,13 +252,7 @@ fn at_time(p: &[Vect2], vels: &[Vect2], t: f64) -> Result<(Vec<Vect2>, Vec<f64>)
 
 /// Checks the arguments, builds, certifies. `radii` (empty: exact vertices) are the
 /// vertices' error radii.
-fn build(
-    p: &[Vect2],
-    radii: &[f64],
-    d: f64,
-    eps: f64,
-    side: Side,
-) -> Result<Offset, OffsetError> {
+fn build(p: &[Vect2], radii: &[f64], d: f64, eps: f64, side: Side) -> Result<Offset, OffsetError> {
     if p.len() < 3 {
         return Err(OffsetError::Invalid {
             field: "p",

@@ -89,9 +89,7 @@ impl<'a> Raw<'a> {
             pieces: Vec::new(),
             segs: Vec::new(),
         };
-        let normals: Vec<Vect2> = (0..n)
-            .map(|i| normal(p[i], p[(i + 1) % n], side))
-            .collect();
+        let normals: Vec<Vect2> = (0..n).map(|i| normal(p[i], p[(i + 1) % n], side)).collect();
         // The strips: edge i's shifted copy, the strip on its left for Out (the edge is
         // on its left) and on its right for In (the strip lies between it and the edge).
         for i in 0..n {

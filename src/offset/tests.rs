@@ -125,8 +125,14 @@ fn arguments_outside_their_domain_name_their_field() {
     assert_eq!(field(offset(&sq, -1.0, 0.1)), "d");
     assert_eq!(field(offset(&sq, f64::NAN, 0.1)), "d");
     assert_eq!(field(inset(&sq, 1.0, 0.0)), "eps");
-    assert_eq!(field(offset_at(&sq, &[Vect2::ZERO; 3], 0.0, 1.0, 0.1)), "vels");
-    assert_eq!(field(offset_at(&sq, &[Vect2::ZERO; 4], f64::INFINITY, 1.0, 0.1)), "t");
+    assert_eq!(
+        field(offset_at(&sq, &[Vect2::ZERO; 3], 0.0, 1.0, 0.1)),
+        "vels"
+    );
+    assert_eq!(
+        field(offset_at(&sq, &[Vect2::ZERO; 4], f64::INFINITY, 1.0, 0.1)),
+        "t"
+    );
     let mut cw = sq.clone();
     cw.reverse();
     assert_eq!(field(offset(&cw, 1.0, 0.1)), "p");

@@ -16,10 +16,13 @@
 //! - [`paper_b`]: paper B's hunt (scenario generator, judge, pictures).
 //! - [`intervals`]: the hunt of certified intervals; [`moving`]: the hunt of moving
 //!   features (flights against static and keyframed areas).
+//! - [`wayout`]: the way out checked exactly ([`wayout::offset`]: one engine offset or
+//!   inset against the oracle); [`canary_offset`]: a bisector expansion it must catch.
 #![deny(missing_docs)]
 
 pub mod answer;
 pub mod batch;
+pub mod canary_offset;
 pub mod case;
 pub mod classify;
 pub mod gen;
@@ -29,4 +32,5 @@ pub mod moving;
 pub mod paper_b;
 pub mod report;
 pub mod svg;
+pub mod wayout;
 pub mod workload;

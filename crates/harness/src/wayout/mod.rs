@@ -1,0 +1,4 @@
+//! The way out: the exact checks of the engine's offsets (paper A §II's polygon grown
+//! and shrunk), recovery points and bands against the oracle.
+
+pub mod offset;

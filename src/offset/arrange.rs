@@ -184,7 +184,7 @@ fn link(pts: &[Vect2], kept: &[(usize, usize)]) -> Result<Vec<Vec<Vect2>>, Offse
                     c.iter().copied().min_by(|&x, &y| {
                         let turn = |k: usize| {
                             let dk = pts[kept[k].1] - pts[kept[k].0];
-                            libm::atan2(din.perp().dot(dk) * -1.0, din.dot(dk))
+                            libm::atan2(-din.perp().dot(dk), din.dot(dk))
                         };
                         turn(x).total_cmp(&turn(y))
                     })

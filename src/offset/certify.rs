@@ -153,7 +153,7 @@ pub(crate) fn certify(
     }
     disjoint(&rings)?;
     let clear_hi = bounds.clear.hi();
-    if !(bounds.close.lo() > 0.0) {
+    if bounds.close.lo().partial_cmp(&0.0) != Some(core::cmp::Ordering::Greater) {
         return Err(fail("D·(1 + ε) is not above the moving polygon's rounding"));
     }
     let close_hi = bounds.close.hi();

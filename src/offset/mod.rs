@@ -299,7 +299,11 @@ fn build(p: &[Vect2], radii: &[f64], d: f64, eps: f64, side: Side) -> Result<Off
     }
     let e = eps.min(EPS_CAP) * MARGIN_SHARE;
     let pieces_per_turn = core::f64::consts::TAU / max_arc_angle(e);
-    if !(pieces_per_turn <= MAX_PIECES_PER_TURN as f64) {
+    let fits = pieces_per_turn.partial_cmp(&(MAX_PIECES_PER_TURN as f64));
+    if !matches!(
+        fits,
+        Some(core::cmp::Ordering::Less | core::cmp::Ordering::Equal)
+    ) {
         return Err(OffsetError::TooFine { pieces_per_turn });
     }
     // D' covers the slack of a moving polygon too: the construction stays D'·ε/4 clear.

@@ -4,7 +4,8 @@
 //! [`proximity`] (§II.G), [`detect`] (§II.H, §II.I, §III), [`well_formed`](mod@well_formed)
 //! (§II.J), every sign decision certified (a three-valued [`Tri`]). When, on paper A's
 //! motion (§II–§III): [`intervals`] (every time the point is inside, within D, or out of
-//! a keep-in fence, as certified spans) and [`fence`] (keep-in exits). The high-level
+//! a keep-in fence, as certified spans) and [`fence`] (keep-in exits). The way out:
+//! `offset` (certified offsets and insets of a polygon, with `std`). The high-level
 //! entry points are `api::detect`, `api::detect_time`, `api::intervals`,
 //! `api::detect_exit` and `batch::detect_batch`.
 //!

@@ -150,3 +150,98 @@ fn the_bisector_expansion_overshoots_at_a_moved_sharp_corner() {
     // buffer: `clear` fails too.)
     assert!(verdict.rings && !verdict.close, "{verdict:?}");
 }
+
+/// A C whose mouth (width 1) closes when grown by 1.
+fn c_shape() -> Vec<Vect2> {
+    [
+        (0.0, 0.0),
+        (10.0, 0.0),
+        (10.0, 4.5),
+        (9.0, 4.5),
+        (9.0, 1.0),
+        (1.0, 1.0),
+        (1.0, 9.0),
+        (9.0, 9.0),
+        (9.0, 5.5),
+        (10.0, 5.5),
+        (10.0, 10.0),
+        (0.0, 10.0),
+    ]
+    .iter()
+    .map(|&(x, y)| Vect2::new(x, y))
+    .collect()
+}
+
+#[test]
+fn the_closing_cs_hole_is_exactly_right() {
+    let p = c_shape();
+    let o = offset(&p, 1.0, 0.01).expect("certified");
+    assert_eq!(o.regions[0].holes.len(), 1);
+    assert_exact(&p, 1.0, 0.01, Side::Out, &o);
+    // The hole's centre is far from P, and outside the result.
+    let centre = exact_point([5.0, 5.0]).expect("finite");
+    assert!(!locate(&regions_of(&o), &centre).expect("finite"));
+    // Filling the hole is caught by sampling, not by the boundary: the verdict holds.
+    let mut filled = o.clone();
+    filled.regions[0].holes.clear();
+    assert!(check(&p, 1.0, 0.01, Side::Out, &filled)
+        .expect("valid")
+        .holds());
+    let exact = problem(&p, 1.0, 0.01, Side::Out).expect("valid");
+    assert!(sample(&exact, &filled, 10).expect("finite").is_some());
+}
+
+#[test]
+fn the_dumbbells_two_pieces_and_an_empty_inset_are_exactly_right() {
+    let p: Vec<Vect2> = [
+        (0.0, 0.0),
+        (4.0, 0.0),
+        (4.0, 1.5),
+        (8.0, 1.5),
+        (8.0, 0.0),
+        (12.0, 0.0),
+        (12.0, 4.0),
+        (8.0, 4.0),
+        (8.0, 2.5),
+        (4.0, 2.5),
+        (4.0, 4.0),
+        (0.0, 4.0),
+    ]
+    .iter()
+    .map(|&(x, y)| Vect2::new(x, y))
+    .collect();
+    let two = inset(&p, 1.0, 0.01).expect("certified");
+    assert_eq!(two.regions.len(), 2);
+    assert_exact(&p, 1.0, 0.01, Side::In, &two);
+    let none = inset(&p, 2.5, 0.01).expect("an answer");
+    assert!(none.regions.is_empty());
+    assert_exact(&p, 2.5, 0.01, Side::In, &none);
+}
+
+#[test]
+fn rounding_coarser_than_d_eps_is_refused_not_returned_wrong() {
+    // Coordinates near 10⁹ (an ulp is 1.2·10⁻⁷) against D·ε/4 = 2.5·10⁻⁸: the offset is
+    // refused; whatever is returned holds exactly.
+    let base = 1.0e9;
+    let p: Vec<Vect2> = [(0.0, 0.0), (3.0, 0.0), (3.0, 2.0), (0.0, 2.0)]
+        .iter()
+        .map(|&(x, y)| Vect2::new(base + x, base + y))
+        .collect();
+    assert!(matches!(
+        offset(&p, 1.0e-3, 1.0e-4),
+        Err(polyguard::offset::OffsetError::Uncertified { .. })
+    ));
+    for side in [Side::Out, Side::In] {
+        let r = match side {
+            Side::Out => offset(&p, 1.0e-3, 1.0e-4),
+            Side::In => inset(&p, 1.0e-3, 1.0e-4),
+        };
+        match r {
+            Ok(o) => assert!(check(&p, 1.0e-3, 1.0e-4, side, &o).expect("valid").holds()),
+            Err(e) => assert!(
+                matches!(e, polyguard::offset::OffsetError::Uncertified { .. }),
+                "{e}"
+            ),
+        }
+    }
+}

@@ -642,7 +642,10 @@ mod tests {
     fn the_inset_square_is_exact_and_the_wrong_way_round_is_not_a_ring() {
         let b = inset(&SQUARE, 0.5, 0.01).expect("valid");
         let inner = region(&[[0.5, 0.5], [1.5, 0.5], [1.5, 1.5], [0.5, 1.5]]);
-        assert!(b.check(std::slice::from_ref(&inner)).expect("finite").holds());
+        assert!(b
+            .check(std::slice::from_ref(&inner))
+            .expect("finite")
+            .holds());
         let mut cw = inner.clone();
         cw.outer.reverse();
         assert!(!b.check(&[cw]).expect("finite").rings);

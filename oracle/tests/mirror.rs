@@ -1,7 +1,7 @@
 //! The oracle mirrors the engine's names, module by module. For each of paper A's
 //! modules (quad, contain, proximity, detect with every file of its folder, well_formed,
-//! ring) and of the modules built on them (intervals and fence: the times inside, near and
-//! breaching, keep-in exits, and offsets), walked as files in both crates and paired by module path (`detect::same` is
+//! ring) and of the modules built on them (intervals, fence and offset: the times inside,
+//! near and breaching, keep-in exits, certified offsets), walked as files in both crates and paired by module path (`detect::same` is
 //! src/detect/same.rs), every `pub fn` of the engine's module has a `pub fn` of the same
 //! name in the oracle's module of the same path, with the same parameter names in the
 //! same order. The oracle's paper functions are generic over a kernel and take it first,

@@ -287,6 +287,11 @@ fn build(p: &[Vect2], radii: &[f64], d: f64, eps: f64, side: Side) -> Result<Off
         }
         Err(fault) => return Err(OffsetError::Polygon { fault }),
     }
+    // Repeated consecutive vertices are one vertex (as for the ring check).
+    let n = p.len();
+    let keep: Vec<usize> = (0..n).filter(|&i| p[i] != p[(i + 1) % n]).collect();
+    let p: Vec<Vect2> = keep.iter().map(|&i| p[i]).collect();
+    let p = p.as_slice();
     let slack = MOVE_SLACK * radii.iter().fold(0.0f64, |m, &r| m.max(r));
     if d == 0.0 && slack == 0.0 {
         // P ⊕ disc(0) = P and {x ∈ P : dist(x, ∂P) ≥ 0} = P, exactly.

@@ -108,14 +108,15 @@ impl<'a> Raw<'a> {
             raw.pieces.push(Piece::new(verts));
         }
         // The fans: at the vertices where the grown side turns outward (convex vertices
-        // for Out, reflex ones for In).
+        // for Out, reflex ones for In), and at straight ones, whose two shifted edges
+        // may end an ulp apart.
         for j in 0..n {
             let i = (j + n - 1) % n;
             let v = p[j];
             let turn = orient(p[i], v, p[(j + 1) % n]);
             let fan = match (side, turn) {
-                (Side::Out, Some(t)) => t > 0,
-                (Side::In, Some(t)) => t < 0,
+                (Side::Out, Some(t)) => t >= 0,
+                (Side::In, Some(t)) => t <= 0,
                 (_, None) => true,
             };
             if fan {
@@ -128,6 +129,10 @@ impl<'a> Raw<'a> {
     /// The fan at v from normal `n0` to normal `n1` (turning less than a half turn):
     /// v + d·n0, the circumscribed arc's vertices at radius d·sec(δ/2), v + d·n1.
     fn fan(&mut self, v: Vect2, n0: Vect2, n1: Vect2, d: f64, delta: f64) {
+        if n0 == n1 {
+            // A straight vertex whose shifted edges meet exactly: nothing to fill.
+            return;
+        }
         let sweep = libm::atan2(n0.x * n1.y - n0.y * n1.x, n0.dot(n1));
         let k = libm::ceil(sweep.abs() / delta).max(1.0);
         let step = sweep / k;

@@ -152,3 +152,21 @@ fn a_moving_square_is_offset_where_it_is_at_t() {
     let i = inset_at(&square(2.0), &vels, 3.0, 0.5, 0.01).expect("certified");
     assert_eq!(i.regions.len(), 1);
 }
+
+#[test]
+fn straight_and_repeated_vertices_are_one_polygon() {
+    let p = std::vec![
+        v(0.0, 0.0),
+        v(1.0, 0.0),
+        v(2.0, 0.0),
+        v(2.0, 0.0),
+        v(2.0, 2.0),
+        v(0.0, 2.0),
+        v(0.0, 1.3),
+    ];
+    let o = offset(&p, 0.5, 0.01).expect("certified");
+    let s = offset(&square(2.0), 0.5, 0.01).expect("certified");
+    assert!((total_area(&o) - total_area(&s)).abs() <= 1e-9 * total_area(&s));
+    let i = inset(&p, 0.5, 0.01).expect("certified");
+    assert_eq!(i.regions.len(), 1);
+}

@@ -144,7 +144,10 @@ impl core::fmt::Display for RecoveryError {
                 write!(f, "p: not certainly counterclockwise")
             }
             RecoveryError::Uncertified => {
-                write!(f, "p: no recovery point could be certified (near-degenerate input)")
+                write!(
+                    f,
+                    "p: no recovery point could be certified (near-degenerate input)"
+                )
             }
         }
     }
@@ -199,6 +202,15 @@ struct Shape<'a> {
     d: f64,
     /// The vertices relative to s, as balls.
     q: Vec<BallV>,
+}
+
+/// A shifted edge (see `Shape::line`).
+struct Line {
+    e: BallV,
+    big_e: Ball,
+    p0: Option<BallV>,
+    c: Ball,
+    nn: Vect2,
 }
 
 /// One candidate: its ball (relative to s) or none, a certified lower bound of its
@@ -471,8 +483,12 @@ impl<'a> Shape<'a> {
         let n = self.n();
         for j in 0..n {
             let k = self.next(j);
-            let near = closer_than(rel[j], self.d, || None)
-                .or(interior_closer_than(rel[j], rel[k], self.d, || None));
+            let near = closer_than(rel[j], self.d, || None).or(interior_closer_than(
+                rel[j],
+                rel[k],
+                self.d,
+                || None,
+            ));
             if near == Tri::Yes {
                 return Tri::No;
             }
@@ -481,10 +497,10 @@ impl<'a> Shape<'a> {
             // The feasible candidates lie on ∂P, where the parity says nothing.
             return Tri::Unsure;
         }
-        let wrong_side = match (side, self.parity(&rel, |_| None)) {
-            (Side::Out, Tri::Yes) | (Side::In, Tri::No) => true,
-            _ => false,
-        };
+        let wrong_side = matches!(
+            (side, self.parity(&rel, |_| None)),
+            (Side::Out, Tri::Yes) | (Side::In, Tri::No)
+        );
         if wrong_side {
             Tri::No
         } else {
@@ -511,127 +527,77 @@ impl<'a> Shape<'a> {
         }
     }
 
+    /// Shifted edge i: e, N = e⊥ (outward for ccw), E = |e|², the shifted start
+    /// p0 = q + N·σD/√E, the line N·x = N·q + σD√E, and the push direction σN̂.
+    fn line(&self, i: usize, sig: f64) -> Line {
+        let sd = Ball::exact(sig * self.d);
+        let q = self.q[i];
+        let e = self.q[self.next(i)].sub(q);
+        let big_e = e.sq();
+        let root = sqrt_ball(big_e);
+        let nvec = e.perp();
+        Line {
+            e,
+            big_e,
+            p0: div_ball(sd, root).map(|k| q.add(nvec.scale(k))),
+            c: nvec.dot(q).add(sd.mul(root)),
+            nn: unit(e.v.perp()).scale(sig),
+        }
+    }
+
     /// Every candidate of the module doc, relative to s.
     fn candidates(&self, side: Side) -> Vec<Cand> {
         let n = self.n();
         let sig = if side == Side::Out { 1.0 } else { -1.0 };
-        let sd = Ball::exact(sig * self.d);
-        let dd = Ball::exact(self.d);
-        // Per edge: e, its normal N = e⊥ (outward for ccw), √E, the shifted start
-        // p0 = q + N·σD/√E and the unit push direction σN̂.
-        struct Line {
-            q: BallV,
-            e: BallV,
-            big_e: Ball,
-            p0: Option<BallV>,
-            nn: Vect2,
-            c: Option<Ball>,
-        }
-        let lines: Vec<Line> = (0..n)
-            .map(|i| {
-                let q = self.q[i];
-                let e = self.q[self.next(i)].sub(q);
-                let big_e = e.sq();
-                let root = sqrt_ball(big_e);
-                let k = div_ball(sd, root);
-                let nvec = e.perp();
-                let p0 = k.map(|k| q.add(nvec.scale(k)));
-                // The line N·x = N·q + σD√E.
-                let c = Some(nvec.dot(q).add(sd.mul(root)));
-                Line {
-                    q,
-                    e,
-                    big_e,
-                    p0,
-                    nn: unit(e.v.perp()).scale(sig),
-                    c,
-                }
-            })
-            .collect();
+        let lines: Vec<Line> = (0..n).map(|i| self.line(i, sig)).collect();
         let mut out = Vec::new();
         for l in &lines {
             // The clamped projection of s (the origin) on the shifted edge.
-            let Some(p0) = l.p0 else {
-                out.push(Self::unplaced(0.0));
-                continue;
-            };
-            match div_ball(p0.neg().dot(l.e), l.big_e) {
-                Some(tau) => out.push(Self::cand(p0.add(l.e.scale(clamp01(tau))), l.nn)),
-                None => out.push(Self::unplaced(0.0)),
-            }
+            let tau =
+                l.p0.and_then(|p0| Some((p0, div_ball(p0.neg().dot(l.e), l.big_e)?)));
+            out.push(match tau {
+                Some((p0, tau)) => Self::cand(p0.add(l.e.scale(clamp01(tau))), l.nn),
+                None => Self::unplaced(0.0),
+            });
         }
-        for (i, q) in self.q.iter().enumerate() {
+        for q in &self.q {
             // The point of the circle on the ray from its centre through s.
             let w = q.neg();
             let len = sqrt_ball(w.sq());
-            match div_ball(dd, len) {
-                Some(k) => {
-                    let c = q.add(w.scale(k));
-                    out.push(Self::cand(c, w.v));
-                }
+            out.push(match div_ball(Ball::exact(self.d), len) {
+                Some(k) => Self::cand(q.add(w.scale(k)), w.v),
                 // s within rounding of the vertex: the circle is about D away.
-                None => out.push(Self::unplaced(self.d - len.hi())),
-            }
-            let _ = i;
+                None => Self::unplaced(self.d - len.hi()),
+            });
         }
         for i in 0..n {
-            for j in (i + 1)..n {
-                self.line_line(&lines[i].e, &lines[j].e, lines[i].c, lines[j].c, &mut out, [
-                    lines[i].nn,
-                    lines[j].nn,
-                ], i, j);
-            }
             for j in 0..n {
-                self.line_circle(
-                    lines[i].p0,
-                    lines[i].e,
-                    lines[i].big_e,
-                    lines[i].nn,
-                    j,
-                    &mut out,
-                );
-            }
-            let _ = &lines[i].q;
-        }
-        for i in 0..n {
-            for j in (i + 1)..n {
-                self.circle_circle(i, j, &mut out);
+                if j > i {
+                    self.line_line(&lines[i], &lines[j], i, j, &mut out);
+                    self.circle_circle(i, j, &mut out);
+                }
+                self.line_circle(&lines[i], j, &mut out);
             }
         }
         out
     }
 
     /// The intersection of two shifted edge lines N_i·x = c_i, N_j·x = c_j (Cramer).
-    #[allow(clippy::too_many_arguments)]
-    fn line_line(
-        &self,
-        ei: &BallV,
-        ej: &BallV,
-        ci: Option<Ball>,
-        cj: Option<Ball>,
-        out: &mut Vec<Cand>,
-        nn: [Vect2; 2],
-        i: usize,
-        j: usize,
-    ) {
-        let (ni, nj) = (ei.perp(), ej.perp());
+    fn line_line(&self, li: &Line, lj: &Line, i: usize, j: usize, out: &mut Vec<Cand>) {
+        let (ni, nj) = (li.e.perp(), lj.e.perp());
         let det = ni.cross(nj);
-        if crate::ball::positive(det) == Tri::Unsure
-            && crate::ball::positive(det.neg()) == Tri::Unsure
-            && self.parallel_exactly(i, j)
-        {
+        let undecided = crate::ball::positive(det) == Tri::Unsure
+            && crate::ball::positive(det.neg()) == Tri::Unsure;
+        if undecided && self.parallel_exactly(i, j) {
             return;
         }
-        let (Some(ci), Some(cj)) = (ci, cj) else {
-            out.push(Self::unplaced(0.0));
-            return;
-        };
+        let (ci, cj) = (li.c, lj.c);
         let xn = ci.mul(nj.y()).sub(cj.mul(ni.y()));
         let yn = ni.x().mul(cj).sub(ci.mul(nj.x()));
-        match (div_ball(xn, det), div_ball(yn, det)) {
-            (Some(x), Some(y)) => out.push(Self::cand(pt(x, y), nn[0] + nn[1])),
-            _ => out.push(Self::unplaced(0.0)),
-        }
+        out.push(match (div_ball(xn, det), div_ball(yn, det)) {
+            (Some(x), Some(y)) => Self::cand(pt(x, y), li.nn + lj.nn),
+            _ => Self::unplaced(0.0),
+        });
     }
 
     /// Are edges i and j exactly parallel (e_i × e_j = 0 on the exact vertices)?
@@ -639,14 +605,10 @@ impl<'a> Shape<'a> {
         let comp = |k: usize, y: bool| -> exact::Sum {
             let mut s = exact::Sum::default();
             for (idx, sign) in [(self.next(k), 1.0), (k, -1.0)] {
-                let (a, v) = if y {
-                    (self.p[idx].y, self.vels.map(|(v, t)| (v[idx].y, t)))
-                } else {
-                    (self.p[idx].x, self.vels.map(|(v, t)| (v[idx].x, t)))
-                };
-                s.add(sign * a);
-                if let Some((vv, t)) = v {
-                    s.add_prod(sign * t, vv);
+                let c = |w: Vect2| if y { w.y } else { w.x };
+                s.add(sign * c(self.p[idx]));
+                if let Some((v, t)) = self.vels {
+                    s.add_prod(sign * t, c(v[idx]));
                 }
             }
             s
@@ -658,37 +620,28 @@ impl<'a> Shape<'a> {
 
     /// The intersections of the shifted edge p0 + τe with the circle of radius D about
     /// vertex j: E τ² + 2Bτ + C = 0, B = e·(p0 − q_j), C = |p0 − q_j|² − D².
-    fn line_circle(
-        &self,
-        p0: Option<BallV>,
-        e: BallV,
-        big_e: Ball,
-        nn: Vect2,
-        j: usize,
-        out: &mut Vec<Cand>,
-    ) {
-        let Some(p0) = p0 else {
+    fn line_circle(&self, l: &Line, j: usize, out: &mut Vec<Cand>) {
+        let Some(p0) = l.p0 else {
             out.push(Self::unplaced(0.0));
             return;
         };
         let w = p0.sub(self.q[j]);
-        let b = e.dot(w);
+        let b = l.e.dot(w);
         let c = w.sq().sub(Ball::exact(self.d).sq());
-        let disc = b.sq().sub(big_e.mul(c));
+        let disc = b.sq().sub(l.big_e.mul(c));
         if crate::ball::positive(disc.neg()) == Tri::Yes {
             return;
         }
         let root = sqrt_ball(disc);
         for sgn in [1.0, -1.0] {
             let num = b.neg().add(root.scale(sgn));
-            match div_ball(num, big_e) {
+            out.push(match div_ball(num, l.big_e) {
                 Some(tau) => {
-                    let x = p0.add(e.scale(tau));
-                    let away = unit(x.sub(self.q[j]).v);
-                    out.push(Self::cand(x, nn + away));
+                    let x = p0.add(l.e.scale(tau));
+                    Self::cand(x, l.nn + unit(x.sub(self.q[j]).v))
                 }
-                None => out.push(Self::unplaced(0.0)),
-            }
+                None => Self::unplaced(0.0),
+            });
         }
     }
 

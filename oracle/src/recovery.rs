@@ -134,7 +134,11 @@ pub fn satisfies_in(p: &[[f64; 2]], vels: &[[f64; 2]], t: f64, x: [f64; 2], d: f
 }
 
 fn satisfies(p: &[[f64; 2]], vels: &[[f64; 2]], t: f64, x: [f64; 2], d: f64, side: Side) -> bool {
-    let mv = if vels.is_empty() { None } else { Some((vels, t)) };
+    let mv = if vels.is_empty() {
+        None
+    } else {
+        Some((vels, t))
+    };
     let Some(sc) = scene(p, mv, x, d) else {
         return false;
     };
@@ -297,7 +301,9 @@ impl Scene {
         let (a, e) = self.edge(i);
         let big_e = dot(&e, &e);
         let mut tw = Tower::new();
-        let root = tw.adjoin(&Elem::rat(big_e.clone())).unwrap_or(Elem::rat(big_e.clone()));
+        let root = tw
+            .adjoin(&Elem::rat(big_e.clone()))
+            .unwrap_or(Elem::rat(big_e.clone()));
         let k = sd / &big_e;
         let p0 = [
             tw.add(&tw.rat(&a[0]), &root.scale(&(&k * &e[1]))),

@@ -212,8 +212,14 @@ mod tests {
         assert_eq!(t.sign(&t.sub(&t.sq(&r), &b)), Ordering::Equal);
         // r − 3.147 < 0 < r − 3.14 (√2 + √3 = 3.1462…).
         let frac = |n: i64, d: i64| BigRational::new(n.into(), d.into());
-        assert_eq!(t.sign(&t.sub(&r, &t.rat(&frac(3147, 1000)))), Ordering::Less);
-        assert_eq!(t.sign(&t.sub(&r, &t.rat(&frac(314, 100)))), Ordering::Greater);
+        assert_eq!(
+            t.sign(&t.sub(&r, &t.rat(&frac(3147, 1000)))),
+            Ordering::Less
+        );
+        assert_eq!(
+            t.sign(&t.sub(&r, &t.rat(&frac(314, 100)))),
+            Ordering::Greater
+        );
         // A negative radicand is refused.
         assert!(t.clone().adjoin(&t.sub(&r6, &t.rat(&q(3)))).is_none());
         let approx = t.approx(&r);

@@ -1,7 +1,7 @@
 use super::*;
 use core::cmp::Ordering;
-use polyguard_oracle::Q as BigRational;
 use polyguard_oracle::recovery as oracle;
+use polyguard_oracle::Q as BigRational;
 use proptest::prelude::*;
 
 fn v(x: f64, y: f64) -> Vect2 {
@@ -34,9 +34,9 @@ fn q(x: f64) -> BigRational {
 
 /// The scale S of the module doc.
 fn scale(p: &[Vect2], s: Vect2, d: f64) -> f64 {
-    let m = p
-        .iter()
-        .fold(0.0f64, |m, w| m.max((w.x - s.x).abs()).max((w.y - s.y).abs()));
+    let m = p.iter().fold(0.0f64, |m, w| {
+        m.max((w.x - s.x).abs()).max((w.y - s.y).abs())
+    });
     m.max(d).max(s.x.abs()).max(s.y.abs())
 }
 
@@ -46,8 +46,14 @@ fn check(p: &[Vect2], vels: &[Vect2], t: f64, s: Vect2, d: f64, out: bool) {
     let pa = arr(p);
     let va = arr(vels);
     let (got, exact) = match (out, vels.is_empty()) {
-        (true, true) => (recovery_out(p, s, d), oracle::recovery_out(&pa, [s.x, s.y], d)),
-        (false, true) => (recovery_in(p, s, d), oracle::recovery_in(&pa, [s.x, s.y], d)),
+        (true, true) => (
+            recovery_out(p, s, d),
+            oracle::recovery_out(&pa, [s.x, s.y], d),
+        ),
+        (false, true) => (
+            recovery_in(p, s, d),
+            oracle::recovery_in(&pa, [s.x, s.y], d),
+        ),
         (true, false) => (
             recovery_out_at(p, vels, t, s, d),
             oracle::recovery_out_at(&pa, &va, t, [s.x, s.y], d),
@@ -76,7 +82,10 @@ fn check(p: &[Vect2], vels: &[Vect2], t: f64, s: Vect2, d: f64, out: bool) {
             assert!(ok, "x = {x:?} breaks the condition");
             assert_ne!(m.cmp_rational(&q(min_lo)), Ordering::Less, "min_lo above m");
             let (dx, dy) = (q(x.x) - q(s.x), q(x.y) - q(s.y));
-            assert!(&dx * &dx + &dy * &dy <= q(dist_hi) * q(dist_hi), "|x − s| > dist_hi");
+            assert!(
+                &dx * &dx + &dy * &dy <= q(dist_hi) * q(dist_hi),
+                "|x − s| > dist_hi"
+            );
             assert!(
                 dist_hi - min_lo <= REL_TOL * scale(&at(p, vels, t), s, d),
                 "gap {} at scale {}",

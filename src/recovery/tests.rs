@@ -118,7 +118,7 @@ fn point(r: Result<Recovery, RecoveryError>) -> (Vect2, f64, f64) {
 #[test]
 fn square_from_the_centre_goes_out_by_one_and_a_half() {
     let (x, hi, lo) = point(recovery_out(&square(), v(1.0, 1.0), 0.5));
-    assert!(lo <= 1.5 && 1.5 <= hi && hi - lo < 1e-9);
+    assert!(lo <= 1.5 && 1.5 <= hi && hi - lo <= REL_TOL * scale(&square(), v(1.0, 1.0), 0.5));
     // One of the four sides' points at 1/2 beyond the middle of an edge.
     assert!((x - v(1.0, 1.0)).sq() >= 2.25);
     check(&square(), &[], 0.0, v(1.0, 1.0), 0.5, true);
@@ -144,7 +144,7 @@ fn points_already_clear_stay() {
 fn outside_near_an_edge_and_near_a_corner() {
     // Beside the right edge: straight out to x = 2.5.
     let (x, hi, _) = point(recovery_out(&square(), v(2.2, 1.0), 0.5));
-    assert!((x.x - 2.5).abs() < 1e-9 && (x.y - 1.0).abs() < 1e-9 && hi >= 0.3);
+    assert!((x - v(2.5, 1.0)).sq().sqrt() <= REL_TOL * 2.5 && hi >= 0.3);
     check(&square(), &[], 0.0, v(2.2, 1.0), 0.5, true);
     // Beside the corner (2, 2): along the diagonal to the circle of radius 1.
     check(&square(), &[], 0.0, v(2.1, 2.1), 1.0, true);
@@ -154,7 +154,7 @@ fn outside_near_an_edge_and_near_a_corner() {
 #[test]
 fn into_the_core_from_outside_goes_to_its_corner() {
     let (x, _, _) = point(recovery_in(&square(), v(-1.0, -1.0), 0.5));
-    assert!((x - v(0.5, 0.5)).sq() < 1e-18);
+    assert!((x - v(0.5, 0.5)).sq().sqrt() <= REL_TOL * 3.0);
     check(&square(), &[], 0.0, v(-1.0, -1.0), 0.5, false);
     check(&square(), &[], 0.0, v(1.9, 0.3), 0.5, false);
 }
@@ -165,9 +165,11 @@ fn concave_corner_is_where_two_shifted_edges_meet() {
     // from the edge x = 2, so the nearest clear point is (3, 3), where the edges
     // y = 2 and x = 2 shifted by 1 meet: 0.9·√2 away.
     let (x, hi, lo) = point(recovery_out(&ell(), v(2.1, 2.1), 1.0));
-    assert!((x - v(3.0, 3.0)).sq() < 1e-18, "{x:?}");
+    assert!((x - v(3.0, 3.0)).sq().sqrt() <= REL_TOL * 4.0, "{x:?}");
     let want = 0.9 * 2f64.sqrt();
-    assert!(lo <= want * (1.0 + 1e-15) && want <= hi * (1.0 + 1e-15));
+    // want is rounded twice: within 4 ulps of 0.9·√2.
+    let ulps = 1.0 + 4.0 * f64::EPSILON;
+    assert!(lo <= want * ulps && want <= hi * ulps);
     check(&ell(), &[], 0.0, v(2.1, 2.1), 1.0, true);
     check(&ell(), &[], 0.0, v(2.5, 2.5), 1.0, true);
     // Into the L's 1/2-core from beyond its reflex corner.

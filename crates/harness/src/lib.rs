@@ -29,4 +29,5 @@ pub mod moving;
 pub mod paper_b;
 pub mod report;
 pub mod svg;
+pub mod wayout;
 pub mod workload;

@@ -560,23 +560,33 @@ impl<'a> Shape<'a> {
                 None => Self::unplaced(0.0),
             });
         }
-        for q in &self.q {
-            // The point of the circle on the ray from its centre through s.
+        for (i, q) in self.q.iter().enumerate() {
+            // The point of the circle on the ray from its centre through s, pushed away
+            // from the centre; with D = 0 (only `in` gets here) the circle is the vertex,
+            // pushed into P along the inward bisector −σ(N̂ᵢ₋₁ + N̂ᵢ).
             let w = q.neg();
             let len = sqrt_ball(w.sq());
+            let dir = if self.d == 0.0 {
+                -(lines[(i + n - 1) % n].nn + lines[i].nn)
+            } else {
+                w.v
+            };
             out.push(match div_ball(Ball::exact(self.d), len) {
-                Some(k) => Self::cand(q.add(w.scale(k)), w.v),
+                Some(k) => Self::cand(q.add(w.scale(k)), dir),
                 // s within rounding of the vertex: the circle is about D away.
                 None => Self::unplaced(self.d - len.hi()),
             });
         }
         for i in 0..n {
             for j in 0..n {
-                if j > i {
+                // With D = 0 the shifted edges are the edges: where they meet on P is a
+                // vertex (a circle of radius 0 here); their lines' other meetings lie
+                // off ∂P and would only loosen min_lo, as no side test can drop them.
+                if j > i && self.d > 0.0 {
                     self.line_line(&lines[i], &lines[j], i, j, &mut out);
                     self.circle_circle(i, j, &mut out);
                 }
-                self.line_circle(&lines[i], j, &mut out);
+                self.line_circle(&lines[i], i, j, &mut out);
             }
         }
         out
@@ -620,11 +630,22 @@ impl<'a> Shape<'a> {
 
     /// The intersections of the shifted edge p0 + τe with the circle of radius D about
     /// vertex j: E τ² + 2Bτ + C = 0, B = e·(p0 − q_j), C = |p0 − q_j|² − D².
-    fn line_circle(&self, l: &Line, j: usize, out: &mut Vec<Cand>) {
+    ///
+    /// The circles about the edge's own ends touch it at its ends, p0 and p0 + e (a double
+    /// root, which the quadratic would only give to √u): those are taken as they are.
+    fn line_circle(&self, l: &Line, i: usize, j: usize, out: &mut Vec<Cand>) {
         let Some(p0) = l.p0 else {
             out.push(Self::unplaced(0.0));
             return;
         };
+        if j == i {
+            out.push(Self::cand(p0, l.nn));
+            return;
+        }
+        if j == self.next(i) {
+            out.push(Self::cand(p0.add(l.e), l.nn));
+            return;
+        }
         let w = p0.sub(self.q[j]);
         let b = l.e.dot(w);
         let c = w.sq().sub(Ball::exact(self.d).sq());

@@ -262,3 +262,39 @@ proptest! {
         check(&p, &[], 0.0, s, d, false);
     }
 }
+
+#[test]
+fn zero_separation_is_containment() {
+    // Out with D = 0: every point is clear. In with D = 0: the nearest point of P.
+    let r = recovery_out(&square(), v(1.0, 1.0), 0.0);
+    assert!(matches!(r, Ok(Recovery::Point { clear: true, .. })));
+    check(&square(), &[], 0.0, v(-1.0, 0.5), 0.0, false);
+    let quad = vec![v(0.0, 0.0), v(3.0, 0.5), v(2.5, 2.0), v(0.2, 1.5)];
+    check(&quad, &[], 0.0, v(4.0, 3.0), 0.0, false);
+    check(&quad, &[], 0.0, v(1.0, -1.0), 0.0, false);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+
+    /// Moving (warping) polygons at a time t, and points on or near a vertex or an edge.
+    #[test]
+    fn moving_polygons_and_near_points_agree_with_the_oracle(
+        p in star(),
+        vel in prop::collection::vec((-0.3f64..0.3, -0.3f64..0.3), 8),
+        t in 0.0f64..3.0,
+        k in 0usize..8,
+        along in prop::sample::select(vec![0.0, 0.5, 0.25]),
+        off in prop::sample::select(vec![0.0, 0.3, -0.3, 1e-9]),
+        d in prop::sample::select(vec![0.1, 0.5, 1.0]),
+    ) {
+        let n = p.len();
+        // Small shears only, so that the polygon stays simple and counterclockwise.
+        let vels: Vec<Vect2> = vel[..n].iter().map(|&(x, y)| v(x * 0.1, y * 0.1)).collect();
+        let (a, b) = (p[k % n], p[(k + 1) % n]);
+        let e = b - a;
+        let s = a + e.scale(along) + e.perp().scale(off);
+        check(&p, &vels, t, s, d, true);
+        check(&p, &vels, t, s, d, false);
+    }
+}

@@ -471,6 +471,74 @@ mod tests {
         assert!(!satisfies_out(&sq2(), &[], 0.0, [2.3, 2.3], 0.5));
     }
 
+    /// m is not above the distance of any feasible point: points drawn about s (half of
+    /// them just beyond the float value of m, where a missed candidate would show) that
+    /// meet the condition, exactly, are all at least m away (m ≤ an upper bound of
+    /// |x − s|).
+    #[test]
+    fn no_feasible_point_is_nearer_than_the_minimum() {
+        let polys: [&[[f64; 2]]; 3] = [
+            &[
+                [0.0, 0.0],
+                [4.0, 0.0],
+                [4.0, 3.0],
+                [2.3, 3.0],
+                [2.0, 1.0],
+                [1.7, 3.0],
+                [0.0, 3.0],
+            ],
+            &[[0.0, 0.0], [3.0, 0.5], [2.5, 2.0], [0.2, 1.5]],
+            &[[0.0, 0.0], [4.0, 0.0], [0.5, 1.0]],
+        ];
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for p in polys {
+            for (s, d) in [([2.0, 1.5], 0.4), ([1.0, 0.4], 0.3), ([3.5, 0.2], 0.2)] {
+                for out in [true, false] {
+                    let ex = if out {
+                        recovery_out(p, s, d)
+                    } else {
+                        recovery_in(p, s, d)
+                    };
+                    let Some(ExactRecovery::Min(m)) = ex else {
+                        continue;
+                    };
+                    let approx = m.approx();
+                    for k in 0..600 {
+                        let rad = if k % 2 == 0 {
+                            3.0 * next()
+                        } else {
+                            approx * (1.0 + 0.1 * next())
+                        };
+                        let ang = core::f64::consts::TAU * next();
+                        let x = [s[0] + rad * ang.cos(), s[1] + rad * ang.sin()];
+                        let meets = if out {
+                            satisfies_out(p, &[], 0.0, x, d)
+                        } else {
+                            satisfies_in(p, &[], 0.0, x, d)
+                        };
+                        if !meets {
+                            continue;
+                        }
+                        let dist = ((x[0] - s[0]).powi(2) + (x[1] - s[1]).powi(2)).sqrt();
+                        // An upper bound of the exact |x − s|: a few roundings, 2⁻⁵⁰ covers them.
+                        let hi = q(dist * (1.0 + 2f64.powi(-50))).unwrap();
+                        assert_ne!(
+                            m.cmp_rational(&hi),
+                            Ordering::Greater,
+                            "{p:?} {s:?} {d} {out}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+
     #[test]
     fn thin_rectangle_has_no_core() {
         let p = [[0.0, 0.0], [10.0, 0.0], [10.0, 0.5], [0.0, 0.5]];

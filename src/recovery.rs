@@ -9,7 +9,10 @@
 //! - [`recovery_in`]: the nearest x to s with **x ∈ P and dist(x, ∂P) ≥ D**; when no point
 //!   of P is that deep, [`Recovery::Impossible`].
 //! - [`recovery_out_at`], [`recovery_in_at`]: the same for the exact polygon
-//!   P(t) = (p_i + t·V_i) of a moving polygon at time t.
+//!   P(t) = (p_i + t·V_i) of a moving polygon at time t. Each vertex is taken as a ball
+//!   about its f64 evaluation, which covers the rounding, and as the exact terms
+//!   p_i − x + t·V_i (t·V_i split without error) where a predicate falls back to exact
+//!   signs.
 //!
 //! # Method
 //! The minimum m = min {|x − s| : x feasible} is attained on the boundary of the feasible
@@ -22,17 +25,24 @@
 //! in its ball. A candidate whose ball certainly breaks the condition (some vertex or
 //! edge certainly closer than D, or the point certainly on the wrong side of ∂P) cannot
 //! be the minimiser; the lower end of the distance of every other candidate bounds m from
-//! below: that is **min_lo**. The nearest candidate not certainly infeasible is then
+//! below: that is **min_lo** (0 when s itself is not certainly infeasible). The nearest candidate not certainly infeasible is then
 //! pushed off its features (along the sum of their normals) by a bounded amount δ and the
 //! resulting f64 point x is certified with the predicates of `crate::predicates` (on
 //! balls, with their exact fallbacks): every vertex and edge at least D away, and the
 //! crossing parity of §II.D deciding the side. **dist_hi** is a certified upper bound of
 //! |x − s|. A point certified in this way satisfies its condition for the exact inputs.
 //!
+//! D = 0: every point is out of P's 0-neighbourhood (s is returned), and the 0-core is P
+//! itself: its candidates are the nearest points of the edges and the vertices (pushed
+//! into P along the inward bisector); no side test applies on ∂P, so none is dropped by
+//! one. A shifted edge meets the circles about its own ends at its two ends, which are
+//! taken as they are rather than as the double root of a quadratic.
+//!
 //! # Guarantees and tolerance
 //! For a returned [`Recovery::Point`]: x satisfies its condition exactly, and
 //! min_lo ≤ m ≤ |x − s| ≤ dist_hi. With the scale S = max(|s|∞, maxᵢ |vᵢ − s|∞, D), the
-//! push is δ = S·2⁻⁵⁰·4ᵏ for the first k ∈ {0, …, 9} that certifies (so δ ≤ S·2⁻³²), and
+//! push δ is 0 first (a candidate may be exact), then S·2⁻⁵⁰·4ᵏ for k = 0, …, 9, the first
+//! that certifies (so δ ≤ S·2⁻³²); the next candidate is tried when none does. And
 //! when the certified candidate is the nearest one not certainly infeasible the gap is
 //!
 //! **dist_hi − min_lo ≤ δ + 2ρ + 8u·|x − s| ≤ [`REL_TOL`]·S = 2⁻³⁰·S**,

@@ -583,6 +583,9 @@ impl<'a> Shape<'a> {
             };
             out.push(match div_ball(Ball::exact(self.d), len) {
                 Some(k) => Self::cand(q.add(w.scale(k)), dir),
+                // s is the vertex, exactly: every point of the circle is D away, and the
+                // ends of its feasible arcs are meetings with other features.
+                None if self.at_vertex(i) => continue,
                 // s within rounding of the vertex: the circle is about D away.
                 None => Self::unplaced(self.d - len.hi()),
             });
@@ -618,6 +621,14 @@ impl<'a> Shape<'a> {
             (Some(x), Some(y)) => Self::cand(pt(x, y), li.nn + lj.nn),
             _ => Self::unplaced(0.0),
         });
+    }
+
+    /// Is s exactly vertex i (at time t)?
+    fn at_vertex(&self, i: usize) -> bool {
+        self.terms(i, self.s).is_some_and(|t| {
+            exact::Sum::of(&t.x[..t.n]).sign() == Some(0)
+                && exact::Sum::of(&t.y[..t.n]).sign() == Some(0)
+        })
     }
 
     /// Are edges i and j exactly parallel (e_i × e_j = 0 on the exact vertices)?

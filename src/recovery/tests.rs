@@ -298,3 +298,21 @@ proptest! {
         check(&p, &vels, t, s, d, false);
     }
 }
+
+#[test]
+fn far_from_the_origin_and_small_separations() {
+    // The L moved to (10⁶, −3·10⁵), with D a millionth of its size and s near its reflex
+    // corner: candidates and certificates work in coordinates relative to s.
+    let off = v(1.0e6, -3.0e5);
+    let p: Vec<Vect2> = ell().iter().map(|&w| w + off).collect();
+    for d in [1e-6, 0.25] {
+        let s = v(2.0, 2.0) + off + v(d / 3.0, d / 5.0);
+        check(&p, &[], 0.0, s, d, true);
+        check(&p, &[], 0.0, s, d, false);
+    }
+    // s exactly on a vertex, and exactly D from an edge.
+    check(&ell(), &[], 0.0, v(2.0, 2.0), 0.5, true);
+    check(&ell(), &[], 0.0, v(2.0, 2.0), 0.5, false);
+    check(&square(), &[], 0.0, v(2.5, 1.0), 0.5, true);
+    check(&square(), &[], 0.0, v(1.5, 1.0), 0.5, false);
+}

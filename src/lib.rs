@@ -117,6 +117,8 @@ mod predicates;
 pub mod proximity;
 pub mod quad;
 #[cfg(feature = "std")]
+pub mod recovery;
+#[cfg(feature = "std")]
 pub mod ring;
 #[cfg(feature = "std")]
 mod sweep;

@@ -47,7 +47,10 @@
 //! 7. [`intervals`](mod@intervals): the exact sets of times a point is inside, near or
 //!    breaching the polygon, then [`fence`]: keep-in exit detection, and [`offset`]: the
 //!    exact offset and inset problems and the check of a result;
-//! 8. [`moving`]: the exact truth of moving features on the plane (a flight of timed
+//! 8. [`recovery`]: the exact minimum distance to a recovery point (the way out of P's
+//!    D-neighbourhood or into its D-core), on [`tower`]'s nested square roots (a number
+//!    layer beside [`qfield`]);
+//! 9. [`moving`]: the exact truth of moving features on the plane (a flight of timed
 //!    fixes against static or keyframed areas), pieced together from [`intervals`](mod@intervals).
 
 #![forbid(unsafe_code)]
@@ -68,8 +71,10 @@ pub mod offset;
 pub mod proximity;
 pub mod qfield;
 pub mod quad;
+pub mod recovery;
 pub mod ring;
 pub mod time;
+pub mod tower;
 pub mod truth;
 pub mod well_formed;
 

@@ -1,7 +1,8 @@
 //! The oracle mirrors the engine's names, module by module. For each of paper A's
 //! modules (quad, contain, proximity, detect with every file of its folder, well_formed,
-//! ring) and of the modules built on them (intervals, fence and offset: the times inside,
-//! near and breaching, keep-in exits, certified offsets), walked as files in both crates and paired by module path (`detect::same` is
+//! ring) and of the modules built on them (intervals, fence, offset and recovery: the times
+//! inside, near and breaching, keep-in exits, certified offsets, and the nearest point out
+//! of P's D-neighbourhood or into its D-core), walked as files in both crates and paired by module path (`detect::same` is
 //! src/detect/same.rs), every `pub fn` of the engine's module has a `pub fn` of the same
 //! name in the oracle's module of the same path, with the same parameter names in the
 //! same order. The oracle's paper functions are generic over a kernel and take it first,
@@ -19,7 +20,7 @@ use std::path::Path;
 
 /// Paper A's modules, by their names in both crates: a file `<name>.rs`, or a folder
 /// `<name>/` whose files are its submodules.
-const MODULES: [&str; 9] = [
+const MODULES: [&str; 10] = [
     "quad",
     "contain",
     "proximity",
@@ -29,6 +30,7 @@ const MODULES: [&str; 9] = [
     "intervals",
     "fence",
     "offset",
+    "recovery",
 ];
 
 /// The name of a test module, skipped by the walk.

@@ -1,4 +1,7 @@
 //! The way out: the exact checks of the engine's offsets (paper A §II's polygon grown
-//! and shrunk), recovery points and bands against the oracle.
+//! and shrunk), recovery points and bands against the oracle, beside the baselines they
+//! are measured against.
 
 pub mod offset;
+pub mod polycarp;
+pub mod recovery;

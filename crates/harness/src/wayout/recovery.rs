@@ -1,0 +1,341 @@
+//! Recovery points against the exact oracle: one engine answer checked (for an `assure`
+//! hunt), and PolyCARP's point on the same input measured.
+//!
+//! The conditions (engine `recovery`, oracle `recovery`): out of P's D-neighbourhood,
+//! dist(x, P) ≥ D; into its D-core, x ∈ P and dist(x, ∂P) ≥ D. m is the exact minimum of
+//! |x − s| over the points that meet the condition.
+
+use std::cmp::Ordering;
+
+use polyguard::recovery::{
+    recovery_in, recovery_in_at, recovery_out, recovery_out_at, Recovery, RecoveryError, REL_TOL,
+};
+use polyguard::Vect2;
+use polyguard_oracle::convert::q;
+use polyguard_oracle::recovery::{self as oracle, ExactRecovery};
+
+use super::polycarp;
+
+/// Which condition.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Side {
+    /// dist(x, P) ≥ D.
+    Out,
+    /// x ∈ P and dist(x, ∂P) ≥ D.
+    In,
+}
+
+/// One recovery query: the polygon (at time t when `vels` is not empty), s and D.
+#[derive(Clone, Debug)]
+pub struct Query {
+    /// The vertices (counterclockwise).
+    pub p: Vec<Vect2>,
+    /// The vertex velocities (empty: static).
+    pub vels: Vec<Vect2>,
+    /// The time.
+    pub t: f64,
+    /// The point.
+    pub s: Vect2,
+    /// The separation D.
+    pub d: f64,
+    /// The condition.
+    pub side: Side,
+}
+
+/// What the oracle says of one engine answer.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Verdict {
+    /// A point: each field true when its property holds exactly.
+    Point {
+        /// x meets the condition.
+        condition: bool,
+        /// min_lo ≤ m.
+        min_lo_below: bool,
+        /// |x − s| ≤ dist_hi.
+        dist_hi_above: bool,
+        /// dist_hi − min_lo ≤ REL_TOL·S (the engine's stated tolerance).
+        gap_within: bool,
+        /// The engine said s was clear, and so it is (or neither).
+        clear_agrees: bool,
+    },
+    /// Both say the feasible set is empty.
+    ImpossibleAgreed,
+    /// The engine said impossible but a feasible point exists (a fault).
+    ImpossibleWrong,
+    /// The engine found a point where the oracle finds none (a fault).
+    PointWhereNone,
+    /// The engine refused the query.
+    Refused(RecoveryError),
+}
+
+impl Verdict {
+    /// No fault: every certified claim holds (a refusal is not a fault).
+    pub fn sound(&self) -> bool {
+        match self {
+            Verdict::Point {
+                condition,
+                min_lo_below,
+                dist_hi_above,
+                clear_agrees,
+                ..
+            } => *condition && *min_lo_below && *dist_hi_above && *clear_agrees,
+            Verdict::ImpossibleAgreed | Verdict::Refused(_) => true,
+            Verdict::ImpossibleWrong | Verdict::PointWhereNone => false,
+        }
+    }
+}
+
+fn arr(p: &[Vect2]) -> Vec<[f64; 2]> {
+    p.iter().map(|v| [v.x, v.y]).collect()
+}
+
+/// The engine's answer to the query.
+pub fn engine(qy: &Query) -> Result<Recovery, RecoveryError> {
+    match (qy.side, qy.vels.is_empty()) {
+        (Side::Out, true) => recovery_out(&qy.p, qy.s, qy.d),
+        (Side::In, true) => recovery_in(&qy.p, qy.s, qy.d),
+        (Side::Out, false) => recovery_out_at(&qy.p, &qy.vels, qy.t, qy.s, qy.d),
+        (Side::In, false) => recovery_in_at(&qy.p, &qy.vels, qy.t, qy.s, qy.d),
+    }
+}
+
+/// The oracle's exact answer (`None` for a non-finite input).
+pub fn exact(qy: &Query) -> Option<ExactRecovery> {
+    let (p, v, s) = (arr(&qy.p), arr(&qy.vels), [qy.s.x, qy.s.y]);
+    match (qy.side, qy.vels.is_empty()) {
+        (Side::Out, true) => oracle::recovery_out(&p, s, qy.d),
+        (Side::In, true) => oracle::recovery_in(&p, s, qy.d),
+        (Side::Out, false) => oracle::recovery_out_at(&p, &v, qy.t, s, qy.d),
+        (Side::In, false) => oracle::recovery_in_at(&p, &v, qy.t, s, qy.d),
+    }
+}
+
+/// Does x meet the query's condition, exactly?
+pub fn meets(qy: &Query, x: Vect2) -> bool {
+    let (p, v) = (arr(&qy.p), arr(&qy.vels));
+    match qy.side {
+        Side::Out => oracle::satisfies_out(&p, &v, qy.t, [x.x, x.y], qy.d),
+        Side::In => oracle::satisfies_in(&p, &v, qy.t, [x.x, x.y], qy.d),
+    }
+}
+
+/// The engine's tolerance scale S = max(|s|∞, maxᵢ |vᵢ(t) − s|∞, D) (engine module doc).
+fn scale(qy: &Query) -> f64 {
+    let at = |i: usize| match qy.vels.get(i) {
+        Some(w) => qy.p[i].at(*w, qy.t),
+        None => qy.p[i],
+    };
+    let m = (0..qy.p.len()).fold(0.0f64, |m, i| {
+        let w = at(i) - qy.s;
+        m.max(w.x.abs()).max(w.y.abs())
+    });
+    m.max(qy.d).max(qy.s.x.abs()).max(qy.s.y.abs())
+}
+
+/// Checks the engine's answer to the query against the oracle.
+pub fn check_engine(qy: &Query) -> Verdict {
+    let got = engine(qy);
+    let Some(ex) = exact(qy) else {
+        return match got {
+            Err(e) => Verdict::Refused(e),
+            Ok(_) => Verdict::PointWhereNone,
+        };
+    };
+    match (got, ex) {
+        (Err(e), _) => Verdict::Refused(e),
+        (Ok(Recovery::Impossible { .. }), ExactRecovery::Impossible) => Verdict::ImpossibleAgreed,
+        (Ok(Recovery::Impossible { .. }), ExactRecovery::Min(_)) => Verdict::ImpossibleWrong,
+        (Ok(Recovery::Point { .. }), ExactRecovery::Impossible) => Verdict::PointWhereNone,
+        (
+            Ok(Recovery::Point {
+                x,
+                dist_hi,
+                min_lo,
+                clear,
+            }),
+            ExactRecovery::Min(m),
+        ) => {
+            let (Some(lo), Some(hi), Some(dx), Some(dy)) = (q(min_lo), q(dist_hi), q(x.x), q(x.y))
+            else {
+                return Verdict::PointWhereNone;
+            };
+            let (sx, sy) = (q(qy.s.x).unwrap_or_default(), q(qy.s.y).unwrap_or_default());
+            let (ex, ey) = (dx - sx, dy - sy);
+            Verdict::Point {
+                condition: meets(qy, x),
+                min_lo_below: m.cmp_rational(&lo) != Ordering::Less,
+                dist_hi_above: &ex * &ex + &ey * &ey <= &hi * &hi,
+                gap_within: dist_hi - min_lo <= REL_TOL * scale(qy),
+                clear_agrees: clear == m.zero,
+            }
+        }
+    }
+}
+
+/// PolyCARP's recovery point on a query, measured against the exact minimum.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PolycarpReport {
+    /// PolyCARP's point.
+    pub x: Vect2,
+    /// It is s itself (PolyCARP's answer when s passes, and its fallback when nothing does).
+    pub unchanged: bool,
+    /// It meets the condition, exactly.
+    pub meets: bool,
+    /// |x − s| (f64).
+    pub dist: f64,
+    /// The exact minimum m, approximated (`None` when no point meets the condition).
+    pub min: Option<f64>,
+    /// How far x is past the condition's boundary, in f64 (for reports): for out
+    /// dist(x, P) − D, for in ±dist(x, ∂P) − D (negative outside P). Negative: it breaks it.
+    pub margin: f64,
+}
+
+impl PolycarpReport {
+    /// How much farther than the minimum PolyCARP's point is, |x − s| − m.
+    pub fn excess(&self) -> Option<f64> {
+        self.min.map(|m| self.dist - m)
+    }
+}
+
+/// PolyCARP's point for the query (static polygons: `vels` is ignored), with BUFF = `buff`
+/// and ResolBUFF = D.
+pub fn polycarp_report(qy: &Query, buff: f64) -> PolycarpReport {
+    let x = match qy.side {
+        Side::Out => polycarp::outside_recovery_point(buff, qy.d, &qy.p, qy.s),
+        Side::In => polycarp::inside_recovery_point(buff, qy.d, &qy.p, qy.s),
+    };
+    let stat = Query {
+        vels: Vec::new(),
+        ..qy.clone()
+    };
+    let min = match exact(&stat) {
+        Some(ExactRecovery::Min(m)) => Some(m.approx()),
+        _ => None,
+    };
+    PolycarpReport {
+        x,
+        margin: margin(qy, x),
+        unchanged: x == qy.s,
+        meets: meets(&stat, x),
+        dist: (x - qy.s).sq().sqrt(),
+        min,
+    }
+}
+
+/// The float margin of [`PolycarpReport::margin`] (uncertified, for reports).
+fn margin(qy: &Query, x: Vect2) -> f64 {
+    let n = qy.p.len();
+    let to_boundary = (0..n)
+        .map(|i| {
+            let (a, b) = (qy.p[i], qy.p[(i + 1) % n]);
+            let e = b - a;
+            let tau = ((x - a).dot(e) / e.sq()).clamp(0.0, 1.0);
+            (x - (a + e.scale(tau))).sq().sqrt()
+        })
+        .fold(f64::INFINITY, f64::min);
+    let inside = polyguard::contain::num_cross(&qy.p[..], x) % 2 == 1;
+    match (qy.side, inside) {
+        (Side::Out, true) => -qy.d,
+        (Side::Out, false) => to_boundary - qy.d,
+        (Side::In, true) => to_boundary - qy.d,
+        (Side::In, false) => -to_boundary - qy.d,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn v(x: f64, y: f64) -> Vect2 {
+        Vect2::new(x, y)
+    }
+
+    fn query(p: &[Vect2], s: Vect2, d: f64, side: Side) -> Query {
+        Query {
+            p: p.to_vec(),
+            vels: Vec::new(),
+            t: 0.0,
+            s,
+            d,
+            side,
+        }
+    }
+
+    /// Measured on the inputs below (BUFF = D/100, ResolBUFF = D): where PolyCARP's point
+    /// breaks the condition, is farther than the minimum, or answers where nothing is
+    /// feasible, while the engine's certified answer holds on every one.
+    #[test]
+    fn polycarp_against_the_exact_minimum() {
+        let sq = [v(0.0, 0.0), v(2.0, 0.0), v(2.0, 2.0), v(0.0, 2.0)];
+        let tri = [v(0.0, 0.0), v(4.0, 0.0), v(0.5, 1.0)];
+        let thin = [v(0.0, 0.0), v(10.0, 0.0), v(10.0, 0.5), v(0.0, 0.5)];
+        // A rectangle with a sharp V notch cut down from the top to (2, 1).
+        let notch = [
+            v(0.0, 0.0),
+            v(4.0, 0.0),
+            v(4.0, 3.0),
+            v(2.3, 3.0),
+            v(2.0, 1.0),
+            v(1.7, 3.0),
+            v(0.0, 3.0),
+        ];
+        let report = |c: &Query| polycarp_report(c, c.d / 100.0);
+
+        // In the notch, out by 1/2: PolyCARP's point is 0.03 too close to the notch's
+        // sides, so it breaks the condition, and it is nearer than the true minimum 0.9.
+        let c = query(&notch, v(2.0, 2.5), 0.5, Side::Out);
+        let r = report(&c);
+        assert!(!r.meets && r.margin < -0.03 && r.dist < 0.9);
+        assert_eq!(r.min.map(|m| (m * 10.0).round()), Some(9.0));
+
+        // A 0.5-wide strip has no 0.3-core: PolyCARP still answers a point (0.3, 0.3),
+        // 0.2 from the top edge; the engine says impossible.
+        let c = query(&thin, v(5.0, 0.1), 0.3, Side::In);
+        let r = report(&c);
+        assert!(r.min.is_none() && !r.meets && !r.unchanged);
+        assert_eq!(check_engine(&c), Verdict::ImpossibleAgreed);
+
+        // Into a triangle's 0.2-core: PolyCARP's point sits on the core's boundary and
+        // misses it by rounding (the exact check fails).
+        let r = report(&query(&tri, v(3.5, 0.2), 0.2, Side::In));
+        assert!(!r.meets && r.margin.abs() <= 64.0 * f64::EPSILON);
+
+        // Farther than needed: beside a square's corner (0.05 over the exact 0.859), by a
+        // triangle's sharp vertex (0.066 over 0.159), and from the notch's bottom, where
+        // PolyCARP goes up the notch (3.17) instead of down through the base (1.7).
+        let r = report(&query(&sq, v(2.1, 2.1), 1.0, Side::Out));
+        assert!(r.meets && r.excess().is_some_and(|e| e > 0.05));
+        let r = report(&query(&tri, v(4.1, -0.1), 0.3, Side::Out));
+        assert!(r.meets && r.excess().is_some_and(|e| e > 0.06));
+        let r = report(&query(&notch, v(2.0, 1.2), 0.5, Side::Out));
+        assert!(r.meets && r.excess().is_some_and(|e| e > 1.4));
+
+        // Where PolyCARP is exact: the reflex corner of an L and the square's core corner.
+        let r = report(&query(&sq, v(-1.0, -1.0), 0.5, Side::In));
+        assert!(r.meets && r.excess().is_some_and(|e| e.abs() <= 64.0 * f64::EPSILON));
+
+        // The engine, on every one of these inputs: sound and within its tolerance.
+        for (p, s, d, side) in [
+            (&notch[..], v(2.0, 2.5), 0.5, Side::Out),
+            (&notch[..], v(2.0, 1.2), 0.5, Side::Out),
+            (&notch[..], v(2.0, 1.6), 0.3, Side::In),
+            (&tri[..], v(3.5, 0.2), 0.2, Side::In),
+            (&tri[..], v(4.1, -0.1), 0.3, Side::Out),
+            (&sq[..], v(2.1, 2.1), 1.0, Side::Out),
+            (&sq[..], v(-1.0, -1.0), 0.5, Side::In),
+        ] {
+            let verdict = check_engine(&query(p, s, d, side));
+            assert!(verdict.sound(), "{verdict:?}");
+            assert!(
+                matches!(
+                    verdict,
+                    Verdict::Point {
+                        gap_within: true,
+                        ..
+                    }
+                ),
+                "{verdict:?}"
+            );
+        }
+    }
+}

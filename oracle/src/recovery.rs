@@ -1,0 +1,550 @@
+//! Recovery points, exactly: the minimum distance from s to the points that satisfy a
+//! recovery condition, and the exact check of a given point (paper A §II's polygons,
+//! §II.G's proximity as the distance to a segment, §II–§III's motion for `_at`).
+//!
+//! # Definitions
+//! P is a simple counterclockwise polygon (closed), D ≥ 0, dist Euclidean (0 inside P).
+//! - out: x is feasible when **dist(x, P) ≥ D**;
+//! - in: x is feasible when **x ∈ P and dist(x, ∂P) ≥ D**.
+//!
+//! m = min {|x − s| : x feasible}. The minimiser lies on the boundary of the feasible set,
+//! on a *feature*: an edge shifted by D along its normal (outward for out, inward for in)
+//! or a circle of radius D about a vertex; it is either the nearest point to s of one
+//! feature (the clamped projection on a shifted edge; the point of a circle on the ray from
+//! its centre through s) or a point where two features meet. Every such candidate is built
+//! exactly in a [`Tower`] of square roots (√|e|² for a shifted edge, one more root for a
+//! line–circle or circle–circle meeting) and kept when it is feasible, decided exactly.
+//! Every feasible candidate is at distance ≥ m from s, and the minimiser is one of them, so
+//! m is the least of their distances: [`ExactMin`] holds their squared distances and
+//! compares m with a rational exactly, without choosing among them.
+
+use core::cmp::Ordering;
+
+use num_rational::BigRational;
+use num_traits::{One, Zero};
+
+use crate::convert::q;
+use crate::tower::{sign_q, Elem, Tower};
+
+/// The exact minimum distance m, as the least of finitely many tower numbers.
+#[derive(Clone, Debug)]
+pub struct ExactMin {
+    /// s itself is feasible (m = 0).
+    pub zero: bool,
+    /// The squared distances to s of the feasible candidates, each in its own tower.
+    pub cands: Vec<(Tower, Elem)>,
+}
+
+/// The exact answer of a recovery query.
+#[derive(Clone, Debug)]
+pub enum ExactRecovery {
+    /// The feasible set is not empty; its distance from s is m.
+    Min(ExactMin),
+    /// No point is feasible (recovery_in on a polygon thinner than 2D).
+    Impossible,
+}
+
+impl ExactMin {
+    /// The exact order of m and a rational r ≥ 0 (m² against r²: both are ≥ 0).
+    pub fn cmp_rational(&self, r: &BigRational) -> Ordering {
+        if self.zero {
+            return sign_q(&-r.clone());
+        }
+        let r2 = r * r;
+        let mut best = Ordering::Greater;
+        for (t, d2) in &self.cands {
+            match t.sign(&t.sub(d2, &t.rat(&r2))) {
+                Ordering::Less => return Ordering::Less,
+                Ordering::Equal => best = Ordering::Equal,
+                Ordering::Greater => {}
+            }
+        }
+        best
+    }
+
+    /// A float approximation of m (for reports; no decision reads it).
+    pub fn approx(&self) -> f64 {
+        if self.zero {
+            return 0.0;
+        }
+        self.cands
+            .iter()
+            .map(|(t, d2)| t.approx(d2).max(0.0).sqrt())
+            .fold(f64::INFINITY, f64::min)
+    }
+}
+
+/// Which condition.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+enum Side {
+    Out,
+    In,
+}
+
+type Pt = [BigRational; 2];
+
+/// The exact inputs: vertices (at time t), s, D.
+struct Scene {
+    v: Vec<Pt>,
+    s: Pt,
+    d: BigRational,
+}
+
+/// The exact minimum for the out condition (module doc); `None` for a non-finite input
+/// or D < 0.
+pub fn recovery_out(p: &[[f64; 2]], s: [f64; 2], d: f64) -> Option<ExactRecovery> {
+    Some(scene(p, None, s, d)?.solve(Side::Out))
+}
+
+/// The exact minimum for the in condition (module doc), or `Impossible`.
+pub fn recovery_in(p: &[[f64; 2]], s: [f64; 2], d: f64) -> Option<ExactRecovery> {
+    Some(scene(p, None, s, d)?.solve(Side::In))
+}
+
+/// [`recovery_out`] for the exact polygon (p_i + t·V_i) at time t.
+pub fn recovery_out_at(
+    p: &[[f64; 2]],
+    vels: &[[f64; 2]],
+    t: f64,
+    s: [f64; 2],
+    d: f64,
+) -> Option<ExactRecovery> {
+    Some(scene(p, Some((vels, t)), s, d)?.solve(Side::Out))
+}
+
+/// [`recovery_in`] for the exact polygon (p_i + t·V_i) at time t.
+pub fn recovery_in_at(
+    p: &[[f64; 2]],
+    vels: &[[f64; 2]],
+    t: f64,
+    s: [f64; 2],
+    d: f64,
+) -> Option<ExactRecovery> {
+    Some(scene(p, Some((vels, t)), s, d)?.solve(Side::In))
+}
+
+/// Does x satisfy the out condition dist(x, P(t)) ≥ D exactly? (`vels` empty: static.)
+pub fn satisfies_out(p: &[[f64; 2]], vels: &[[f64; 2]], t: f64, x: [f64; 2], d: f64) -> bool {
+    satisfies(p, vels, t, x, d, Side::Out)
+}
+
+/// Does x satisfy the in condition x ∈ P(t), dist(x, ∂P(t)) ≥ D exactly?
+pub fn satisfies_in(p: &[[f64; 2]], vels: &[[f64; 2]], t: f64, x: [f64; 2], d: f64) -> bool {
+    satisfies(p, vels, t, x, d, Side::In)
+}
+
+fn satisfies(p: &[[f64; 2]], vels: &[[f64; 2]], t: f64, x: [f64; 2], d: f64, side: Side) -> bool {
+    let mv = if vels.is_empty() {
+        None
+    } else {
+        Some((vels, t))
+    };
+    let Some(sc) = scene(p, mv, x, d) else {
+        return false;
+    };
+    let tw = Tower::new();
+    let x = [Elem::rat(sc.s[0].clone()), Elem::rat(sc.s[1].clone())];
+    sc.feasible(side, &tw, &x)
+}
+
+/// The exact scene, or `None` for a non-finite input or D < 0.
+fn scene(p: &[[f64; 2]], vels: Option<(&[[f64; 2]], f64)>, s: [f64; 2], d: f64) -> Option<Scene> {
+    let d = q(d)?;
+    if d < BigRational::zero() || p.len() < 3 {
+        return None;
+    }
+    let mut v = Vec::with_capacity(p.len());
+    for (i, pi) in p.iter().enumerate() {
+        let mut x = [q(pi[0])?, q(pi[1])?];
+        if let Some((vs, t)) = vels {
+            let vi = vs.get(i)?;
+            let t = q(t)?;
+            x = [&x[0] + &t * q(vi[0])?, &x[1] + &t * q(vi[1])?];
+        }
+        v.push(x);
+    }
+    Some(Scene {
+        v,
+        s: [q(s[0])?, q(s[1])?],
+        d,
+    })
+}
+
+fn sub(a: &Pt, b: &Pt) -> Pt {
+    [&a[0] - &b[0], &a[1] - &b[1]]
+}
+
+fn dot(a: &Pt, b: &Pt) -> BigRational {
+    &a[0] * &b[0] + &a[1] * &b[1]
+}
+
+impl Scene {
+    fn n(&self) -> usize {
+        self.v.len()
+    }
+
+    fn edge(&self, i: usize) -> (Pt, Pt) {
+        let a = self.v[i].clone();
+        let b = self.v[(i + 1) % self.n()].clone();
+        let e = sub(&b, &a);
+        (a, e)
+    }
+
+    /// Is the tower point x feasible? Every edge at least D away (the squared distance
+    /// to the segment, by the foot of the perpendicular), and the side of ∂P by the
+    /// crossing parity of the upward ray (exact, as x is off ∂P when D > 0).
+    fn feasible(&self, side: Side, tw: &Tower, x: &[Elem; 2]) -> bool {
+        let d2 = &self.d * &self.d;
+        let mut on_boundary = false;
+        for i in 0..self.n() {
+            let (a, e) = self.edge(i);
+            let big_e = dot(&e, &e);
+            let dx = tw.sub(&x[0], &tw.rat(&a[0]));
+            let dy = tw.sub(&x[1], &tw.rat(&a[1]));
+            let t = tw.add(&dx.scale(&e[0]), &dy.scale(&e[1]));
+            let gap = if tw.sign(&t) != Ordering::Greater {
+                tw.sub(&tw.add(&tw.sq(&dx), &tw.sq(&dy)), &tw.rat(&d2))
+            } else if tw.sign(&tw.sub(&t, &tw.rat(&big_e))) != Ordering::Less {
+                let bx = tw.sub(&dx, &tw.rat(&e[0]));
+                let by = tw.sub(&dy, &tw.rat(&e[1]));
+                tw.sub(&tw.add(&tw.sq(&bx), &tw.sq(&by)), &tw.rat(&d2))
+            } else {
+                let cr = tw.sub(&dy.scale(&e[0]), &dx.scale(&e[1]));
+                tw.sub(&tw.sq(&cr), &tw.rat(&(&d2 * &big_e)))
+            };
+            match tw.sign(&gap) {
+                Ordering::Less => return false,
+                Ordering::Equal if self.d.is_zero() => on_boundary = true,
+                _ => {}
+            }
+        }
+        match side {
+            Side::Out if self.d.is_zero() => true,
+            Side::Out => !self.inside(tw, x),
+            Side::In => on_boundary || self.inside(tw, x),
+        }
+    }
+
+    /// The crossing parity of the rightward ray from x (x off ∂P).
+    fn inside(&self, tw: &Tower, x: &[Elem; 2]) -> bool {
+        let mut odd = false;
+        for i in 0..self.n() {
+            let (a, e) = self.edge(i);
+            let b = [&a[0] + &e[0], &a[1] + &e[1]];
+            let above = |y: &BigRational| tw.sign(&tw.sub(&tw.rat(y), &x[1])) == Ordering::Greater;
+            if above(&a[1]) == above(&b[1]) {
+                continue;
+            }
+            // x_cross − x > 0 ⟺ (a_x − x)·e_y − (a_y − y)·e_x has the sign of e_y.
+            let ax = tw.sub(&tw.rat(&a[0]), &x[0]);
+            let ay = tw.sub(&tw.rat(&a[1]), &x[1]);
+            let num = tw.sub(&ax.scale(&e[1]), &ay.scale(&e[0]));
+            if tw.sign(&num) == sign_q(&e[1]) {
+                odd = !odd;
+            }
+        }
+        odd
+    }
+
+    /// Keeps the candidate x when feasible, with its squared distance to s.
+    fn keep(&self, side: Side, tw: Tower, x: [Elem; 2], out: &mut Vec<(Tower, Elem)>) {
+        if self.feasible(side, &tw, &x) {
+            let dx = tw.sub(&x[0], &tw.rat(&self.s[0]));
+            let dy = tw.sub(&x[1], &tw.rat(&self.s[1]));
+            let d2 = tw.add(&tw.sq(&dx), &tw.sq(&dy));
+            out.push((tw, d2));
+        }
+    }
+
+    /// The exact minimum over the feasible candidates (module doc).
+    fn solve(&self, side: Side) -> ExactRecovery {
+        let tw0 = Tower::new();
+        let s = [Elem::rat(self.s[0].clone()), Elem::rat(self.s[1].clone())];
+        if self.feasible(side, &tw0, &s) {
+            return ExactRecovery::Min(ExactMin {
+                zero: true,
+                cands: Vec::new(),
+            });
+        }
+        let sig = if side == Side::Out {
+            BigRational::one()
+        } else {
+            -BigRational::one()
+        };
+        let sd = &sig * &self.d;
+        let mut out = Vec::new();
+        let n = self.n();
+        for i in 0..n {
+            self.projection(side, &sd, i, &mut out);
+            self.circle_nearest(side, i, &mut out);
+            for j in 0..n {
+                if j > i {
+                    self.line_line(side, &sd, i, j, &mut out);
+                    self.circle_circle(side, i, j, &mut out);
+                }
+                self.line_circle(side, &sd, i, j, &mut out);
+            }
+        }
+        if out.is_empty() {
+            ExactRecovery::Impossible
+        } else {
+            ExactRecovery::Min(ExactMin {
+                zero: false,
+                cands: out,
+            })
+        }
+    }
+
+    /// The shifted edge i's start p0 = a + σD·N/√E (N = e⊥ = (e_y, −e_x)) in a tower
+    /// holding √E as its first root.
+    fn shifted_start(&self, sd: &BigRational, i: usize) -> (Tower, [Elem; 2], Pt, BigRational) {
+        let (a, e) = self.edge(i);
+        let big_e = dot(&e, &e);
+        let mut tw = Tower::new();
+        let root = tw
+            .adjoin(&Elem::rat(big_e.clone()))
+            .unwrap_or(Elem::rat(big_e.clone()));
+        let k = sd / &big_e;
+        let p0 = [
+            tw.add(&tw.rat(&a[0]), &root.scale(&(&k * &e[1]))),
+            tw.add(&tw.rat(&a[1]), &root.scale(&(-&k * &e[0]))),
+        ];
+        (tw, p0, e, big_e)
+    }
+
+    /// The clamped projection of s on shifted edge i (the parameter along e is rational).
+    fn projection(&self, side: Side, sd: &BigRational, i: usize, out: &mut Vec<(Tower, Elem)>) {
+        let (tw, p0, e, big_e) = self.shifted_start(sd, i);
+        let tau = dot(&sub(&self.s, &self.v[i]), &e) / &big_e;
+        let tau = tau.clamp(BigRational::zero(), BigRational::one());
+        let x = [
+            tw.add(&p0[0], &tw.rat(&(&tau * &e[0]))),
+            tw.add(&p0[1], &tw.rat(&(&tau * &e[1]))),
+        ];
+        self.keep(side, tw, x, out);
+    }
+
+    /// The point of the circle about vertex i on the ray from it through s.
+    fn circle_nearest(&self, side: Side, i: usize, out: &mut Vec<(Tower, Elem)>) {
+        let w = sub(&self.s, &self.v[i]);
+        let l2 = dot(&w, &w);
+        if l2.is_zero() {
+            return;
+        }
+        let mut tw = Tower::new();
+        let Some(root) = tw.adjoin(&Elem::rat(l2.clone())) else {
+            return;
+        };
+        let k = &self.d / &l2;
+        let x = [
+            tw.add(&tw.rat(&self.v[i][0]), &root.scale(&(&k * &w[0]))),
+            tw.add(&tw.rat(&self.v[i][1]), &root.scale(&(&k * &w[1]))),
+        ];
+        self.keep(side, tw, x, out);
+    }
+
+    /// Where shifted edges i and j meet: N_i·x = N_i·a_i + σD√E_i, likewise j (Cramer).
+    fn line_line(
+        &self,
+        side: Side,
+        sd: &BigRational,
+        i: usize,
+        j: usize,
+        out: &mut Vec<(Tower, Elem)>,
+    ) {
+        let (ai, ei) = self.edge(i);
+        let (aj, ej) = self.edge(j);
+        let ni = [ei[1].clone(), -&ei[0]];
+        let nj = [ej[1].clone(), -&ej[0]];
+        let det = &ni[0] * &nj[1] - &ni[1] * &nj[0];
+        if det.is_zero() {
+            return;
+        }
+        let mut tw = Tower::new();
+        let (Some(ri), Some(rj)) = (
+            tw.adjoin(&Elem::rat(dot(&ei, &ei))),
+            tw.adjoin(&Elem::rat(dot(&ej, &ej))),
+        ) else {
+            return;
+        };
+        let ci = tw.add(&tw.rat(&dot(&ni, &ai)), &ri.scale(sd));
+        let cj = tw.add(&tw.rat(&dot(&nj, &aj)), &rj.scale(sd));
+        let inv = BigRational::one() / det;
+        let x = tw.sub(&ci.scale(&nj[1]), &cj.scale(&ni[1])).scale(&inv);
+        let y = tw.sub(&cj.scale(&ni[0]), &ci.scale(&nj[0])).scale(&inv);
+        self.keep(side, tw, [x, y], out);
+    }
+
+    /// Where shifted edge i (p0 + τe) meets the circle about vertex j:
+    /// E τ² + 2Bτ + C = 0, B = e·(p0 − v_j), C = |p0 − v_j|² − D².
+    fn line_circle(
+        &self,
+        side: Side,
+        sd: &BigRational,
+        i: usize,
+        j: usize,
+        out: &mut Vec<(Tower, Elem)>,
+    ) {
+        let (mut tw, p0, e, big_e) = self.shifted_start(sd, i);
+        let wx = tw.sub(&p0[0], &tw.rat(&self.v[j][0]));
+        let wy = tw.sub(&p0[1], &tw.rat(&self.v[j][1]));
+        let b = tw.add(&wx.scale(&e[0]), &wy.scale(&e[1]));
+        let c = tw.sub(
+            &tw.add(&tw.sq(&wx), &tw.sq(&wy)),
+            &tw.rat(&(&self.d * &self.d)),
+        );
+        let disc = tw.sub(&tw.sq(&b), &c.scale(&big_e));
+        let Some(root) = tw.adjoin(&disc) else {
+            return;
+        };
+        let inv_e = BigRational::one() / &big_e;
+        for sgn in [BigRational::one(), -BigRational::one()] {
+            let tau = tw.add(&b.scale(&-&inv_e), &root.scale(&(&sgn * &inv_e)));
+            let x = [
+                tw.add(&p0[0], &tau.scale(&e[0])),
+                tw.add(&p0[1], &tau.scale(&e[1])),
+            ];
+            self.keep(side, tw.clone(), x, out);
+        }
+    }
+
+    /// Where the circles about vertices i and j meet: m ± (v_j − v_i)⊥·h,
+    /// h² = (D² − L/4)/L, L = |v_j − v_i|².
+    fn circle_circle(&self, side: Side, i: usize, j: usize, out: &mut Vec<(Tower, Elem)>) {
+        let w = sub(&self.v[j], &self.v[i]);
+        let l = dot(&w, &w);
+        if l.is_zero() {
+            return;
+        }
+        let quarter = BigRational::new(1.into(), 4.into());
+        let h2 = (&self.d * &self.d - &l * &quarter) / &l;
+        let mut tw = Tower::new();
+        let Some(h) = tw.adjoin(&Elem::rat(h2)) else {
+            return;
+        };
+        let half = BigRational::new(1.into(), 2.into());
+        let m = [
+            (&self.v[i][0] + &self.v[j][0]) * &half,
+            (&self.v[i][1] + &self.v[j][1]) * &half,
+        ];
+        for sgn in [BigRational::one(), -BigRational::one()] {
+            let x = [
+                tw.add(&tw.rat(&m[0]), &h.scale(&(&sgn * &w[1]))),
+                tw.add(&tw.rat(&m[1]), &h.scale(&(-&sgn * &w[0]))),
+            ];
+            self.keep(side, tw.clone(), x, out);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sq2() -> Vec<[f64; 2]> {
+        vec![[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]]
+    }
+
+    fn r(n: i64, d: i64) -> BigRational {
+        BigRational::new(n.into(), d.into())
+    }
+
+    fn min_of(e: Option<ExactRecovery>) -> ExactMin {
+        match e {
+            Some(ExactRecovery::Min(m)) => m,
+            other => panic!("{other:?}"),
+        }
+    }
+
+    #[test]
+    fn square_out_and_in() {
+        // From the centre, out of the 1/2-neighbourhood: 3/2 exactly.
+        let m = min_of(recovery_out(&sq2(), [1.0, 1.0], 0.5));
+        assert_eq!(m.cmp_rational(&r(3, 2)), Ordering::Equal);
+        // From (−1, −1) into the 1/2-core: to (1/2, 1/2), √(9/2), between 2.121 and 2.122.
+        let m = min_of(recovery_in(&sq2(), [-1.0, -1.0], 0.5));
+        assert_eq!(m.cmp_rational(&r(2121, 1000)), Ordering::Greater);
+        assert_eq!(m.cmp_rational(&r(2122, 1000)), Ordering::Less);
+        assert!(satisfies_in(&sq2(), &[], 0.0, [0.5, 0.5], 0.5));
+        assert!(!satisfies_in(&sq2(), &[], 0.0, [0.5, 0.49], 0.5));
+        assert!(satisfies_out(&sq2(), &[], 0.0, [2.5, 1.0], 0.5));
+        assert!(!satisfies_out(&sq2(), &[], 0.0, [2.3, 2.3], 0.5));
+    }
+
+    /// m is not above the distance of any feasible point: points drawn about s (half of
+    /// them just beyond the float value of m, where a missed candidate would show) that
+    /// meet the condition, exactly, are all at least m away (m ≤ an upper bound of
+    /// |x − s|).
+    #[test]
+    fn no_feasible_point_is_nearer_than_the_minimum() {
+        let polys: [&[[f64; 2]]; 3] = [
+            &[
+                [0.0, 0.0],
+                [4.0, 0.0],
+                [4.0, 3.0],
+                [2.3, 3.0],
+                [2.0, 1.0],
+                [1.7, 3.0],
+                [0.0, 3.0],
+            ],
+            &[[0.0, 0.0], [3.0, 0.5], [2.5, 2.0], [0.2, 1.5]],
+            &[[0.0, 0.0], [4.0, 0.0], [0.5, 1.0]],
+        ];
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for p in polys {
+            for (s, d) in [([2.0, 1.5], 0.4), ([1.0, 0.4], 0.3), ([3.5, 0.2], 0.2)] {
+                for out in [true, false] {
+                    let ex = if out {
+                        recovery_out(p, s, d)
+                    } else {
+                        recovery_in(p, s, d)
+                    };
+                    let Some(ExactRecovery::Min(m)) = ex else {
+                        continue;
+                    };
+                    let approx = m.approx();
+                    for k in 0..600 {
+                        let rad = if k % 2 == 0 {
+                            3.0 * next()
+                        } else {
+                            approx * (1.0 + 0.1 * next())
+                        };
+                        let ang = core::f64::consts::TAU * next();
+                        let x = [s[0] + rad * ang.cos(), s[1] + rad * ang.sin()];
+                        let meets = if out {
+                            satisfies_out(p, &[], 0.0, x, d)
+                        } else {
+                            satisfies_in(p, &[], 0.0, x, d)
+                        };
+                        if !meets {
+                            continue;
+                        }
+                        let dist = ((x[0] - s[0]).powi(2) + (x[1] - s[1]).powi(2)).sqrt();
+                        // An upper bound of the exact |x − s|: a few roundings, 2⁻⁵⁰ covers them.
+                        let hi = q(dist * (1.0 + 2f64.powi(-50))).unwrap();
+                        assert_ne!(
+                            m.cmp_rational(&hi),
+                            Ordering::Greater,
+                            "{p:?} {s:?} {d} {out}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn thin_rectangle_has_no_core() {
+        let p = [[0.0, 0.0], [10.0, 0.0], [10.0, 0.5], [0.0, 0.5]];
+        assert!(matches!(
+            recovery_in(&p, [5.0, 0.25], 0.3),
+            Some(ExactRecovery::Impossible)
+        ));
+    }
+}

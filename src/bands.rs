@@ -69,10 +69,14 @@
 //! and the box of x_m's segment are compared along x and along y: a gap (rounded
 //! down) beyond D + r makes the obstacle Clear for the cell without a scan. The two
 //! scans stop at their first deciding piece: the Clear test at the first piece that
-//! does not fail, the Conflict test at the first certain one.
+//! does not fail, the Conflict test at the first certain one. When r > D and the
+//! obstacle's swept box is narrower than 2(r − D), no point can be r − D deep inside
+//! it, and the breach scan is skipped.
 //!
 //! # Refinement
-//! Unknown cells are halved, down to a minimum width that starts at `unknown_max`/2
+//! The range starts as the fewest equal cells (a power of two, at most 256) whose r
+//! is at most D (r_z at most H): coarser cells could be decided only far from every
+//! obstacle, which the prefilter does anyway. Unknown cells are halved, down to a minimum width that starts at `unknown_max`/2
 //! and halves while the Unknown total is above `unknown_max` and some Unknown cell
 //! can still be split (its float midpoint strictly inside) within a budget of
 //! [`MAX_CELLS`] cell tests. `met` says whether the total came under `unknown_max`: a

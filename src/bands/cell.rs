@@ -40,6 +40,9 @@ struct Probe {
     rz: f64,
 }
 
+/// The most cells a band answer starts with (see [`Tester::first_cells`]).
+const FIRST_CELLS_MAX: usize = 256;
+
 /// A box [lo.x, hi.x] × [lo.y, hi.y].
 #[derive(Clone, Copy, Debug)]
 struct Box2 {
@@ -56,6 +59,13 @@ impl Box2 {
             lo: Vect2::new(a.x.min(lo(a.x, w.x)), a.y.min(lo(a.y, w.y))),
             hi: Vect2::new(a.x.max(hi(a.x, w.x)), a.y.max(hi(a.y, w.y))),
         }
+    }
+
+    /// Is the box narrower than 2·depth along x or y (rounded down)? Then no point of
+    /// a polygon inside it is farther than `depth` from the polygon's boundary.
+    fn narrower_than(self, depth: f64) -> bool {
+        let twice = 2.0 * depth;
+        round_down(self.hi.x - self.lo.x) < twice || round_down(self.hi.y - self.lo.y) < twice
     }
 
     /// The smallest box holding both.
@@ -275,6 +285,9 @@ impl<'a> Tester<'a> {
                 found: false,
             };
             self.scan(i, pr, z, Relation::Near, near, &mut f) && f.found
+        } else if self.boxes[i].narrower_than(round_up(pr.r - d)) {
+            // No point of the obstacle is r − D deep inside: its swept box is narrower.
+            false
         } else {
             let deep = Separation {
                 d: round_up(pr.r - d),
@@ -372,12 +385,39 @@ impl<'a> Tester<'a> {
         }
     }
 
+    /// How many equal cells to start with: the fewest (a power of two, at most
+    /// [`FIRST_CELLS_MAX`]) whose radius is at most the separation it is added to (D,
+    /// or H for vertical speeds): coarser cells could not be decided but where no
+    /// obstacle is near.
+    fn first_cells(&self, lo: f64, hi: f64) -> usize {
+        let Separation { d, h } = self.traffic.sep;
+        let mut n = 1;
+        while n < FIRST_CELLS_MAX {
+            let pr = self.probe(lo, lo + (hi - lo) / n as f64);
+            if pr.r <= d && pr.rz <= h {
+                break;
+            }
+            n *= 2;
+        }
+        n
+    }
+
     /// The band answer over [lo, hi] (parent module's refinement).
     pub(super) fn bands(mut self, lo: f64, hi: f64, unknown_max: f64) -> Bands {
         let all: Vec<u32> = (0..self.traffic.obstacles.len() as u32).collect();
         let mut w_min = unknown_max * 0.5;
         let mut cells = Vec::new();
-        self.settle(lo, hi, &all, w_min, &mut cells);
+        let n = self.first_cells(lo, hi);
+        let mut a = lo;
+        for k in 1..=n {
+            let b = if k == n {
+                hi
+            } else {
+                lo + (hi - lo) * (k as f64 / n as f64)
+            };
+            self.settle(a, b, &all, w_min, &mut cells);
+            a = b;
+        }
         loop {
             let unknown = unknown_width(&cells);
             if unknown <= unknown_max {

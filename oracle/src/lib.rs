@@ -45,7 +45,8 @@
 //! 5. [`case`]: a validated case and paper A's answer for it;
 //! 6. [`truth`](mod@truth): the exact ground truth of a case;
 //! 7. [`intervals`](mod@intervals): the exact sets of times a point is inside, near or
-//!    breaching the polygon, then [`fence`]: keep-in exit detection;
+//!    breaching the polygon, then [`fence`]: keep-in exit detection, and
+//!    [`bands`](mod@bands): whether one velocity is in conflict, exactly;
 //! 8. [`moving`]: the exact truth of moving features on the plane (a flight of timed
 //!    fixes against static or keyframed areas), pieced together from [`intervals`](mod@intervals).
 
@@ -53,6 +54,7 @@
 #![warn(missing_docs)]
 
 pub mod algebraic;
+pub mod bands;
 pub mod case;
 pub mod contain;
 pub mod convert;

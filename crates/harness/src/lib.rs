@@ -16,6 +16,8 @@
 //! - [`paper_b`]: paper B's hunt (scenario generator, judge, pictures).
 //! - [`intervals`]: the hunt of certified intervals; [`moving`]: the hunt of moving
 //!   features (flights against static and keyframed areas).
+//! - [`wayout`]: the checks of the way out (bands: values drawn in each band against
+//!   the exact conflict of their velocities).
 #![deny(missing_docs)]
 
 pub mod answer;
@@ -29,4 +31,5 @@ pub mod moving;
 pub mod paper_b;
 pub mod report;
 pub mod svg;
+pub mod wayout;
 pub mod workload;

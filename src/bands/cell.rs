@@ -444,8 +444,7 @@ fn unknown_width(cells: &[Cell]) -> f64 {
     cells
         .iter()
         .filter(|c| c.kind == BandKind::Unknown)
-        .map(|c| c.hi - c.lo)
-        .sum()
+        .fold(0.0, |u, c| u + (c.hi - c.lo))
 }
 
 /// Adjacent cells of one kind merged into bands, with the Unknown total.

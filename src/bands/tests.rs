@@ -289,8 +289,8 @@ fn vertical_speed_bands_under_a_slab() {
 
 #[test]
 fn a_thin_conflict_between_coarse_samples_is_found() {
-    // A small square 150 east of north-east's sample grid would miss: half side 1,
-    // D = 0.5, 150 away, its band ~1.1° wide around 30°.
+    // A small square of half side 1 at 150 on the bearing 30°, D = 0.5: its conflict
+    // band is about 30° ± 0.57°, thinner than the first cells (about 5.6° wide).
     let c = (150.0 * 0.5, 150.0 * (3f64.sqrt() / 2.0));
     let p = square(c.0, c.1, 1.0);
     let vels = vec![Vect2::ZERO; 4];

@@ -228,8 +228,7 @@ pub fn sampled_course_bands(traffic: &Traffic, speed: f64, step: f64) -> Bands {
     let unknown_total = bands
         .iter()
         .filter(|b| b.kind == BandKind::Unknown)
-        .map(|b| b.hi - b.lo)
-        .sum();
+        .fold(0.0, |u, b| u + (b.hi - b.lo));
     Bands {
         bands,
         unknown_total,

@@ -299,7 +299,11 @@ fn validate(traffic: &Traffic) -> Result<(), BandsError> {
                     field: format!("obstacles[{i}].slab"),
                 });
             }
-            for (name, x) in [("bottom", slab.bottom), ("top", slab.top), ("vsp", slab.vsp)] {
+            for (name, x) in [
+                ("bottom", slab.bottom),
+                ("top", slab.top),
+                ("vsp", slab.vsp),
+            ] {
                 finite(&format!("obstacles[{i}].slab.{name}"), x)?;
             }
         }
@@ -333,11 +337,7 @@ fn check_unknown_max(unknown_max: f64) -> Result<(), BandsError> {
 
 /// Course bands over [0, 2π) at `speed` (module doc: definitions, certificate,
 /// refinement). The last band ends at fl(2π) and covers the courses up to 2π.
-pub fn course_bands(
-    traffic: &Traffic,
-    speed: f64,
-    unknown_max: f64,
-) -> Result<Bands, BandsError> {
+pub fn course_bands(traffic: &Traffic, speed: f64, unknown_max: f64) -> Result<Bands, BandsError> {
     validate(traffic)?;
     at_least_zero("speed", speed, false)?;
     check_unknown_max(unknown_max)?;

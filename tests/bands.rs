@@ -71,7 +71,10 @@ prop_compose! {
 /// The bands tile [lo, hi] in order without gaps, adjacent kinds differ, the Unknown
 /// total is the sum of the Unknown widths and `met` says whether it is within `max`.
 fn tiles(b: &Bands, lo: f64, hi: f64, max: f64) -> bool {
-    let ordered = b.bands.windows(2).all(|w| w[0].hi == w[1].lo && w[0].kind != w[1].kind);
+    let ordered = b
+        .bands
+        .windows(2)
+        .all(|w| w[0].hi == w[1].lo && w[0].kind != w[1].kind);
     let u: f64 = b
         .bands
         .iter()
@@ -99,7 +102,7 @@ proptest! {
     }
 
     #[test]
-    fn speed_bands_agree_with_the_exact_conflict(case in scene(), course in 0.0..6.28f64) {
+    fn speed_bands_agree_with_the_exact_conflict(case in scene(), course in 0.0..std::f64::consts::TAU) {
         let b = case.with_traffic(|t| speed_bands(t, course, 0.0, 12.0, 0.1)).expect("valid");
         prop_assert!(tiles(&b, 0.0, 12.0, 0.1), "{b:?}");
         let faults = check(&case, Param::Speed { course }, &b, 3, 0.0);

@@ -96,8 +96,16 @@ const ENGINE_ONLY: [(&str, &str, &str); 19] = [
     // The band constructions: a band's ends are transcendental in the course, so the
     // oracle decides single velocities exactly (bands::conflict) and the harness's
     // wayout::bands check draws values inside each band and asks it.
-    ("bands", "course_bands", "certified f64 construction; checked by sampling"),
-    ("bands", "speed_bands", "certified f64 construction; checked by sampling"),
+    (
+        "bands",
+        "course_bands",
+        "certified f64 construction; checked by sampling",
+    ),
+    (
+        "bands",
+        "speed_bands",
+        "certified f64 construction; checked by sampling",
+    ),
     (
         "bands",
         "vertical_speed_bands",

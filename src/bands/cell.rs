@@ -264,7 +264,14 @@ impl<'a> Tester<'a> {
         let grown = round_up(h + pr.rz);
         let z = self.heights(i, pr, grown, false);
         let mut all = AllFail { all: true };
-        let ran = self.scan(i, pr, z, Relation::Near, Separation { d: reach, h: 0.0 }, &mut all);
+        let ran = self.scan(
+            i,
+            pr,
+            z,
+            Relation::Near,
+            Separation { d: reach, h: 0.0 },
+            &mut all,
+        );
         if ran && all.all {
             return Tri::No;
         }

@@ -268,10 +268,7 @@ fn vertical_speed_bands_under_a_slab() {
     assert_eq!(courses.bands[0].kind, BandKind::Clear);
     // Inside the slab: every course in conflict (at t = 0 already).
     let inside = Traffic {
-        height: Some(Height {
-            sz: 150.0,
-            vz: 0.0,
-        }),
+        height: Some(Height { sz: 150.0, vz: 0.0 }),
         ..low
     };
     let courses = course_bands(&inside, 10.0, TENTH_DEGREE).unwrap();
@@ -290,7 +287,7 @@ fn vertical_speed_bands_under_a_slab() {
 #[test]
 fn a_thin_conflict_between_coarse_samples_is_found() {
     // A small square of half side 1 at 150 on the bearing 30°, D = 0.5: its conflict
-    // band is about 30° ± 0.57°, thinner than the first cells (about 5.6° wide).
+    // band is about 30° ± 0.57° wide, found between samples by halving.
     let c = (150.0 * 0.5, 150.0 * (3f64.sqrt() / 2.0));
     let p = square(c.0, c.1, 1.0);
     let vels = vec![Vect2::ZERO; 4];

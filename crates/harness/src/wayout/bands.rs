@@ -180,7 +180,13 @@ pub fn draws_in(band: &Band, draws: usize, spacing: f64) -> Vec<f64> {
 /// conflict, every value drawn in a Conflict band exactly in conflict (see
 /// [`draws_in`] for the values). Returns the faults (the exact truth against the band,
 /// or undecided).
-pub fn check(case: &BandCase, param: Param, bands: &Bands, draws: usize, spacing: f64) -> Vec<Fault> {
+pub fn check(
+    case: &BandCase,
+    param: Param,
+    bands: &Bands,
+    draws: usize,
+    spacing: f64,
+) -> Vec<Fault> {
     let mut faults = Vec::new();
     for band in &bands.bands {
         let want = match band.kind {

@@ -99,6 +99,8 @@ pub mod ball;
 #[cfg(not(feature = "internals"))]
 mod ball;
 #[cfg(feature = "std")]
+pub mod bands;
+#[cfg(feature = "std")]
 pub mod batch;
 pub mod contain;
 pub mod detect;

@@ -45,8 +45,9 @@
 //! 5. [`case`]: a validated case and paper A's answer for it;
 //! 6. [`truth`](mod@truth): the exact ground truth of a case;
 //! 7. [`intervals`](mod@intervals): the exact sets of times a point is inside, near or
-//!    breaching the polygon, then [`fence`]: keep-in exit detection, and [`offset`]: the
-//!    exact offset and inset problems and the check of a result;
+//!    breaching the polygon, then [`fence`]: keep-in exit detection, [`offset`]: the
+//!    exact offset and inset problems and the check of a result, and
+//!    [`bands`](mod@bands): whether one velocity is in conflict, exactly;
 //! 8. [`recovery`]: the exact minimum distance to a recovery point (the way out of P's
 //!    D-neighbourhood or into its D-core), on [`tower`]'s nested square roots (a number
 //!    layer beside [`qfield`]);
@@ -57,6 +58,7 @@
 #![warn(missing_docs)]
 
 pub mod algebraic;
+pub mod bands;
 pub mod case;
 pub mod contain;
 pub mod convert;

@@ -1,8 +1,8 @@
 //! The oracle mirrors the engine's names, module by module. For each of paper A's
 //! modules (quad, contain, proximity, detect with every file of its folder, well_formed,
-//! ring) and of the modules built on them (intervals, fence, offset and recovery: the times
-//! inside, near and breaching, keep-in exits, certified offsets, and the nearest point out
-//! of P's D-neighbourhood or into its D-core), walked as files in both crates and paired by module path (`detect::same` is
+//! ring) and of the modules built on them (intervals, fence, offset, recovery and bands: the
+//! times inside, near and breaching, keep-in exits, certified offsets, the nearest point out
+//! of P's D-neighbourhood or into its D-core, and conflict-free courses and speeds), walked as files in both crates and paired by module path (`detect::same` is
 //! src/detect/same.rs), every `pub fn` of the engine's module has a `pub fn` of the same
 //! name in the oracle's module of the same path, with the same parameter names in the
 //! same order. The oracle's paper functions are generic over a kernel and take it first,
@@ -20,7 +20,7 @@ use std::path::Path;
 
 /// Paper A's modules, by their names in both crates: a file `<name>.rs`, or a folder
 /// `<name>/` whose files are its submodules.
-const MODULES: [&str; 10] = [
+const MODULES: [&str; 11] = [
     "quad",
     "contain",
     "proximity",
@@ -31,6 +31,7 @@ const MODULES: [&str; 10] = [
     "fence",
     "offset",
     "recovery",
+    "bands",
 ];
 
 /// The name of a test module, skipped by the walk.
@@ -41,7 +42,7 @@ const KERNEL_PARAM: &str = "k";
 
 /// Engine modules with no oracle counterpart, each for its reason. Each must exist in
 /// the engine and not in the oracle (a stale entry fails the test).
-const ENGINE_ONLY_MODULES: [(&str, &str); 7] = [
+const ENGINE_ONLY_MODULES: [(&str, &str); 8] = [
     (
         "offset::raw",
         "the f64 construction region (strips and circumscribed fans); the oracle checks a \
@@ -56,6 +57,11 @@ const ENGINE_ONLY_MODULES: [(&str, &str); 7] = [
         "offset::certify",
         "the engine's certificate on balls; the oracle decides the same properties exactly \
          (Buffer::check)",
+    ),
+    (
+        "bands::cell",
+        "the f64 certificate of a cell between samples and its refinement; the oracle \
+         decides single velocities exactly (bands::conflict)",
     ),
     (
         "detect::roots",
@@ -98,7 +104,31 @@ const ORACLE_ONLY_MODULES: [(&str, &str); 3] = [
 /// Engine functions with no oracle counterpart, each for its reason. Every name
 /// must exist in the engine's module and not in the oracle's (a stale entry fails
 /// the test).
-const ENGINE_ONLY: [(&str, &str, &str); 15] = [
+const ENGINE_ONLY: [(&str, &str, &str); 19] = [
+    (
+        "bands",
+        "velocity",
+        "the f64 velocity of a course (libm's sin and cos); the oracle takes an f64 \
+         velocity exactly",
+    ),
+    // The band constructions: a band's ends are transcendental in the course, so the
+    // oracle decides single velocities exactly (bands::conflict) and the harness's
+    // wayout::bands check draws values inside each band and asks it.
+    (
+        "bands",
+        "course_bands",
+        "certified f64 construction; checked by sampling",
+    ),
+    (
+        "bands",
+        "speed_bands",
+        "certified f64 construction; checked by sampling",
+    ),
+    (
+        "bands",
+        "vertical_speed_bands",
+        "certified f64 construction; checked by sampling",
+    ),
     ("fence", "detect_exit_tri", "three-valued float form"),
     (
         "intervals",

@@ -17,7 +17,9 @@
 //! - [`intervals`]: the hunt of certified intervals; [`moving`]: the hunt of moving
 //!   features (flights against static and keyframed areas).
 //! - [`wayout`]: the way out checked exactly ([`wayout::offset`]: one engine offset or
-//!   inset against the oracle); [`canary_offset`]: a bisector expansion it must catch.
+//!   inset against the oracle; [`wayout::recovery`]: recovery points and PolyCARP's;
+//!   [`wayout::bands`]: values drawn in each band against the exact conflict of their
+//!   velocities); [`canary_offset`]: a bisector expansion it must catch.
 #![deny(missing_docs)]
 
 pub mod answer;

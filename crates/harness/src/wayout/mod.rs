@@ -2,6 +2,7 @@
 //! and shrunk), recovery points and bands against the oracle, beside the baselines they
 //! are measured against.
 
+pub mod bands;
 pub mod offset;
 pub mod polycarp;
 pub mod recovery;

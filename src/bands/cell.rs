@@ -1,0 +1,476 @@
+//! One cell's certificate and the refinement of cells into bands (the parent module's
+//! "certificate between samples", "prefilter and early exit" and "refinement"; paper
+//! A §II–§III's motion through the scan of `crate::intervals`).
+
+use std::boxed::Box;
+use std::vec::Vec;
+
+use super::{Band, BandKind, Bands, Traffic, Tri, MAX_CELLS};
+use crate::ball::{round_down, round_up};
+use crate::intervals::{Class, Heights, Pieces, Relation, Scan, Separation, Workspace};
+use crate::vect2::Vect2;
+
+/// 2⁻⁴⁹: the velocity slack per unit of speed (twice the 2⁻⁵⁰ that the f64 velocities
+/// of the sample and of a course need, parent module's rounding analysis).
+const SLACK: f64 = 1.0 / 562_949_953_421_312.0;
+
+/// 2⁻⁵¹ ≥ 2π − fl(2π): half an ulp of 2π, added to the last course cell's half width.
+const TAU_GAP: f64 = 1.0 / 2_251_799_813_685_248.0;
+
+/// Which parameter the cells vary.
+#[derive(Clone, Copy, Debug)]
+pub(super) enum Family {
+    /// One fixed velocity (no cell: r = 0).
+    Fixed { v: Vect2 },
+    /// The course at this speed.
+    Course { speed: f64 },
+    /// The speed at this course.
+    Speed { course: f64 },
+    /// The vertical speed with this horizontal velocity.
+    Vertical { v: Vect2 },
+}
+
+/// A cell's sample and radii: the velocity at the midpoint, its vertical speed (3D),
+/// and the horizontal and vertical displacement bounds r and r_z over [0, T].
+#[derive(Clone, Copy, Debug)]
+struct Probe {
+    v: Vect2,
+    vz: Option<f64>,
+    r: f64,
+    rz: f64,
+}
+
+/// The most cells a band answer starts with (see [`Tester::first_cells`]).
+const FIRST_CELLS_MAX: usize = 256;
+
+/// A box [lo.x, hi.x] × [lo.y, hi.y].
+#[derive(Clone, Copy, Debug)]
+struct Box2 {
+    lo: Vect2,
+    hi: Vect2,
+}
+
+impl Box2 {
+    /// The box of the points a and a + T·w over the whole segment, rounded outward.
+    fn segment(a: Vect2, w: Vect2, t: f64) -> Box2 {
+        let lo = |x: f64, y: f64| round_down(x + round_down(t * y));
+        let hi = |x: f64, y: f64| round_up(x + round_up(t * y));
+        Box2 {
+            lo: Vect2::new(a.x.min(lo(a.x, w.x)), a.y.min(lo(a.y, w.y))),
+            hi: Vect2::new(a.x.max(hi(a.x, w.x)), a.y.max(hi(a.y, w.y))),
+        }
+    }
+
+    /// Is the box narrower than 2·depth along x or y (rounded down)? Then no point of
+    /// a polygon inside it is farther than `depth` from the polygon's boundary.
+    fn narrower_than(self, depth: f64) -> bool {
+        let twice = 2.0 * depth;
+        round_down(self.hi.x - self.lo.x) < twice || round_down(self.hi.y - self.lo.y) < twice
+    }
+
+    /// The smallest box holding both.
+    fn join(self, o: Box2) -> Box2 {
+        Box2 {
+            lo: Vect2::new(self.lo.x.min(o.lo.x), self.lo.y.min(o.lo.y)),
+            hi: Vect2::new(self.hi.x.max(o.hi.x), self.hi.y.max(o.hi.y)),
+        }
+    }
+
+    /// Is the gap between the boxes along x or along y (rounded down) larger than
+    /// `reach`? Then every pair of their points is farther apart than `reach`.
+    fn apart(self, o: Box2, reach: f64) -> bool {
+        round_down(o.lo.x - self.hi.x) > reach
+            || round_down(self.lo.x - o.hi.x) > reach
+            || round_down(o.lo.y - self.hi.y) > reach
+            || round_down(self.lo.y - o.hi.y) > reach
+    }
+}
+
+/// The scan's pieces until the first one that does not fail: did all fail?
+struct AllFail {
+    all: bool,
+}
+
+impl Pieces for AllFail {
+    /// Stops at the first piece that is not certainly false.
+    fn piece(&mut self, _a: f64, _b: f64, class: Class) -> bool {
+        if class != Class::Fails {
+            self.all = false;
+        }
+        !self.all
+    }
+}
+
+/// The scan's pieces until the first of class `want`: was there one?
+struct Find {
+    want: Class,
+    found: bool,
+}
+
+impl Pieces for Find {
+    /// Stops at the first piece of the wanted class.
+    fn piece(&mut self, _a: f64, _b: f64, class: Class) -> bool {
+        self.found = class == self.want;
+        self.found
+    }
+}
+
+/// A cell of the refinement: its range, its verdict, and (Unknown) the obstacles it
+/// left open.
+struct Cell {
+    lo: f64,
+    hi: f64,
+    kind: BandKind,
+    open: Vec<u32>,
+}
+
+/// The certificate's machinery for one traffic situation and one parameter family.
+pub(super) struct Tester<'a> {
+    traffic: &'a Traffic<'a>,
+    family: Family,
+    /// Each obstacle's swept box over [0, T].
+    boxes: Vec<Box2>,
+    ws: Box<Workspace>,
+    /// Cell tests so far.
+    cells: usize,
+}
+
+impl<'a> Tester<'a> {
+    /// The boxes of a validated situation.
+    pub(super) fn new(traffic: &'a Traffic<'a>, family: Family) -> Tester<'a> {
+        let boxes = traffic
+            .obstacles
+            .iter()
+            .map(|o| {
+                let mut b = Box2::segment(o.p[0], o.vels[0], traffic.t);
+                for (&p, &v) in o.p.iter().zip(o.vels).skip(1) {
+                    b = b.join(Box2::segment(p, v, traffic.t));
+                }
+                b
+            })
+            .collect();
+        Tester {
+            traffic,
+            family,
+            boxes,
+            ws: Box::new(Workspace::new()),
+            cells: 0,
+        }
+    }
+
+    /// The sample and radii of the cell [lo, hi] (parent module: r of each family).
+    fn probe(&self, lo: f64, hi: f64) -> Probe {
+        let t = self.traffic.t;
+        let vz = self.traffic.height.map(|z| z.vz);
+        let m = lo + (hi - lo) * 0.5;
+        let half = round_up((m - lo).max(hi - m));
+        match self.family {
+            Family::Fixed { v } => Probe {
+                v,
+                vz,
+                r: 0.0,
+                rz: 0.0,
+            },
+            Family::Course { speed } => {
+                let mut delta = half;
+                if hi >= core::f64::consts::TAU {
+                    delta = round_up(delta + TAU_GAP);
+                }
+                let delta = delta.min(core::f64::consts::PI);
+                let chord = round_up(2.0 * libm::sin(delta * 0.5));
+                Probe {
+                    v: super::velocity(speed, m),
+                    vz,
+                    r: round_up(round_up(t * speed) * round_up(chord + SLACK)),
+                    rz: 0.0,
+                }
+            }
+            Family::Speed { course } => Probe {
+                v: super::velocity(m, course),
+                vz,
+                r: round_up(t * round_up(half + round_up(hi * SLACK))),
+                rz: 0.0,
+            },
+            Family::Vertical { v } => Probe {
+                v,
+                vz: Some(m),
+                r: 0.0,
+                rz: round_up(t * half),
+            },
+        }
+    }
+
+    /// Runs one scan of obstacle i with `consumer` (a case the scan refuses gives
+    /// nothing: the consumer's initial answer stands).
+    fn scan(
+        &mut self,
+        i: usize,
+        pr: &Probe,
+        heights: Option<Heights>,
+        relation: Relation,
+        sep: Separation,
+        consumer: &mut impl Pieces,
+    ) -> bool {
+        let o = &self.traffic.obstacles[i];
+        let tr = self.traffic;
+        match Scan::new(
+            tr.t,
+            tr.s,
+            pr.v,
+            o.p,
+            o.vels,
+            heights,
+            relation,
+            sep,
+            self.ws.parts(),
+        ) {
+            Some(mut scan) => {
+                scan.run(consumer);
+                true
+            }
+            None => false,
+        }
+    }
+
+    /// The slab of obstacle i for the sample, its ends moved by `grow` (outward when
+    /// positive), rounded toward the inside when `inward` and outward otherwise; `None`
+    /// in 2D or for an obstacle without a slab.
+    fn heights(&self, i: usize, pr: &Probe, grow: f64, inward: bool) -> Option<Heights> {
+        let z = self.traffic.height?;
+        let slab = self.traffic.obstacles[i].slab?;
+        let (bottom, top) = if inward {
+            (round_up(slab.bottom - grow), round_down(slab.top + grow))
+        } else {
+            (round_down(slab.bottom - grow), round_up(slab.top + grow))
+        };
+        Some(Heights {
+            sz: z.sz,
+            vz: pr.vz.unwrap_or(z.vz),
+            bottom,
+            top,
+            vsp: slab.vsp,
+        })
+    }
+
+    /// The certificate for obstacle i on a cell (parent module): `No` Clear, `Yes`
+    /// Conflict, `Unsure` neither.
+    fn verdict(&mut self, i: usize, pr: &Probe) -> Tri {
+        let Separation { d, h } = self.traffic.sep;
+        // Clear: near_{D+r} (and H + r_z) is empty at the sample.
+        let reach = round_up(d + pr.r);
+        if self.boxes[i].apart(Box2::segment(self.traffic.s, pr.v, self.traffic.t), reach) {
+            return Tri::No;
+        }
+        let grown = round_up(h + pr.rz);
+        let z = self.heights(i, pr, grown, false);
+        let mut all = AllFail { all: true };
+        let ran = self.scan(
+            i,
+            pr,
+            z,
+            Relation::Near,
+            Separation { d: reach, h: 0.0 },
+            &mut all,
+        );
+        if ran && all.all {
+            return Tri::No;
+        }
+        // Conflict: the slab moved inward by r_z − H (outward by H − r_z).
+        let grow = if pr.rz <= h {
+            round_down(h - pr.rz).max(0.0)
+        } else {
+            -round_up(pr.rz - h)
+        };
+        let z = self.heights(i, pr, grow, true);
+        let found = if pr.r <= d {
+            let near = Separation {
+                d: round_down(d - pr.r).max(0.0),
+                h: 0.0,
+            };
+            let mut f = Find {
+                want: Class::Holds,
+                found: false,
+            };
+            self.scan(i, pr, z, Relation::Near, near, &mut f) && f.found
+        } else if self.boxes[i].narrower_than(round_up(pr.r - d)) {
+            // No point of the obstacle is r − D deep inside: its swept box is narrower.
+            false
+        } else {
+            let deep = Separation {
+                d: round_up(pr.r - d),
+                h: 0.0,
+            };
+            let mut f = Find {
+                want: Class::Fails,
+                found: false,
+            };
+            self.scan(i, pr, z, Relation::Breach, deep, &mut f) && f.found
+        };
+        if found {
+            Tri::Yes
+        } else {
+            Tri::Unsure
+        }
+    }
+
+    /// Conflict at one velocity (r = 0): `Yes`, `No` or `Unsure` over all obstacles.
+    pub(super) fn at_velocity(&mut self, v: Vect2) -> Tri {
+        let pr = Probe {
+            v,
+            vz: self.traffic.height.map(|z| z.vz),
+            r: 0.0,
+            rz: 0.0,
+        };
+        let mut all_clear = true;
+        for i in 0..self.traffic.obstacles.len() {
+            match self.verdict(i, &pr) {
+                Tri::Yes => return Tri::Yes,
+                Tri::No => {}
+                Tri::Unsure => all_clear = false,
+            }
+        }
+        if all_clear {
+            Tri::No
+        } else {
+            Tri::Unsure
+        }
+    }
+
+    /// Tests the cell [lo, hi] against the obstacles `open` (the parent's open ones).
+    fn test(&mut self, lo: f64, hi: f64, open: &[u32]) -> Cell {
+        self.cells += 1;
+        let pr = self.probe(lo, hi);
+        let mut left = Vec::new();
+        for &i in open {
+            match self.verdict(i as usize, &pr) {
+                Tri::Yes => {
+                    return Cell {
+                        lo,
+                        hi,
+                        kind: BandKind::Conflict,
+                        open: Vec::new(),
+                    }
+                }
+                Tri::No => {}
+                Tri::Unsure => left.push(i),
+            }
+        }
+        let kind = if left.is_empty() {
+            BandKind::Clear
+        } else {
+            BandKind::Unknown
+        };
+        Cell {
+            lo,
+            hi,
+            kind,
+            open: left,
+        }
+    }
+
+    /// Settles [lo, hi] (open obstacles `open`), halving Unknown cells wider than
+    /// `w_min`, pushing the leaves in order.
+    fn settle(&mut self, lo: f64, hi: f64, open: &[u32], w_min: f64, out: &mut Vec<Cell>) {
+        let cell = self.test(lo, hi, open);
+        self.split(cell, w_min, out);
+    }
+
+    /// Halves an Unknown cell wider than `w_min` (while its midpoint is strictly inside
+    /// and the budget lasts), else keeps it.
+    fn split(&mut self, cell: Cell, w_min: f64, out: &mut Vec<Cell>) {
+        let m = cell.lo + (cell.hi - cell.lo) * 0.5;
+        let can = cell.kind == BandKind::Unknown
+            && cell.hi - cell.lo > w_min
+            && cell.lo < m
+            && m < cell.hi
+            && self.cells + 2 <= MAX_CELLS;
+        if can {
+            self.settle(cell.lo, m, &cell.open, w_min, out);
+            self.settle(m, cell.hi, &cell.open, w_min, out);
+        } else {
+            out.push(cell);
+        }
+    }
+
+    /// How many equal cells to start with: the fewest (a power of two, at most
+    /// [`FIRST_CELLS_MAX`]) whose radius is at most the separation it is added to (D,
+    /// or H for vertical speeds): coarser cells could not be decided but where no
+    /// obstacle is near.
+    fn first_cells(&self, lo: f64, hi: f64) -> usize {
+        let Separation { d, h } = self.traffic.sep;
+        let mut n = 1;
+        while n < FIRST_CELLS_MAX {
+            let pr = self.probe(lo, lo + (hi - lo) / n as f64);
+            if pr.r <= d && pr.rz <= h {
+                break;
+            }
+            n *= 2;
+        }
+        n
+    }
+
+    /// The band answer over [lo, hi] (parent module's refinement).
+    pub(super) fn bands(mut self, lo: f64, hi: f64, unknown_max: f64) -> Bands {
+        let all: Vec<u32> = (0..self.traffic.obstacles.len() as u32).collect();
+        let mut w_min = unknown_max * 0.5;
+        let mut cells = Vec::new();
+        let n = self.first_cells(lo, hi);
+        let mut a = lo;
+        for k in 1..=n {
+            let b = if k == n {
+                hi
+            } else {
+                lo + (hi - lo) * (k as f64 / n as f64)
+            };
+            self.settle(a, b, &all, w_min, &mut cells);
+            a = b;
+        }
+        loop {
+            let unknown = unknown_width(&cells);
+            if unknown <= unknown_max {
+                break;
+            }
+            w_min *= 0.5;
+            let before = self.cells;
+            let mut next = Vec::with_capacity(cells.len());
+            for cell in cells {
+                self.split(cell, w_min, &mut next);
+            }
+            cells = next;
+            let stuck = self.cells == before && w_min < unknown_max * f64::EPSILON;
+            if stuck || self.cells + 2 > MAX_CELLS {
+                break;
+            }
+        }
+        merge(cells, unknown_max)
+    }
+}
+
+/// The total width of the Unknown cells.
+fn unknown_width(cells: &[Cell]) -> f64 {
+    cells
+        .iter()
+        .filter(|c| c.kind == BandKind::Unknown)
+        .fold(0.0, |u, c| u + (c.hi - c.lo))
+}
+
+/// Adjacent cells of one kind merged into bands, with the Unknown total.
+fn merge(cells: Vec<Cell>, unknown_max: f64) -> Bands {
+    let unknown_total = unknown_width(&cells);
+    let mut bands: Vec<Band> = Vec::new();
+    for c in cells {
+        match bands.last_mut() {
+            Some(b) if b.kind == c.kind => b.hi = c.hi,
+            _ => bands.push(Band {
+                lo: c.lo,
+                hi: c.hi,
+                kind: c.kind,
+            }),
+        }
+    }
+    Bands {
+        bands,
+        unknown_total,
+        met: unknown_total <= unknown_max,
+    }
+}

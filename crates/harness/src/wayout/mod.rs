@@ -4,5 +4,6 @@
 
 pub mod bands;
 pub mod offset;
+pub mod picture;
 pub mod polycarp;
 pub mod recovery;

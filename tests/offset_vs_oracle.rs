@@ -44,7 +44,7 @@ proptest! {
     #[test]
     fn random_star_polygons_are_offset_and_inset_exactly(
         shape in (3usize..16).prop_flat_map(|n| (
-            prop::collection::vec(0.5f64..10.0, n),
+            prop::collection::vec(0.1f64..10.0, n),
             prop::collection::vec(0.0f64..0.5, n),
         )),
         d in 0.05f64..3.0,

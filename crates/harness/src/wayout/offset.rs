@@ -8,7 +8,7 @@ use polyguard_oracle::offset::{self as exact, Buffer, Region, Side, Verdict};
 use polyguard_oracle::OracleError;
 
 /// The engine's regions as the oracle's (f64 points, unchanged).
-pub fn regions_of(result: &Offset) -> Vec<Region> {
+pub fn regions_of(result: &Offset) -> Vec<Region<f64>> {
     let pts = |r: &[Vect2]| r.iter().map(|v| [v.x, v.y]).collect::<Vec<_>>();
     result
         .regions
@@ -94,9 +94,7 @@ pub fn sample(
                 a - reach + (b - a + 2.0 * reach) * k as f64 / steps as f64
             };
             let x = [f(i, lo[0], hi[0]), f(j, lo[1], hi[1])];
-            let Some(xq) = exact::exact_point(x) else {
-                continue;
-            };
+            let xq = exact::exact_point(x)?;
             let inside = exact::locate_in(&rings, &xq);
             let (must_in, may_in) = match problem.side {
                 Side::Out => (problem.inside_truth(&xq), problem.inside_limit(&xq)),

@@ -13,6 +13,20 @@
 //! A result is an [`Offset`]: regions, each an outer ring (counterclockwise) with holes
 //! (clockwise); the rings are simple and pairwise disjoint.
 //!
+//! ```
+//! use polyguard::offset::{inset, offset};
+//! use polyguard::Vect2;
+//!
+//! let square = [Vect2::new(0.0, 0.0), Vect2::new(2.0, 0.0), Vect2::new(2.0, 2.0), Vect2::new(0.0, 2.0)];
+//! // Grown by 0.5 within 1 %: one region, its corners rounded by circumscribed arcs.
+//! let grown = offset(&square, 0.5, 0.01)?;
+//! assert_eq!(grown.regions.len(), 1);
+//! assert!(grown.regions[0].outer.len() > 8);
+//! // Shrunk by 1.5: no point of the square is 1.5 from its boundary.
+//! assert!(inset(&square, 1.5, 0.01)?.regions.is_empty());
+//! # Ok::<(), polyguard::offset::OffsetError>(())
+//! ```
+//!
 //! # Construction
 //! With D' = D·(1 + ε') and ε' = min(ε, [`EPS_CAP`])/4 ([`MARGIN_SHARE`]), the
 //! construction region Q_K is
@@ -60,7 +74,8 @@
 //! polygon. At time t ([`offset_at`], [`inset_at`]) the vertices p_i + t·V_i are
 //! evaluated in f64 with an error radius r per vertex ([`crate::ball`]); the certificate
 //! then uses D + [`MOVE_SLACK`]·r for the containment and D·(1 + ε) − MOVE_SLACK·r for
-//! the closeness, which covers the exact polygon at t.
+//! the closeness, which covers the exact polygon at t. (With D = 0 and inexact vertices
+//! the exact polygon itself is asked for, which f64 cannot hold: `Uncertified`.)
 //!
 //! # Error bounds
 //! - [`MARGIN_SHARE`]: the share of ε the construction keeps for rounding: it builds at

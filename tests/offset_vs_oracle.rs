@@ -49,6 +49,8 @@ proptest! {
         )),
         d in 0.05f64..3.0,
         eps in 0.005f64..0.2,
+        vel in (-3.0f64..3.0, -3.0f64..3.0),
+        t in 0.0f64..100.0,
     ) {
         let p = star(&shape.0, &shape.1);
         prop_assume!(polyguard::ring::simple_ccw(&p));
@@ -56,6 +58,18 @@ proptest! {
         assert_exact(&p, d, eps, Side::Out, &o);
         let i = inset(&p, d, eps).expect("certified");
         assert_exact(&p, d, eps, Side::In, &i);
+        // The same polygon drifting: certified for the exact polygon at t.
+        let vels = std::vec![Vect2::new(vel.0, vel.1); p.len()];
+        for side in [Side::Out, Side::In] {
+            let q = match side {
+                Side::Out => offset_at(&p, &vels, t, d, eps),
+                Side::In => polyguard::offset::inset_at(&p, &vels, t, d, eps),
+            }
+            .expect("certified");
+            let exact = problem_at(&p, &vels, t, d, eps, side).expect("valid");
+            let verdict = exact.check(&regions_of(&q)).expect("finite");
+            prop_assert!(verdict.holds(), "{side:?} at t={t}: {verdict:?}");
+        }
     }
 }
 

@@ -262,10 +262,9 @@ fn rounding_coarser_than_d_eps_is_refused_not_returned_wrong() {
 
 /// The harness's adversarial outlines (needles, near-collinear vertices, short edges
 /// beside long ones) at D from 10⁻³ to 1 of their size: every result the engine returns
-/// holds exactly; a refusal (`Uncertified`) is allowed, and most are certified. (The
-/// refusals are nearly straight vertices, whose shifted edges cross at a point f64
-/// cannot place, and, left out here, cases moved to an end of the float range, whose
-/// exact orientations over- or underflow.)
+/// holds exactly; a refusal (`Uncertified`) is allowed, and rare (88 certified, 4
+/// refused on these seeds). Left out: cases moved to an end of the float range, whose
+/// exact orientations over- or underflow (refused).
 #[test]
 fn the_harness_outlines_are_offset_exactly_or_refused() {
     use polyguard::offset::OffsetError;
@@ -311,7 +310,7 @@ fn the_harness_outlines_are_offset_exactly_or_refused() {
         }
     }
     assert!(
-        certified >= 2 * refused && certified > 30,
+        certified >= 8 * refused && certified > 60,
         "{certified} certified, {refused} refused"
     );
 }

@@ -42,7 +42,8 @@
 //!   by the same argument turned inside out.
 //!
 //! The boundary of Q_K lies on the shifted edges and the arcs' pieces (the raw
-//! segments, module `raw`). Module `arrange` splits them at their crossings (exact
+//! segments, module `raw`; where two shifted edges meet without a fan they are cut at
+//! their mitre point, so that nearly parallel neighbours join at one node). Module `arrange` splits them at their crossings (exact
 //! orientations), keeps each piece whose left side is in Q_K and right side is not (a
 //! membership test of its midpoint against the pieces, exact orientations on the f64
 //! points), and links the kept pieces into rings. Holes of the offset and the pieces of
@@ -71,7 +72,8 @@
 //!   certificate confirms the rings bound it.
 //!
 //! A result the certificate rejects is [`OffsetError::Uncertified`], never a silent wrong
-//! polygon. At time t ([`offset_at`], [`inset_at`]) the vertices p_i + t·V_i are
+//! polygon. A problem whose size lies beyond 2^±[`SCALE_RANGE`] is solved scaled by a
+//! power of two (exactly, both ways; the properties are invariant under similarity). At time t ([`offset_at`], [`inset_at`]) the vertices p_i + t·V_i are
 //! evaluated in f64 with an error radius r per vertex ([`crate::ball`]); the certificate
 //! then uses D + [`MOVE_SLACK`]·r for the containment and D·(1 + ε) − MOVE_SLACK·r for
 //! the closeness, which covers the exact polygon at t. (With D = 0 and inexact vertices
@@ -326,6 +328,42 @@ fn build(p: &[Vect2], radii: &[f64], d: f64, eps: f64, side: Side) -> Result<Off
     ) {
         return Err(OffsetError::TooFine { pieces_per_turn });
     }
+    let k = scale_exponent(p, d + slack);
+    if k == 0 {
+        return construct(p, d, eps, slack, side);
+    }
+    // Far from 1 in scale (exact products would over- or underflow): the similar
+    // problem scaled by 2^k, exactly, and its answer scaled back, exactly.
+    let scaled: Vec<Vect2> = p.iter().map(|&v| times_pow2(v, k)).collect();
+    let exact = |a: Vect2, b: Vect2| times_pow2(b, -k) == a && b.is_finite();
+    let ds = times_pow2(Vect2::new(d, slack), k);
+    if !(p.iter().zip(&scaled).all(|(&a, &b)| exact(a, b)) && exact(Vect2::new(d, slack), ds)) {
+        return Err(OffsetError::Uncertified {
+            reason: "coordinates and D too far apart in scale to scale exactly",
+        });
+    }
+    let mut out = construct(&scaled, ds.x, eps, ds.y, side)?;
+    for ring in out
+        .regions
+        .iter_mut()
+        .flat_map(|r| core::iter::once(&mut r.outer).chain(r.holes.iter_mut()))
+    {
+        for v in ring.iter_mut() {
+            let back = times_pow2(*v, -k);
+            if times_pow2(back, k) != *v {
+                return Err(OffsetError::Uncertified {
+                    reason: "the result does not scale back exactly",
+                });
+            }
+            *v = back;
+        }
+    }
+    Ok(out)
+}
+
+/// The construction and its certificate (the module doc), for a deduplicated P.
+fn construct(p: &[Vect2], d: f64, eps: f64, slack: f64, side: Side) -> Result<Offset, OffsetError> {
+    let e = eps.min(EPS_CAP) * MARGIN_SHARE;
     // D' covers the slack of a moving polygon too: the construction stays D'·ε/4 clear.
     let d_build = (d + slack) * (1.0 + e) * (1.0 + 4.0 * U);
     let raw = raw::Raw::new(p, d_build, max_arc_angle(e), side);
@@ -334,6 +372,44 @@ fn build(p: &[Vect2], radii: &[f64], d: f64, eps: f64, side: Side) -> Result<Off
     let bounds = certify::Bounds::new(d, eps, slack);
     certify::certify(p, &regions, &bounds, side)?;
     Ok(Offset { regions })
+}
+
+/// The power of two that brings the largest of P's coordinates and D near 1, or 0 when
+/// they already lie within 2^±[`SCALE_RANGE`] (where no exact product of the
+/// construction's orientations over- or underflows).
+fn scale_exponent(p: &[Vect2], d: f64) -> i32 {
+    let m = p
+        .iter()
+        .fold(d.abs(), |m, v| m.max(v.x.abs()).max(v.y.abs()));
+    let e = if m > 0.0 {
+        libm::log2(m).floor() as i32
+    } else {
+        0
+    };
+    if e.abs() <= SCALE_RANGE {
+        0
+    } else {
+        -e
+    }
+}
+
+/// The largest |log₂| of the problem's size kept as it is: squared differences of
+/// coordinates up to 2^±300 stay far inside the f64 range (2^±1022).
+pub const SCALE_RANGE: i32 = 300;
+
+/// v·2^k, exactly when the result is normal (steps of at most 2^500, each exact
+/// unless it under- or overflows; callers check the round trip).
+fn times_pow2(v: Vect2, k: i32) -> Vect2 {
+    let (mut x, mut y, mut k) = (v.x, v.y, k);
+    while k != 0 {
+        let step = k.clamp(-500, 500);
+        // 2^step, built from its bits (step ∈ [−500, 500]: a normal float).
+        let f = f64::from_bits(((1023 + step) as u64) << 52);
+        x *= f;
+        y *= f;
+        k -= step;
+    }
+    Vect2::new(x, y)
 }
 
 /// The largest arc piece δ with sec(δ/2) ≤ 1 + e, less a share for rounding:

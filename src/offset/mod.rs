@@ -89,6 +89,10 @@
 //!   2u·|value| to the radius (u = 2⁻⁵³), propagated by [`crate::ball::Ball`]'s rules;
 //!   decisions are taken only when the ball excludes the threshold.
 //! - [`MOVE_SLACK`]: the distance between the exact and the f64 polygon at time t.
+//! - [`ARC_ROOM`]: the share of each arc piece's angle left for the rounding of acos,
+//!   cos and the circumscribed radius.
+//! - [`SCALE_RANGE`]: the sizes solved as they are; others are scaled by 2^k exactly.
+//! - [`MAX_PIECES_PER_TURN`] and [`EPS_CAP`]: the limits of the construction's size.
 
 mod arrange;
 mod certify;
@@ -365,7 +369,7 @@ fn build(p: &[Vect2], radii: &[f64], d: f64, eps: f64, side: Side) -> Result<Off
 fn construct(p: &[Vect2], d: f64, eps: f64, slack: f64, side: Side) -> Result<Offset, OffsetError> {
     let e = eps.min(EPS_CAP) * MARGIN_SHARE;
     // D' covers the slack of a moving polygon too: the construction stays D'·ε/4 clear.
-    let d_build = (d + slack) * (1.0 + e) * (1.0 + 4.0 * U);
+    let d_build = (d + slack) * (1.0 + e) * BUILD_ROUNDING;
     let raw = raw::Raw::new(p, d_build, max_arc_angle(e), side);
     let rings = arrange::rings(&raw)?;
     let regions = arrange::regions(rings)?;
@@ -412,11 +416,21 @@ fn times_pow2(v: Vect2, k: i32) -> Vect2 {
     Vect2::new(x, y)
 }
 
-/// The largest arc piece δ with sec(δ/2) ≤ 1 + e, less a share for rounding:
-/// δ = 2·acos(1/(1 + e))·(1 − 2⁻²⁰), at most a quarter turn.
+/// The share of the arc angle given up for rounding: δ = 2·acos(1/(1 + e))·(1 − 2⁻²⁰).
+/// acos, the quotient and cos in the construction each err by a few ulps (≈ 2⁻⁵⁰
+/// relative); giving up 2⁻²⁰ of the angle lowers sec(δ/2) − 1 by about 2⁻¹⁹ of itself,
+/// far more than those errors move it, so the arcs' factor stays ≤ 1 + e.
+pub const ARC_ROOM: f64 = 1.0 / 1_048_576.0;
+
+/// The rounding allowance on D' = (D + slack)·(1 + e): three roundings, each at most u,
+/// so ×(1 + 4u) keeps the computed D' at or above the exact product.
+const BUILD_ROUNDING: f64 = 1.0 + 4.0 * U;
+
+/// The largest arc piece δ with sec(δ/2) ≤ 1 + e, less [`ARC_ROOM`] for rounding, at
+/// most a quarter turn.
 fn max_arc_angle(e: f64) -> f64 {
     let half = libm::acos(1.0 / (1.0 + e));
-    (2.0 * half * (1.0 - 1.0 / 1_048_576.0)).min(core::f64::consts::FRAC_PI_2)
+    (2.0 * half * (1.0 - ARC_ROOM)).min(core::f64::consts::FRAC_PI_2)
 }
 
 #[cfg(test)]

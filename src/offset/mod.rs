@@ -53,7 +53,7 @@
 //!
 //! # Certificate
 //! Before returning, module `certify` checks the rings with certified predicates (exact
-//! orientations, and [`crate::ball`]'s forward error bounds on squared distances; no
+//! orientations, and `ball`'s forward error bounds on squared distances; no
 //! absolute epsilon):
 //! - the rings are simple and pairwise disjoint (exact);
 //! - every edge of Q is at distance ≥ D from every edge of P (certified lower bound of
@@ -74,7 +74,7 @@
 //! A result the certificate rejects is [`OffsetError::Uncertified`], never a silent wrong
 //! polygon. A problem whose size lies beyond 2^±[`SCALE_RANGE`] is solved scaled by a
 //! power of two (exactly, both ways; the properties are invariant under similarity). At time t ([`offset_at`], [`inset_at`]) the vertices p_i + t·V_i are
-//! evaluated in f64 with an error radius r per vertex ([`crate::ball`]); the certificate
+//! evaluated in f64 with an error radius r per vertex (`ball`); the certificate
 //! then uses D + [`MOVE_SLACK`]·r for the containment and D·(1 + ε) − MOVE_SLACK·r for
 //! the closeness, which covers the exact polygon at t. (With D = 0 and inexact vertices
 //! the exact polygon itself is asked for, which f64 cannot hold: `Uncertified`.)
@@ -86,7 +86,7 @@
 //!   D·ε/4 on either side for the f64 rounding of its vertices, which the certificate
 //!   then bounds exactly.
 //! - The squared point-to-segment distance is evaluated on balls: each rounding adds
-//!   2u·|value| to the radius (u = 2⁻⁵³), propagated by [`crate::ball::Ball`]'s rules;
+//!   2u·|value| to the radius (u = 2⁻⁵³), propagated by `ball::Ball`'s rules;
 //!   decisions are taken only when the ball excludes the threshold.
 //! - [`MOVE_SLACK`]: the distance between the exact and the f64 polygon at time t.
 //! - [`ARC_ROOM`]: the share of each arc piece's angle left for the rounding of acos,
@@ -240,7 +240,7 @@ pub fn inset_at(
 }
 
 /// The vertices p_i + t·V_i in f64 and each one's error radius (per coordinate), from
-/// [`Ball`]'s rules: t·V rounded once, the sum rounded once.
+/// `Ball`'s rules: t·V rounded once, the sum rounded once.
 fn at_time(p: &[Vect2], vels: &[Vect2], t: f64) -> Result<(Vec<Vect2>, Vec<f64>), OffsetError> {
     if !t.is_finite() {
         return Err(OffsetError::Invalid {

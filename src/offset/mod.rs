@@ -69,7 +69,11 @@
 //!   **∂Q ⊆ P ⊕ disc(D(1 + ε))** (of ∂P for the inset). That Q has no extra region
 //!   filling a hole of the true offset (or misses no piece of the inset) is the
 //!   construction's argument above: Q_K is sandwiched between the two sets, and the
-//!   certificate confirms the rings bound it.
+//!   rings bound it. The boundary cannot show a filled hole, but the construction
+//!   cannot drop one quietly: each piece of a raw segment is kept or dropped by the
+//!   exact location of its midpoint among the f64 pieces, so a hole's ring is dropped
+//!   only where its midpoints truly lie inside Q_K, and a ring broken part way does not
+//!   close (`Uncertified`). The exact oracle samples the interior in the tests.
 //!
 //! A result the certificate rejects is [`OffsetError::Uncertified`], never a silent wrong
 //! polygon. A problem whose size lies beyond 2^±[`SCALE_RANGE`] is solved scaled by a

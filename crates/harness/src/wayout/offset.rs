@@ -60,6 +60,20 @@ pub fn check(
     problem(p, d, eps, side)?.check(&regions_of(result))
 }
 
+/// [`check`] at time t of the moving polygon p_i + t·V_i (the engine's `offset_at` or
+/// `inset_at` result).
+pub fn check_at(
+    p: &[Vect2],
+    vels: &[Vect2],
+    t: f64,
+    d: f64,
+    eps: f64,
+    side: Side,
+    result: &Offset,
+) -> Result<Verdict, OracleError> {
+    problem_at(p, vels, t, d, eps, side)?.check(&regions_of(result))
+}
+
 /// Exact sampling of what the boundary cannot show (a filled hole, a missed piece): on
 /// an n × n grid over the box of P grown by 2·D(1 + ε), every point of the true set at D
 /// (offset) or at D(1 + ε) (inset) must be in the result, and every point of the result

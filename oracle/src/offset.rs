@@ -1,5 +1,5 @@
 //! Offsets and insets of paper A §II's polygon, exactly: the true sets and the exact
-//! check of a given f64 result (the engine's `offset` module, mirrored by name).
+//! check of a given binary-float result (the engine's `offset` module, mirrored by name).
 //!
 //! # Definitions
 //! For a simple counterclockwise P (§II), D ≥ 0 and ε > 0, with L = D·(1 + ε):
@@ -9,7 +9,8 @@
 //!
 //! [`offset`], [`inset`] and their `_at` forms return a [`Buffer`]: P (at time t, exactly
 //! p_i + t·V_i), D and ε as rationals. [`Buffer::check`] decides, in rationals, the parts
-//! of correctness that a result's boundary determines, for rings given as f64 points:
+//! of correctness that a result's boundary determines, for rings given as binary floats
+//! or text (any [`Input`], made exact at once):
 //! - `rings`: each ring simple, outer rings counterclockwise, holes clockwise inside
 //!   their outer ring, rings pairwise disjoint;
 //! - `clear`: every edge of Q at distance ≥ D from every edge of P (squared distances,
@@ -27,7 +28,7 @@
 
 use core::cmp::Ordering;
 
-use crate::convert::{f64_to_exact, to_float};
+use crate::convert::Input;
 use crate::error::OracleError;
 use crate::field::{Arith, ExactField, Q, V2};
 use crate::qfield::{quad_roots, Alg};
@@ -55,13 +56,13 @@ pub struct Buffer {
     pub side: Side,
 }
 
-/// A result to check: an outer ring and its holes, as f64 points.
+/// A result to check: an outer ring and its holes, as points the oracle reads exactly.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Region {
+pub struct Region<I> {
     /// The outer ring (counterclockwise).
-    pub outer: Vec<[f64; 2]>,
+    pub outer: Vec<[I; 2]>,
     /// The holes (each clockwise).
-    pub holes: Vec<Vec<[f64; 2]>>,
+    pub holes: Vec<Vec<[I; 2]>>,
 }
 
 /// The exact verdict on a result (see the module doc for what each part decides).
@@ -83,52 +84,60 @@ impl Verdict {
 }
 
 /// The exact problem of the offset of P by D (§II's polygon; see the module doc).
-pub fn offset(p: &[[f64; 2]], d: f64, eps: f64) -> Result<Buffer, OracleError> {
-    Buffer::new(exact_ring(p, "p")?, d, eps, Side::Out)
+pub fn offset<I: Input>(p: &[[I; 2]], d: I, eps: I) -> Result<Buffer, OracleError> {
+    Buffer::new(
+        exact_ring(p, "p")?,
+        d.exact("d")?,
+        eps.exact("eps")?,
+        Side::Out,
+    )
 }
 
 /// The exact problem of the inset of P by D (§II's polygon; see the module doc).
-pub fn inset(p: &[[f64; 2]], d: f64, eps: f64) -> Result<Buffer, OracleError> {
-    Buffer::new(exact_ring(p, "p")?, d, eps, Side::In)
+pub fn inset<I: Input>(p: &[[I; 2]], d: I, eps: I) -> Result<Buffer, OracleError> {
+    Buffer::new(
+        exact_ring(p, "p")?,
+        d.exact("d")?,
+        eps.exact("eps")?,
+        Side::In,
+    )
 }
 
 /// [`offset`] of the polygon p_i + t·V_i at time t, exactly (§II's moving polygon).
-pub fn offset_at(
-    p: &[[f64; 2]],
-    vels: &[[f64; 2]],
-    t: f64,
-    d: f64,
-    eps: f64,
+pub fn offset_at<I: Input>(
+    p: &[[I; 2]],
+    vels: &[[I; 2]],
+    t: I,
+    d: I,
+    eps: I,
 ) -> Result<Buffer, OracleError> {
-    Buffer::new(ring_at(p, vels, t)?, d, eps, Side::Out)
+    let p = ring_at(p, vels, t)?;
+    Buffer::new(p, d.exact("d")?, eps.exact("eps")?, Side::Out)
 }
 
 /// [`inset`] of the polygon p_i + t·V_i at time t, exactly (§II's moving polygon).
-pub fn inset_at(
-    p: &[[f64; 2]],
-    vels: &[[f64; 2]],
-    t: f64,
-    d: f64,
-    eps: f64,
+pub fn inset_at<I: Input>(
+    p: &[[I; 2]],
+    vels: &[[I; 2]],
+    t: I,
+    d: I,
+    eps: I,
 ) -> Result<Buffer, OracleError> {
-    Buffer::new(ring_at(p, vels, t)?, d, eps, Side::In)
+    let p = ring_at(p, vels, t)?;
+    Buffer::new(p, d.exact("d")?, eps.exact("eps")?, Side::In)
 }
 
-fn exact(x: f64, field: &'static str) -> Result<Q, OracleError> {
-    f64_to_exact(x).ok_or_else(|| OracleError::new(field, "not finite"))
-}
-
-fn exact_ring(p: &[[f64; 2]], field: &'static str) -> Result<Vec<V2<Q>>, OracleError> {
+fn exact_ring<I: Input>(p: &[[I; 2]], field: &'static str) -> Result<Vec<V2<Q>>, OracleError> {
     p.iter()
-        .map(|v| Ok(V2::new(exact(v[0], field)?, exact(v[1], field)?)))
+        .map(|v| Ok(V2::new(v[0].exact(field)?, v[1].exact(field)?)))
         .collect()
 }
 
-fn ring_at(p: &[[f64; 2]], vels: &[[f64; 2]], t: f64) -> Result<Vec<V2<Q>>, OracleError> {
+fn ring_at<I: Input>(p: &[[I; 2]], vels: &[[I; 2]], t: I) -> Result<Vec<V2<Q>>, OracleError> {
     if vels.len() != p.len() {
         return Err(OracleError::new("vels", "not one velocity per vertex"));
     }
-    let t = exact(t, "t")?;
+    let t: Q = t.exact("t")?;
     let (p, vels) = (exact_ring(p, "p")?, exact_ring(vels, "vels")?);
     Ok(p.iter().zip(&vels).map(|(pi, vi)| pi.at(vi, &t)).collect())
 }
@@ -202,14 +211,14 @@ fn winding_about(ring: &[V2<Q>], x: &V2<Q>) -> (i32, bool) {
     (w, on)
 }
 
-/// Whether x lies in the closed region of the result (rings given as f64 points):
-/// on a ring, or with a non-zero sum of winding numbers. Exact.
-pub fn locate(regions: &[Region], x: &V2<Q>) -> Result<bool, OracleError> {
+/// Whether x lies in the closed region of the result: on a ring, or with a non-zero
+/// sum of winding numbers. Exact.
+pub fn locate<I: Input>(regions: &[Region<I>], x: &V2<Q>) -> Result<bool, OracleError> {
     Ok(locate_in(&exact_rings(regions)?, x))
 }
 
 /// Every ring of the result (outer rings and holes), exactly.
-pub fn exact_rings(regions: &[Region]) -> Result<Vec<Vec<V2<Q>>>, OracleError> {
+pub fn exact_rings<I: Input>(regions: &[Region<I>]) -> Result<Vec<Vec<V2<Q>>>, OracleError> {
     regions
         .iter()
         .flat_map(|r| core::iter::once(&r.outer).chain(&r.holes))
@@ -276,7 +285,7 @@ fn linear_in(
 }
 
 impl Buffer {
-    fn new(p: Vec<V2<Q>>, d: f64, eps: f64, side: Side) -> Result<Buffer, OracleError> {
+    fn new(p: Vec<V2<Q>>, d: Q, eps: Q, side: Side) -> Result<Buffer, OracleError> {
         if p.len() < 3 || check_simple(&p).is_err() || winding(&p) != Ok(Winding::Counterclockwise)
         {
             return Err(OracleError::new(
@@ -284,8 +293,6 @@ impl Buffer {
                 "not a simple counterclockwise polygon",
             ));
         }
-        let d = exact(d, "d")?;
-        let eps = exact(eps, "eps")?;
         if d.is_neg() {
             return Err(OracleError::new("d", "negative"));
         }
@@ -345,7 +352,7 @@ impl Buffer {
     }
 
     /// The exact verdict on a result (see the module doc).
-    pub fn check(&self, regions: &[Region]) -> Result<Verdict, OracleError> {
+    pub fn check<I: Input>(&self, regions: &[Region<I>]) -> Result<Verdict, OracleError> {
         let mut rings = Vec::new();
         for r in regions {
             rings.push((true, exact_ring(&r.outer, "regions")?));
@@ -358,16 +365,15 @@ impl Buffer {
             rings: self.rings_valid(regions, &rings),
             clear: self.clear(regions, &all)?,
             close: {
-                let pf = floats(&self.p);
-                all.iter().all(|r| self.ring_close(r, &pf))
+                let pb = boxes(&self.p);
+                all.iter().all(|r| self.ring_close(r, &pb))
             },
         })
     }
 
-    fn rings_valid(&self, regions: &[Region], rings: &[(bool, Vec<V2<Q>>)]) -> bool {
+    fn rings_valid<I>(&self, regions: &[Region<I>], rings: &[(bool, Vec<V2<Q>>)]) -> bool {
         let all: Vec<Vec<V2<Q>>> = rings.iter().map(|(_, r)| r.clone()).collect();
-        let fl: Vec<Vec<[f64; 2]>> = all.iter().map(|r| floats(r)).collect();
-        if rings.iter().any(|(_, r)| r.len() < 3) || !rings_disjoint(&all, &fl) {
+        if rings.iter().any(|(_, r)| r.len() < 3) || !rings_disjoint(&all) {
             return false;
         }
         let oriented = rings.iter().all(|(outer, r)| {
@@ -395,26 +401,21 @@ impl Buffer {
         true
     }
 
-    fn clear(&self, regions: &[Region], rings: &[Vec<V2<Q>>]) -> Result<bool, OracleError> {
+    fn clear<I>(&self, regions: &[Region<I>], rings: &[Vec<V2<Q>>]) -> Result<bool, OracleError> {
         let d2 = &self.d * &self.d;
-        let d_float = to_float(&self.d);
-        let pf = floats(&self.p);
-        let n = pf.len();
+        let pb = boxes(&self.p);
         for r in rings {
-            let rf = floats(r);
-            for i in 0..r.len() {
-                let i1 = (i + 1) % r.len();
-                let (a, b) = (&r[i], &r[i1]);
-                for (j, (c, d)) in self.edges().enumerate() {
-                    if !far_apart(rf[i], rf[i1], pf[j], pf[(j + 1) % n], d_float)
-                        && segments_closer(a, b, c, d, &d2)
-                    {
+            for (i, rb) in boxes(r).iter().enumerate() {
+                let (a, b) = (&r[i], &r[(i + 1) % r.len()]);
+                let grown = rb.grown(&self.d);
+                for ((c, d), qb) in self.edges().zip(&pb) {
+                    if !grown.apart(qb) && segments_closer(a, b, c, d, &d2) {
                         return Ok(false);
                     }
                 }
             }
         }
-        let p0_in = locate(regions, &self.p[0])?;
+        let p0_in = locate_in(rings, &self.p[0]);
         Ok(match self.side {
             Side::Out => p0_in,
             Side::In => {
@@ -431,25 +432,21 @@ impl Buffer {
     }
 
     /// Every edge of the ring is covered by the capsules of P's edges at L.
-    fn ring_close(&self, r: &[V2<Q>], pf: &[[f64; 2]]) -> bool {
-        let rf = floats(r);
+    fn ring_close(&self, r: &[V2<Q>], pb: &[Bx]) -> bool {
         let n = r.len();
-        (0..n).all(|i| self.segment_close(&r[i], &r[(i + 1) % n], (rf[i], rf[(i + 1) % n]), pf))
+        let l = self.limit();
+        boxes(r)
+            .iter()
+            .enumerate()
+            .all(|(i, rb)| self.segment_close(&r[i], &r[(i + 1) % n], &rb.grown(&l), pb))
     }
 
     /// [a, b] ⊆ ⋃ {dist(·, e) ≤ L} over P's edges e: the parameters s ∈ [0, 1] of
     /// a + s·(b − a) within L of each vertex (a quadratic's roots) and of each edge's
     /// band (linear ends, one with √(L²|e|²)), swept in exact order.
-    fn segment_close(
-        &self,
-        a: &V2<Q>,
-        b: &V2<Q>,
-        ab: ([f64; 2], [f64; 2]),
-        pf: &[[f64; 2]],
-    ) -> bool {
+    fn segment_close(&self, a: &V2<Q>, b: &V2<Q>, grown: &Bx, pb: &[Bx]) -> bool {
         let l = self.limit();
         let l2 = &l * &l;
-        let l_float = to_float(&l);
         let e = b.minus(a);
         let ee = e.sq();
         let zero = Alg::rational(Q::zero());
@@ -458,11 +455,10 @@ impl Buffer {
         if ee.is_zero_() {
             return self.boundary_sq(a) <= l2;
         }
-        let n = pf.len();
         // Enough (the distance to one segment is convex along [a, b]): both ends
         // within L of one edge.
         let near = |j: usize, c: &V2<Q>, d: &V2<Q>| {
-            !far_apart(ab.0, ab.1, pf[j], pf[(j + 1) % n], l_float)
+            !grown.apart(&pb[j])
                 && point_segment_within(a, c, d, &l2)
                 && point_segment_within(b, c, d, &l2)
         };
@@ -471,7 +467,7 @@ impl Buffer {
         }
         let mut spans: Vec<(Alg<Q>, Alg<Q>)> = Vec::new();
         for (j, (c, d)) in self.edges().enumerate() {
-            if far_apart(ab.0, ab.1, pf[j], pf[(j + 1) % n], l_float) {
+            if grown.apart(&pb[j]) {
                 continue;
             }
             // The disc about c: |a − c + s·e|² ≤ L².
@@ -514,58 +510,66 @@ impl Buffer {
     }
 }
 
-/// A float prefilter that never drops a pair within `r` of each other: the boxes are
-/// more than 2r + 2⁻⁵⁰·m apart along x or y in floats, m the largest |coordinate|.
-/// Each float coordinate is within u·m of its exact value (u = 2⁻⁵³; exact for the
-/// result's own points), the gap's subtraction adds at most u·2m, so the exact gap
-/// exceeds the float one less 4u·m; and r, the nearest float to the exact bound, is at
-/// least half of it.
-fn far_apart(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2], r: f64) -> bool {
-    let gx = (c[0].min(d[0]) - a[0].max(b[0])).max(a[0].min(b[0]) - c[0].max(d[0]));
-    let gy = (c[1].min(d[1]) - a[1].max(b[1])).max(a[1].min(b[1]) - c[1].max(d[1]));
-    let gap = gx.max(gy);
-    let m = [a, b, c, d]
-        .iter()
-        .fold(0.0f64, |m, v| m.max(v[0].abs()).max(v[1].abs()));
-    let rounding = m / 1_125_899_906_842_624.0; // 2⁻⁵⁰·m
-    gap.is_finite() && gap > 2.0 * r + rounding
+/// The closed box of a segment, exactly.
+#[derive(Clone, Debug)]
+struct Bx {
+    lo: V2<Q>,
+    hi: V2<Q>,
 }
 
-/// The nearest floats of exact points (for prefilters only).
-fn floats(p: &[V2<Q>]) -> Vec<[f64; 2]> {
-    p.iter().map(|v| [to_float(&v.x), to_float(&v.y)]).collect()
+impl Bx {
+    fn of(a: &V2<Q>, b: &V2<Q>) -> Bx {
+        let mn = |x: &Q, y: &Q| if x < y { x.clone() } else { y.clone() };
+        let mx = |x: &Q, y: &Q| if x > y { x.clone() } else { y.clone() };
+        Bx {
+            lo: V2::new(mn(&a.x, &b.x), mn(&a.y, &b.y)),
+            hi: V2::new(mx(&a.x, &b.x), mx(&a.y, &b.y)),
+        }
+    }
+
+    /// The box grown by r on every side.
+    fn grown(&self, r: &Q) -> Bx {
+        Bx {
+            lo: V2::new(&self.lo.x - r, &self.lo.y - r),
+            hi: V2::new(&self.hi.x + r, &self.hi.y + r),
+        }
+    }
+
+    /// The boxes share no point (then the segments of a box grown by r and of the
+    /// other are more than r apart).
+    fn apart(&self, o: &Bx) -> bool {
+        o.lo.x > self.hi.x || o.hi.x < self.lo.x || o.lo.y > self.hi.y || o.hi.y < self.lo.y
+    }
+}
+
+/// The boxes of a ring's edges, edge i from vertex i to i + 1.
+fn boxes(r: &[V2<Q>]) -> Vec<Bx> {
+    (0..r.len())
+        .map(|i| Bx::of(&r[i], &r[(i + 1) % r.len()]))
+        .collect()
 }
 
 /// No two edges of the rings meet, except neighbours of one ring at their common
-/// vertex (without folding back over each other). Pairs are pruned by their boxes
-/// (exact comparisons of the f64 coordinates), swept along x; each remaining pair is
-/// decided exactly.
-fn rings_disjoint(rings: &[Vec<V2<Q>>], floats: &[Vec<[f64; 2]>]) -> bool {
-    // (ring, index, min x, max x, min y, max y)
+/// vertex (without folding back over each other). Pairs are pruned by their boxes,
+/// swept along x; each remaining pair is decided exactly.
+fn rings_disjoint(rings: &[Vec<V2<Q>>]) -> bool {
     let mut es = Vec::new();
-    for (k, r) in floats.iter().enumerate() {
-        let n = r.len();
-        for i in 0..n {
-            let (a, b) = (r[i], r[(i + 1) % n]);
-            es.push((
-                k,
-                i,
-                a[0].min(b[0]),
-                a[0].max(b[0]),
-                a[1].min(b[1]),
-                a[1].max(b[1]),
-            ));
+    for (k, r) in rings.iter().enumerate() {
+        for (i, b) in boxes(r).into_iter().enumerate() {
+            es.push((k, i, b));
         }
     }
-    es.sort_by(|x, y| x.2.total_cmp(&y.2));
-    for (m, &(k, i, _, hx, ly, hy)) in es.iter().enumerate() {
-        for &(l, j, lx2, _, ly2, hy2) in &es[m + 1..] {
-            if lx2 > hx {
+    es.sort_by(|x, y| x.2.lo.x.cmp(&y.2.lo.x));
+    for (m, (k, i, bi)) in es.iter().enumerate() {
+        let (k, i) = (*k, *i);
+        for (l, j, bj) in &es[m + 1..] {
+            if bj.lo.x > bi.hi.x {
                 break;
             }
-            if ly2 > hy || ly > hy2 {
+            if bi.apart(bj) {
                 continue;
             }
+            let (l, j) = (*l, *j);
             let (ri, rj) = (&rings[k], &rings[l]);
             let (p, q) = (&ri[i], &ri[(i + 1) % ri.len()]);
             let (r, s) = (&rj[j], &rj[(j + 1) % rj.len()]);
@@ -589,89 +593,7 @@ fn rings_disjoint(rings: &[Vec<V2<Q>>], floats: &[Vec<[f64; 2]>]) -> bool {
     true
 }
 
-/// The exact point of an f64 pair (`None` if not finite), for sampling.
-pub fn exact_point(x: [f64; 2]) -> Option<V2<Q>> {
-    Some(V2::new(f64_to_exact(x[0])?, f64_to_exact(x[1])?))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn region(outer: &[[f64; 2]]) -> Region {
-        Region {
-            outer: outer.to_vec(),
-            holes: Vec::new(),
-        }
-    }
-
-    const SQUARE: [[f64; 2]; 4] = [[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]];
-
-    #[test]
-    fn the_mitred_square_contains_the_buffer_but_reaches_too_far() {
-        let b = offset(&SQUARE, 1.0, 0.01).expect("valid");
-        let mitred = region(&[[-1.0, -1.0], [3.0, -1.0], [3.0, 3.0], [-1.0, 3.0]]);
-        let v = b.check(&[mitred]).expect("finite");
-        assert!(v.rings && v.clear && !v.close, "{v:?}");
-        // With ε = 1, L = 2 reaches the mitred corners (√2 from the square's).
-        let wide = offset(&SQUARE, 1.0, 1.0).expect("valid");
-        let mitred = region(&[[-1.0, -1.0], [3.0, -1.0], [3.0, 3.0], [-1.0, 3.0]]);
-        assert!(wide.check(&[mitred]).expect("finite").holds());
-    }
-
-    #[test]
-    fn a_square_cut_at_its_corners_misses_the_buffer() {
-        let b = offset(&SQUARE, 1.0, 0.01).expect("valid");
-        // The octagon through the edges' shifted copies, its corners cut at distance
-        // 1/√2 < 1 from the square's corners.
-        let cut = region(&[
-            [0.0, -1.0],
-            [2.0, -1.0],
-            [3.0, 0.0],
-            [3.0, 2.0],
-            [2.0, 3.0],
-            [0.0, 3.0],
-            [-1.0, 2.0],
-            [-1.0, 0.0],
-        ]);
-        let v = b.check(&[cut]).expect("finite");
-        assert!(v.rings && !v.clear && v.close, "{v:?}");
-    }
-
-    #[test]
-    fn the_inset_square_is_exact_and_the_wrong_way_round_is_not_a_ring() {
-        let b = inset(&SQUARE, 0.5, 0.01).expect("valid");
-        let inner = region(&[[0.5, 0.5], [1.5, 0.5], [1.5, 1.5], [0.5, 1.5]]);
-        assert!(b
-            .check(std::slice::from_ref(&inner))
-            .expect("finite")
-            .holds());
-        let mut cw = inner.clone();
-        cw.outer.reverse();
-        assert!(!b.check(&[cw]).expect("finite").rings);
-        // Too deep: closer than D to the boundary.
-        let fat = region(&[[0.4, 0.4], [1.6, 0.4], [1.6, 1.6], [0.4, 1.6]]);
-        assert!(!b.check(&[fat]).expect("finite").clear);
-        // Points: the centre is in I_D, a point 0.3 from the boundary is not.
-        let centre = exact_point([1.0, 1.0]).expect("finite");
-        assert!(b.inside_truth(&centre) && b.inside_limit(&centre));
-        assert!(!b.inside_truth(&exact_point([0.3, 1.0]).expect("finite")));
-    }
-
-    #[test]
-    fn arguments_name_their_field() {
-        assert_eq!(offset(&SQUARE, -1.0, 0.1).unwrap_err().field, "d");
-        assert_eq!(inset(&SQUARE, 1.0, 0.0).unwrap_err().field, "eps");
-        let mut cw = SQUARE;
-        cw.reverse();
-        assert_eq!(offset(&cw, 1.0, 0.1).unwrap_err().field, "p");
-        assert_eq!(
-            offset_at(&SQUARE, &[[0.0, 0.0]; 3], 1.0, 1.0, 0.1)
-                .unwrap_err()
-                .field,
-            "vels"
-        );
-        let moved = offset_at(&SQUARE, &[[1.0, 0.0]; 4], 2.0, 1.0, 0.1).expect("valid");
-        assert_eq!(moved.p[0], exact_point([2.0, 0.0]).expect("finite"));
-    }
+/// The exact point of a pair the oracle reads, for sampling.
+pub fn exact_point<I: Input>(x: [I; 2]) -> Result<V2<Q>, OracleError> {
+    Ok(V2::new(x[0].exact("x")?, x[1].exact("x")?))
 }

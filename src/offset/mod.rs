@@ -13,6 +13,20 @@
 //! A result is an [`Offset`]: regions, each an outer ring (counterclockwise) with holes
 //! (clockwise); the rings are simple and pairwise disjoint.
 //!
+//! ```
+//! use polyguard::offset::{inset, offset};
+//! use polyguard::Vect2;
+//!
+//! let square = [Vect2::new(0.0, 0.0), Vect2::new(2.0, 0.0), Vect2::new(2.0, 2.0), Vect2::new(0.0, 2.0)];
+//! // Grown by 0.5 within 1 %: one region, its corners rounded by circumscribed arcs.
+//! let grown = offset(&square, 0.5, 0.01)?;
+//! assert_eq!(grown.regions.len(), 1);
+//! assert!(grown.regions[0].outer.len() > 8);
+//! // Shrunk by 1.5: no point of the square is 1.5 from its boundary.
+//! assert!(inset(&square, 1.5, 0.01)?.regions.is_empty());
+//! # Ok::<(), polyguard::offset::OffsetError>(())
+//! ```
+//!
 //! # Construction
 //! With D' = D·(1 + ε') and ε' = min(ε, [`EPS_CAP`])/4 ([`MARGIN_SHARE`]), the
 //! construction region Q_K is
@@ -28,7 +42,8 @@
 //!   by the same argument turned inside out.
 //!
 //! The boundary of Q_K lies on the shifted edges and the arcs' pieces (the raw
-//! segments, module `raw`). Module `arrange` splits them at their crossings (exact
+//! segments, module `raw`; where two shifted edges meet without a fan they are cut at
+//! their mitre point, so that nearly parallel neighbours join at one node). Module `arrange` splits them at their crossings (exact
 //! orientations), keeps each piece whose left side is in Q_K and right side is not (a
 //! membership test of its midpoint against the pieces, exact orientations on the f64
 //! points), and links the kept pieces into rings. Holes of the offset and the pieces of
@@ -38,7 +53,7 @@
 //!
 //! # Certificate
 //! Before returning, module `certify` checks the rings with certified predicates (exact
-//! orientations, and [`crate::ball`]'s forward error bounds on squared distances; no
+//! orientations, and `ball`'s forward error bounds on squared distances; no
 //! absolute epsilon):
 //! - the rings are simple and pairwise disjoint (exact);
 //! - every edge of Q is at distance ≥ D from every edge of P (certified lower bound of
@@ -54,13 +69,19 @@
 //!   **∂Q ⊆ P ⊕ disc(D(1 + ε))** (of ∂P for the inset). That Q has no extra region
 //!   filling a hole of the true offset (or misses no piece of the inset) is the
 //!   construction's argument above: Q_K is sandwiched between the two sets, and the
-//!   certificate confirms the rings bound it.
+//!   rings bound it. The boundary cannot show a filled hole, but the construction
+//!   cannot drop one quietly: each piece of a raw segment is kept or dropped by the
+//!   exact location of its midpoint among the f64 pieces, so a hole's ring is dropped
+//!   only where its midpoints truly lie inside Q_K, and a ring broken part way does not
+//!   close (`Uncertified`). The exact oracle samples the interior in the tests.
 //!
 //! A result the certificate rejects is [`OffsetError::Uncertified`], never a silent wrong
-//! polygon. At time t ([`offset_at`], [`inset_at`]) the vertices p_i + t·V_i are
-//! evaluated in f64 with an error radius r per vertex ([`crate::ball`]); the certificate
+//! polygon. A problem whose size lies beyond 2^±[`SCALE_RANGE`] is solved scaled by a
+//! power of two (exactly, both ways; the properties are invariant under similarity). At time t ([`offset_at`], [`inset_at`]) the vertices p_i + t·V_i are
+//! evaluated in f64 with an error radius r per vertex (`ball`); the certificate
 //! then uses D + [`MOVE_SLACK`]·r for the containment and D·(1 + ε) − MOVE_SLACK·r for
-//! the closeness, which covers the exact polygon at t.
+//! the closeness, which covers the exact polygon at t. (With D = 0 and inexact vertices
+//! the exact polygon itself is asked for, which f64 cannot hold: `Uncertified`.)
 //!
 //! # Error bounds
 //! - [`MARGIN_SHARE`]: the share of ε the construction keeps for rounding: it builds at
@@ -69,9 +90,13 @@
 //!   D·ε/4 on either side for the f64 rounding of its vertices, which the certificate
 //!   then bounds exactly.
 //! - The squared point-to-segment distance is evaluated on balls: each rounding adds
-//!   2u·|value| to the radius (u = 2⁻⁵³), propagated by [`crate::ball::Ball`]'s rules;
+//!   2u·|value| to the radius (u = 2⁻⁵³), propagated by `ball::Ball`'s rules;
 //!   decisions are taken only when the ball excludes the threshold.
 //! - [`MOVE_SLACK`]: the distance between the exact and the f64 polygon at time t.
+//! - [`ARC_ROOM`]: the share of each arc piece's angle left for the rounding of acos,
+//!   cos and the circumscribed radius.
+//! - [`SCALE_RANGE`]: the sizes solved as they are; others are scaled by 2^k exactly.
+//! - [`MAX_PIECES_PER_TURN`] and [`EPS_CAP`]: the limits of the construction's size.
 
 mod arrange;
 mod certify;
@@ -219,7 +244,7 @@ pub fn inset_at(
 }
 
 /// The vertices p_i + t·V_i in f64 and each one's error radius (per coordinate), from
-/// [`Ball`]'s rules: t·V rounded once, the sum rounded once.
+/// `Ball`'s rules: t·V rounded once, the sum rounded once.
 fn at_time(p: &[Vect2], vels: &[Vect2], t: f64) -> Result<(Vec<Vect2>, Vec<f64>), OffsetError> {
     if !t.is_finite() {
         return Err(OffsetError::Invalid {
@@ -311,8 +336,44 @@ fn build(p: &[Vect2], radii: &[f64], d: f64, eps: f64, side: Side) -> Result<Off
     ) {
         return Err(OffsetError::TooFine { pieces_per_turn });
     }
+    let k = scale_exponent(p, d + slack);
+    if k == 0 {
+        return construct(p, d, eps, slack, side);
+    }
+    // Far from 1 in scale (exact products would over- or underflow): the similar
+    // problem scaled by 2^k, exactly, and its answer scaled back, exactly.
+    let scaled: Vec<Vect2> = p.iter().map(|&v| times_pow2(v, k)).collect();
+    let exact = |a: Vect2, b: Vect2| times_pow2(b, -k) == a && b.is_finite();
+    let ds = times_pow2(Vect2::new(d, slack), k);
+    if !(p.iter().zip(&scaled).all(|(&a, &b)| exact(a, b)) && exact(Vect2::new(d, slack), ds)) {
+        return Err(OffsetError::Uncertified {
+            reason: "coordinates and D too far apart in scale to scale exactly",
+        });
+    }
+    let mut out = construct(&scaled, ds.x, eps, ds.y, side)?;
+    for ring in out
+        .regions
+        .iter_mut()
+        .flat_map(|r| core::iter::once(&mut r.outer).chain(r.holes.iter_mut()))
+    {
+        for v in ring.iter_mut() {
+            let back = times_pow2(*v, -k);
+            if times_pow2(back, k) != *v {
+                return Err(OffsetError::Uncertified {
+                    reason: "the result does not scale back exactly",
+                });
+            }
+            *v = back;
+        }
+    }
+    Ok(out)
+}
+
+/// The construction and its certificate (the module doc), for a deduplicated P.
+fn construct(p: &[Vect2], d: f64, eps: f64, slack: f64, side: Side) -> Result<Offset, OffsetError> {
+    let e = eps.min(EPS_CAP) * MARGIN_SHARE;
     // D' covers the slack of a moving polygon too: the construction stays D'·ε/4 clear.
-    let d_build = (d + slack) * (1.0 + e) * (1.0 + 4.0 * U);
+    let d_build = (d + slack) * (1.0 + e) * BUILD_ROUNDING;
     let raw = raw::Raw::new(p, d_build, max_arc_angle(e), side);
     let rings = arrange::rings(&raw)?;
     let regions = arrange::regions(rings)?;
@@ -321,11 +382,59 @@ fn build(p: &[Vect2], radii: &[f64], d: f64, eps: f64, side: Side) -> Result<Off
     Ok(Offset { regions })
 }
 
-/// The largest arc piece δ with sec(δ/2) ≤ 1 + e, less a share for rounding:
-/// δ = 2·acos(1/(1 + e))·(1 − 2⁻²⁰), at most a quarter turn.
+/// The power of two that brings the largest of P's coordinates and D near 1, or 0 when
+/// they already lie within 2^±[`SCALE_RANGE`] (where no exact product of the
+/// construction's orientations over- or underflows).
+fn scale_exponent(p: &[Vect2], d: f64) -> i32 {
+    let m = p
+        .iter()
+        .fold(d.abs(), |m, v| m.max(v.x.abs()).max(v.y.abs()));
+    let e = if m > 0.0 {
+        libm::log2(m).floor() as i32
+    } else {
+        0
+    };
+    if e.abs() <= SCALE_RANGE {
+        0
+    } else {
+        -e
+    }
+}
+
+/// The largest |log₂| of the problem's size kept as it is: squared differences of
+/// coordinates up to 2^±300 stay far inside the f64 range (2^±1022).
+pub const SCALE_RANGE: i32 = 300;
+
+/// v·2^k, exactly when the result is normal (steps of at most 2^500, each exact
+/// unless it under- or overflows; callers check the round trip).
+fn times_pow2(v: Vect2, k: i32) -> Vect2 {
+    let (mut x, mut y, mut k) = (v.x, v.y, k);
+    while k != 0 {
+        let step = k.clamp(-500, 500);
+        // 2^step, built from its bits (step ∈ [−500, 500]: a normal float).
+        let f = f64::from_bits(((1023 + step) as u64) << 52);
+        x *= f;
+        y *= f;
+        k -= step;
+    }
+    Vect2::new(x, y)
+}
+
+/// The share of the arc angle given up for rounding: δ = 2·acos(1/(1 + e))·(1 − 2⁻²⁰).
+/// acos, the quotient and cos in the construction each err by a few ulps (≈ 2⁻⁵⁰
+/// relative); giving up 2⁻²⁰ of the angle lowers sec(δ/2) − 1 by about 2⁻¹⁹ of itself,
+/// far more than those errors move it, so the arcs' factor stays ≤ 1 + e.
+pub const ARC_ROOM: f64 = 1.0 / 1_048_576.0;
+
+/// The rounding allowance on D' = (D + slack)·(1 + e): three roundings, each at most u,
+/// so ×(1 + 4u) keeps the computed D' at or above the exact product.
+const BUILD_ROUNDING: f64 = 1.0 + 4.0 * U;
+
+/// The largest arc piece δ with sec(δ/2) ≤ 1 + e, less [`ARC_ROOM`] for rounding, at
+/// most a quarter turn.
 fn max_arc_angle(e: f64) -> f64 {
     let half = libm::acos(1.0 / (1.0 + e));
-    (2.0 * half * (1.0 - 1.0 / 1_048_576.0)).min(core::f64::consts::FRAC_PI_2)
+    (2.0 * half * (1.0 - ARC_ROOM)).min(core::f64::consts::FRAC_PI_2)
 }
 
 #[cfg(test)]

@@ -90,10 +90,23 @@ impl<'a> Raw<'a> {
             segs: Vec::new(),
         };
         let normals: Vec<Vect2> = (0..n).map(|i| normal(p[i], p[(i + 1) % n], side)).collect();
+        let fans: Vec<bool> = (0..n)
+            .map(|j| {
+                let turn = orient(p[(j + n - 1) % n], p[j], p[(j + 1) % n]);
+                match (side, turn) {
+                    (Side::Out, Some(t)) => t >= 0,
+                    (Side::In, Some(t)) => t <= 0,
+                    (_, None) => true,
+                }
+            })
+            .collect();
+        let mitres = mitres(p, &normals, &fans, d);
         // The strips: edge i's shifted copy, the strip on its left for Out (the edge is
         // on its left) and on its right for In (the strip lies between it and the edge).
+        // The raw segment is the shifted copy cut at the mitre points of its ends.
         for i in 0..n {
-            let (a, b) = (p[i], p[(i + 1) % n]);
+            let j = (i + 1) % n;
+            let (a, b) = (p[i], p[j]);
             let off = normals[i].scale(d);
             let (sa, sb) = (a + off, b + off);
             let verts = match side {
@@ -101,8 +114,8 @@ impl<'a> Raw<'a> {
                 Side::In => std::vec![a, b, sb, sa],
             };
             raw.segs.push(Seg {
-                a: sa,
-                b: sb,
+                a: mitres[i].unwrap_or(sa),
+                b: mitres[j].unwrap_or(sb),
                 piece: raw.pieces.len(),
             });
             raw.pieces.push(Piece::new(verts));
@@ -111,16 +124,8 @@ impl<'a> Raw<'a> {
         // for Out, reflex ones for In), and at straight ones, whose two shifted edges
         // may end an ulp apart.
         for j in 0..n {
-            let i = (j + n - 1) % n;
-            let v = p[j];
-            let turn = orient(p[i], v, p[(j + 1) % n]);
-            let fan = match (side, turn) {
-                (Side::Out, Some(t)) => t >= 0,
-                (Side::In, Some(t)) => t <= 0,
-                (_, None) => true,
-            };
-            if fan {
-                raw.fan(v, normals[i], normals[j], d, delta);
+            if fans[j] {
+                raw.fan(p[j], normals[(j + n - 1) % n], normals[j], d, delta);
             }
         }
         raw
@@ -163,6 +168,42 @@ impl<'a> Raw<'a> {
         }
         self.pieces.push(Piece::new(verts));
     }
+}
+
+/// At each vertex without a fan, the point where the two shifted edges' lines cross
+/// (the mitre point v + d·(n₀ + n₁)/(1 + n₀·n₁)), when it lies within both edges'
+/// spans and the edges' two cuts keep their order. Cutting there joins the two raw
+/// segments at one node: their crossing, for nearly parallel edges, is a point that the
+/// general intersection places poorly, and the tips beyond it lie inside the
+/// neighbour's strip anyway. (A float choice: the certificate checks the outcome.)
+fn mitres(p: &[Vect2], normals: &[Vect2], fans: &[bool], d: f64) -> Vec<Option<Vect2>> {
+    let n = p.len();
+    let along = |i: usize, m: Vect2| {
+        let e = p[(i + 1) % n] - p[i];
+        (m - p[i]).dot(e) / e.sq()
+    };
+    let mut out: Vec<Option<Vect2>> = (0..n)
+        .map(|j| {
+            if fans[j] {
+                return None;
+            }
+            let i = (j + n - 1) % n;
+            let (n0, n1) = (normals[i], normals[j]);
+            let m = p[j] + (n0 + n1).scale(d / (1.0 + n0.dot(n1)));
+            let (ti, tj) = (along(i, m), along(j, m));
+            (m.is_finite() && ti > 0.0 && ti < 1.0 && tj > 0.0 && tj < 1.0).then_some(m)
+        })
+        .collect();
+    for i in 0..n {
+        let j = (i + 1) % n;
+        if let (Some(a), Some(b)) = (out[i], out[j]) {
+            if along(i, b) <= along(i, a) {
+                out[i] = None;
+                out[j] = None;
+            }
+        }
+    }
+    out
 }
 
 /// Where a point lies with respect to a ring.

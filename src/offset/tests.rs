@@ -170,3 +170,60 @@ fn straight_and_repeated_vertices_are_one_polygon() {
     let i = inset(&p, 0.5, 0.01).expect("certified");
     assert_eq!(i.regions.len(), 1);
 }
+
+/// The certificate itself: a mitred square (corners √2·D out) is not close, a square
+/// with cut corners (1/√2·D from the corners) is not clear, the true offset's
+/// construction is both. (The mitred square stands 1.001·D off: edges exactly at D
+/// are within rounding of the bound and not certified, by design.)
+#[test]
+fn the_certificate_rejects_mitred_and_cut_corners() {
+    let sq = square(2.0);
+    let bounds = certify::Bounds::new(1.0, 0.01, 0.0);
+    let one = |outer: Vec<Vect2>| {
+        std::vec![Region {
+            outer,
+            holes: Vec::new(),
+        }]
+    };
+    let (lo, hi) = (-1.001, 3.001);
+    let mitred = one(std::vec![v(lo, lo), v(hi, lo), v(hi, hi), v(lo, hi)]);
+    assert_eq!(
+        certify::certify(&sq, &mitred, &bounds, Side::Out),
+        Err(OffsetError::Uncertified {
+            reason: "an edge of the result is farther than D·(1 + ε) from P"
+        })
+    );
+    let cut = one(std::vec![
+        v(0.0, -1.0),
+        v(2.0, -1.0),
+        v(3.0, 0.0),
+        v(3.0, 2.0),
+        v(2.0, 3.0),
+        v(0.0, 3.0),
+        v(-1.0, 2.0),
+        v(-1.0, 0.0),
+    ]);
+    assert_eq!(
+        certify::certify(&sq, &cut, &bounds, Side::Out),
+        Err(OffsetError::Uncertified {
+            reason: "an edge of the result is closer than D to P"
+        })
+    );
+    // The inset of a square as a hand-made square: certified; shifted outside P, not.
+    let (a, b) = (0.501, 1.499);
+    let inner = one(std::vec![v(a, a), v(b, a), v(b, b), v(a, b)]);
+    let half = certify::Bounds::new(0.5, 0.01, 0.0);
+    assert_eq!(certify::certify(&sq, &inner, &half, Side::In), Ok(()));
+    let outside = one(std::vec![
+        v(3.0, 0.5),
+        v(4.0, 0.5),
+        v(4.0, 1.5),
+        v(3.0, 1.5)
+    ]);
+    assert!(certify::certify(&sq, &outside, &half, Side::In).is_err());
+    let ok = offset(&sq, 1.0, 0.01).expect("certified");
+    assert_eq!(
+        certify::certify(&sq, &ok.regions, &bounds, Side::Out),
+        Ok(())
+    );
+}

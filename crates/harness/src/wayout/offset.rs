@@ -8,7 +8,7 @@ use polyguard_oracle::offset::{self as exact, Buffer, Region, Side, Verdict};
 use polyguard_oracle::OracleError;
 
 /// The engine's regions as the oracle's (f64 points, unchanged).
-pub fn regions_of(result: &Offset) -> Vec<Region> {
+pub fn regions_of(result: &Offset) -> Vec<Region<f64>> {
     let pts = |r: &[Vect2]| r.iter().map(|v| [v.x, v.y]).collect::<Vec<_>>();
     result
         .regions
@@ -60,6 +60,20 @@ pub fn check(
     problem(p, d, eps, side)?.check(&regions_of(result))
 }
 
+/// [`check`] at time t of the moving polygon p_i + t·V_i (the engine's `offset_at` or
+/// `inset_at` result).
+pub fn check_at(
+    p: &[Vect2],
+    vels: &[Vect2],
+    t: f64,
+    d: f64,
+    eps: f64,
+    side: Side,
+    result: &Offset,
+) -> Result<Verdict, OracleError> {
+    problem_at(p, vels, t, d, eps, side)?.check(&regions_of(result))
+}
+
 /// Exact sampling of what the boundary cannot show (a filled hole, a missed piece): on
 /// an n × n grid over the box of P grown by 2·D(1 + ε), every point of the true set at D
 /// (offset) or at D(1 + ε) (inset) must be in the result, and every point of the result
@@ -94,9 +108,7 @@ pub fn sample(
                 a - reach + (b - a + 2.0 * reach) * k as f64 / steps as f64
             };
             let x = [f(i, lo[0], hi[0]), f(j, lo[1], hi[1])];
-            let Some(xq) = exact::exact_point(x) else {
-                continue;
-            };
+            let xq = exact::exact_point(x)?;
             let inside = exact::locate_in(&rings, &xq);
             let (must_in, may_in) = match problem.side {
                 Side::Out => (problem.inside_truth(&xq), problem.inside_limit(&xq)),

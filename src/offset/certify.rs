@@ -134,7 +134,8 @@ fn membership(rings: &[&[Vect2]], x: Vect2) -> Result<Loc, OffsetError> {
 
 /// Checks the result against P (see the parent module's doc): rings disjoint, every
 /// edge of Q at least `bounds.clear` from P's edges and within `bounds.close` of one of
-/// them, and the locations that place P (Out) or ∂P (In) on the right side.
+/// them, and the locations that place P (Out) or ∂P (In) on the right side, and every
+/// ring outside P (Out) or every region inside P (In).
 /// Cost: O(|Q|·n) distance checks (pruned by boxes) and O(|Q|²) at worst for
 /// disjointness (swept by x).
 pub(crate) fn certify(
@@ -190,6 +191,18 @@ pub(crate) fn certify(
             }
             Ok(())
         }
-        Side::Out => Ok(()),
+        Side::Out => {
+            // A ring is at least D from every edge of P, so it lies wholly inside P or
+            // wholly outside: one vertex tells which. A ring inside P (a hole cut out of
+            // P where P is about 2·D wide) would pass every distance test above.
+            for ring in &rings {
+                let at =
+                    winding_number(p, ring[0]).ok_or(fail("a location over- or underflows"))?;
+                if at != (0, false) {
+                    return Err(fail("a ring of the offset lies inside P"));
+                }
+            }
+            Ok(())
+        }
     }
 }

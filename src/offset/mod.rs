@@ -59,8 +59,10 @@
 //! - every edge of Q is at distance ≥ D from every edge of P (certified lower bound of
 //!   the squared distance, see `certify`): ∂Q misses the open D-neighbourhood of P (of
 //!   ∂P for the inset);
-//! - offset: a vertex of P is inside Q. The D-neighbourhood of P is connected and ∂Q
-//!   misses it, so it all lies in Q: **P ⊕ disc(D) ⊆ Q**. Inset: a vertex of P is
+//! - offset: a vertex of P is inside Q, and every ring of Q has a vertex outside P (a
+//!   ring is at least D from ∂P, so it is wholly inside P or wholly outside). The
+//!   D-neighbourhood of P is connected and ∂Q misses it, so it all lies in Q:
+//!   **P ⊕ disc(D) ⊆ Q**. Inset: a vertex of P is
 //!   outside Q (so the D-neighbourhood of ∂P is outside Q) and each outer ring has a
 //!   vertex inside P (so each region, which meets no point of ∂P, is inside P):
 //!   **Q ⊆ {x ∈ P : dist(x, ∂P) ≥ D}**;

@@ -227,3 +227,24 @@ fn the_certificate_rejects_mitred_and_cut_corners() {
         Ok(())
     );
 }
+
+/// A ring of the result inside P is refused even where every distance test passes: P
+/// is a strip 2.005·D wide, and a thin clockwise ring along its middle line is at least D
+/// from both long edges and within D·(1 + ε) of one of them. Added to the true offset as
+/// a hole, it would cut points of P out of Q.
+#[test]
+fn the_certificate_rejects_a_ring_inside_p() {
+    let strip = std::vec![v(0.0, 0.0), v(20.0, 0.0), v(20.0, 2.005), v(0.0, 2.005)];
+    let bounds = certify::Bounds::new(1.0, 0.01, 0.0);
+    let mut q = offset(&strip, 1.0, 0.01).expect("certified").regions;
+    assert_eq!(certify::certify(&strip, &q, &bounds, Side::Out), Ok(()));
+    let (y0, y1) = (1.0005, 1.0045);
+    q[0].holes
+        .push(std::vec![v(1.5, y0), v(1.5, y1), v(18.0, y1), v(18.0, y0)]);
+    assert_eq!(
+        certify::certify(&strip, &q, &bounds, Side::Out),
+        Err(OffsetError::Uncertified {
+            reason: "a ring of the offset lies inside P"
+        })
+    );
+}

@@ -473,3 +473,41 @@ pub fn offset_answer(case: &WayCase, ask: &Ask) -> Result<Map<String, Value>, Fi
     out.insert("time".into(), t.into());
     Ok(out)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const KEEP_IN: &str = r#"{"id":"k","lookahead":1,"sep":3,"fence":"keep_in","point":{"pos":[19,1],"vel":[0,0]},"polygon":{"vertices":[[0,0],[20,0],[20,20],[0,20]]}}"#;
+
+    /// The exact minimum to the keep-in square's core is √8 (from (19, 1) to (17, 3)):
+    /// its nearest f64 is the correctly rounded √8, and its text says it exactly.
+    #[test]
+    fn the_exact_minimum_is_rounded_to_nearest() {
+        let ask = Ask {
+            truth: true,
+            ..Ask::default()
+        };
+        let (a, ok) = answer_line(Command::Recover, KEEP_IN, 1, &ask);
+        assert!(ok, "{a}");
+        let r = &a["recovery"];
+        assert_eq!(r["min"].as_f64(), Some(8f64.sqrt()));
+        assert_eq!(r["min_exact"], "√(8)");
+        assert_eq!(r["meets"], true);
+        assert!(r["min_lo"].as_f64() <= Some(8f64.sqrt()));
+    }
+
+    /// Course bands tile [0°, 360°]; the current velocity's verdict is its own.
+    #[test]
+    fn course_bands_tile_the_circle() {
+        let line = r#"{"id":"b","lookahead":1,"sep":0.5,"point":{"pos":[0,-3],"vel":[0,5]},"polygon":{"vertices":[[-1,0],[1,0],[0,1]]}}"#;
+        let (a, ok) = answer_line(Command::Bands, line, 1, &Ask::default());
+        assert!(ok, "{a}");
+        assert_eq!(a["current"], "conflict");
+        let bands = a["course"]["bands"].as_array().expect("bands");
+        assert_eq!(bands[0]["from_deg"], 0.0);
+        assert_eq!(bands[bands.len() - 1]["to_rad"], TAU);
+        assert!(bands.iter().any(|b| b["kind"] == "clear"));
+        assert_eq!(course_of(Vect2::new(-1.0, 0.0)).to_degrees(), 270.0);
+    }
+}

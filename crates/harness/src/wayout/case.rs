@@ -321,3 +321,72 @@ fn bands_options(b: &Map<String, Value>, three_d: bool) -> Result<BandsOptions, 
         vertical_speeds,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const GOOD: &str = r#"{"id":"w","lookahead":2,"sep":0.5,"time":1,"bands":{"speeds":[0,3]},"point":{"pos":[5,-3],"vel":[0,1]},"polygons":[{"vertices":[[0,0],[2,0],[2,2],[0,2]]},{"vertices":[[4,0],[6,0],[5,1]],"velocities":[[1,0],[1,0],[1,0]]}]}"#;
+
+    fn err(line: &str) -> String {
+        match parse_way_line(line, 4).case {
+            Ok(_) => "ok".into(),
+            Err(e) => e.to_string(),
+        }
+    }
+
+    #[test]
+    fn polygons_and_the_way_out_fields_read() {
+        let c = parse_way_line(GOOD, 1).case.expect("valid");
+        assert_eq!(c.polygons.len(), 2);
+        assert_eq!(c.polygons[0].vels, vec![Vect2::new(0.0, 0.0); 4]);
+        assert_eq!(c.polygons[1].vels[2], Vect2::new(1.0, 0.0));
+        assert_eq!((c.time, c.sep, c.eps), (Some(1.0), Some(0.5), None));
+        assert_eq!(c.bands.speeds, Some([0.0, 3.0]));
+        assert!(c.height.is_none());
+    }
+
+    /// Each error names its field in the case's terms, polygons by their index.
+    #[test]
+    fn errors_name_their_field() {
+        let cases = [
+            (r#""velocities""#, r#""velocity""#, "polygons[1].velocity: unknown field; did you mean velocities?"),
+            (r#"[[4,0],[6,0],[5,1]]"#, r#"[[4,0],[5,1],[6,0]]"#, "polygons[1].vertices: clockwise order (signed area -1); list the vertices counterclockwise"),
+            (r#""time":1"#, r#""time":3"#, "time: 3 is outside [0, lookahead] = [0, 2]"),
+            (r#""speeds":[0,3]"#, r#""speedz":[0,3]"#, "bands.speedz: unknown field; did you mean speeds?"),
+            (r#""speeds":[0,3]"#, r#""vertical_speeds":[0,3]"#, "bands.vertical_speeds: a 3D case only (point.pos of 3 numbers, polygons with bottom/top/vz)"),
+            (r#""sep":0.5"#, r#""sep":0.5,"eps":0"#, "eps: 0 is outside (0, 1)"),
+            (r#""polygons":["#, r#""polygon":{"vertices":[[0,0],[1,0],[0,1]]},"polygons":["#, "polygons: a case has `polygon` or `polygons`, not both"),
+        ];
+        for (from, to, want) in cases {
+            let line = GOOD.replacen(from, to, 1);
+            assert_ne!(line, GOOD, "{from}");
+            assert_eq!(err(&line), want);
+        }
+        let slab = GOOD.replacen(r#"[0,2]]}"#, r#"[0,2]],"bottom":0,"top":1,"vz":0}"#, 1);
+        assert!(
+            err(&slab).starts_with("point.pos: 2D and 3D mixed: polygons[0]."),
+            "{}",
+            err(&slab)
+        );
+        let nobuff = GOOD.replace(r#""sep":0.5,"#, r#""sep":0.5,"buff":0,"#);
+        assert_eq!(err(&nobuff), "buff: 0 is not > 0");
+    }
+
+    /// `detect` keeps taking one polygon: `polygons` there is an error naming it.
+    #[test]
+    fn detect_refuses_polygons() {
+        let line = GOOD.replace(r#""sep":0.5,"#, r#""sep":0.5,"buff":0.1,"#);
+        let e = crate::case::parse_line(&line, 1)
+            .case
+            .err()
+            .map(|e| e.to_string());
+        assert_eq!(
+            e.as_deref(),
+            Some(
+                "polygons: must be absent for detect: detect takes one polygon (`polygon`); \
+                 `bands` takes several"
+            )
+        );
+    }
+}

@@ -291,3 +291,30 @@ mod tests {
         assert!(approx > 3.146 && approx < 3.1463);
     }
 }
+
+#[cfg(test)]
+mod text_tests {
+    use super::*;
+
+    fn r(n: i64, d: i64) -> BigRational {
+        BigRational::new(n.into(), d.into())
+    }
+
+    /// The exact text of tower numbers: rationals as p/q, roots nested, square
+    /// radicands folded, zero parts left out.
+    #[test]
+    fn tower_numbers_are_written_exactly() {
+        let mut tw = Tower::new();
+        let two = tw.adjoin(&Elem::rat(r(2, 1))).expect("2 ≥ 0");
+        let x = tw.add(&tw.rat(&r(1, 3)), &tw.mul(&two, &tw.rat(&r(-5, 2))));
+        assert_eq!(tw.text(&x), "1/3 + (-5/2)·√(2)");
+        assert_eq!(tw.text(&two), "(1)·√(2)");
+        assert_eq!(tw.sqrt_text(&tw.rat(&r(9, 4))), "3/2");
+        assert_eq!(tw.sqrt_text(&tw.rat(&r(8, 1))), "√(8)");
+        let mut sq = Tower::new();
+        let four = sq.adjoin(&Elem::rat(r(400, 1))).expect("400 ≥ 0");
+        let y = sq.sub(&sq.rat(&r(29, 1)), &four);
+        assert_eq!(sq.text(&y), "9");
+        assert_eq!(sq.sqrt_text(&y), "3");
+    }
+}

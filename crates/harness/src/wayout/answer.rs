@@ -178,6 +178,13 @@ fn linear_unknown_max(r: [f64; 2], deg: f64) -> f64 {
 /// course bands at the current speed |v|, the current velocity's own verdict, and the
 /// speed and vertical speed bands the line asks for.
 pub fn bands_answer(case: &WayCase, ask: &Ask) -> Result<Map<String, Value>, FieldError> {
+    if case.fence == Some(Fence::KeepIn) {
+        return Err(FieldError::new(
+            "fence",
+            "bands treat every polygon as an area to stay out of (keep_out); \
+             keep_in is for recover",
+        ));
+    }
     let bc = band_case(case, ask);
     let deg = case.bands.unknown_max_deg.unwrap_or(ask.unknown_max_deg);
     if !(deg.is_finite() && deg > 0.0) {
@@ -509,5 +516,13 @@ mod tests {
         assert_eq!(bands[bands.len() - 1]["to_rad"], TAU);
         assert!(bands.iter().any(|b| b["kind"] == "clear"));
         assert_eq!(course_of(Vect2::new(-1.0, 0.0)).to_degrees(), 270.0);
+        // every polygon of the bands is an area to stay out of
+        let keep_in = line.replace(r#""sep":0.5,"#, r#""sep":0.5,"fence":"keep_in","#);
+        let (a, ok) = answer_line(Command::Bands, &keep_in, 3, &Ask::default());
+        assert!(!ok);
+        assert_eq!(
+            (&a["error"]["field"], &a["error"]["line"]),
+            (&"fence".into(), &3.into())
+        );
     }
 }

@@ -38,7 +38,7 @@
 //!
 //! # Certificate
 //! Before returning, module `certify` checks the rings with certified predicates (exact
-//! orientations, and [`crate::ball`]'s forward error bounds on squared distances; no
+//! orientations, and `crate::ball`'s forward error bounds on squared distances; no
 //! absolute epsilon):
 //! - the rings are simple and pairwise disjoint (exact);
 //! - every edge of Q is at distance ≥ D from every edge of P (certified lower bound of
@@ -58,7 +58,7 @@
 //!
 //! A result the certificate rejects is [`OffsetError::Uncertified`], never a silent wrong
 //! polygon. At time t ([`offset_at`], [`inset_at`]) the vertices p_i + t·V_i are
-//! evaluated in f64 with an error radius r per vertex ([`crate::ball`]); the certificate
+//! evaluated in f64 with an error radius r per vertex (`crate::ball`); the certificate
 //! then uses D + [`MOVE_SLACK`]·r for the containment and D·(1 + ε) − MOVE_SLACK·r for
 //! the closeness, which covers the exact polygon at t.
 //!
@@ -69,7 +69,7 @@
 //!   D·ε/4 on either side for the f64 rounding of its vertices, which the certificate
 //!   then bounds exactly.
 //! - The squared point-to-segment distance is evaluated on balls: each rounding adds
-//!   2u·|value| to the radius (u = 2⁻⁵³), propagated by [`crate::ball::Ball`]'s rules;
+//!   2u·|value| to the radius (u = 2⁻⁵³), propagated by `crate::ball::Ball`'s rules;
 //!   decisions are taken only when the ball excludes the threshold.
 //! - [`MOVE_SLACK`]: the distance between the exact and the f64 polygon at time t.
 

@@ -1,6 +1,6 @@
 //! The exact truth behind the bands: is one velocity in conflict? (Paper A §II–§III's
 //! motion and §II.G's proximity, through the exact near_D sets of
-//! [`crate::intervals`].)
+//! [`crate::intervals`](mod@crate::intervals).)
 //!
 //! # Definition (the engine's `bands` module doc)
 //! The point starts at s (in 3D at height sz with vertical speed vz) and moves at the

@@ -167,6 +167,58 @@ impl Tower {
         self.approx_at(a.level(), &a.0)
     }
 
+    /// a written exactly: rationals `p/q` (`p` when q = 1), a level above as
+    /// `u + (w)·√(b)` with u, w and b written the same way, a zero coefficient left out.
+    pub fn text(&self, a: &Elem) -> String {
+        let a = self.top(a);
+        self.text_at(a.level(), &a.0)
+    }
+
+    /// √a written exactly (a ≥ 0): the rational root when a is the square of a
+    /// rational, else `√(…)` around [`Tower::text`].
+    pub fn sqrt_text(&self, a: &Elem) -> String {
+        let a = self.top(a);
+        let inner = self.text(&a);
+        match inner
+            .parse::<BigRational>()
+            .ok()
+            .and_then(|x| rational_sqrt(&x))
+        {
+            Some(r) => r.to_string(),
+            None => format!("√({inner})"),
+        }
+    }
+
+    fn text_at(&self, k: usize, a: &[BigRational]) -> String {
+        if k == 0 {
+            return a[0].to_string();
+        }
+        let h = 1 << (k - 1);
+        let (u, w) = a.split_at(h);
+        let zero = |x: &[BigRational]| x.iter().all(Zero::is_zero);
+        if zero(w) {
+            return self.text_at(k - 1, u);
+        }
+        // a rational radicand that is a square: u + w·r, one level down
+        let rad = &self.rads[k - 1].0[..h];
+        if zero(&rad[1..]) {
+            if let Some(r) = rational_sqrt(&rad[0]) {
+                let folded: Vec<BigRational> = u.iter().zip(w).map(|(x, y)| x + y * &r).collect();
+                return self.text_at(k - 1, &folded);
+            }
+        }
+        let root = format!(
+            "({})·√({})",
+            self.text_at(k - 1, w),
+            self.text_at(k - 1, &self.rads[k - 1].0[..h])
+        );
+        if zero(u) {
+            root
+        } else {
+            format!("{} + {root}", self.text_at(k - 1, u))
+        }
+    }
+
     fn approx_at(&self, k: usize, a: &[BigRational]) -> f64 {
         if k == 0 {
             return crate::convert::to_float(&a[0]);
@@ -176,6 +228,19 @@ impl Tower {
         let rad = self.approx_at(k - 1, &self.rads[k - 1].0[..h]).max(0.0);
         self.approx_at(k - 1, u) + self.approx_at(k - 1, w) * rad.sqrt()
     }
+}
+
+/// √x when the rational x ≥ 0 is the square of a rational (numerator and denominator,
+/// in lowest terms, both squares).
+fn rational_sqrt(x: &BigRational) -> Option<BigRational> {
+    if x.is_negative() {
+        return None;
+    }
+    let root = |n: &num_bigint::BigInt| {
+        let s = num_integer::Roots::sqrt(n);
+        (&s * &s == *n).then_some(s)
+    };
+    Some(BigRational::new(root(x.numer())?, root(x.denom())?))
 }
 
 fn add_v(a: &[BigRational], b: &[BigRational]) -> Vec<BigRational> {
@@ -224,5 +289,32 @@ mod tests {
         assert!(t.clone().adjoin(&t.sub(&r6, &t.rat(&q(3)))).is_none());
         let approx = t.approx(&r);
         assert!(approx > 3.146 && approx < 3.1463);
+    }
+}
+
+#[cfg(test)]
+mod text_tests {
+    use super::*;
+
+    fn r(n: i64, d: i64) -> BigRational {
+        BigRational::new(n.into(), d.into())
+    }
+
+    /// The exact text of tower numbers: rationals as p/q, roots nested, square
+    /// radicands folded, zero parts left out.
+    #[test]
+    fn tower_numbers_are_written_exactly() {
+        let mut tw = Tower::new();
+        let two = tw.adjoin(&Elem::rat(r(2, 1))).expect("2 ≥ 0");
+        let x = tw.add(&tw.rat(&r(1, 3)), &tw.mul(&two, &tw.rat(&r(-5, 2))));
+        assert_eq!(tw.text(&x), "1/3 + (-5/2)·√(2)");
+        assert_eq!(tw.text(&two), "(1)·√(2)");
+        assert_eq!(tw.sqrt_text(&tw.rat(&r(9, 4))), "3/2");
+        assert_eq!(tw.sqrt_text(&tw.rat(&r(8, 1))), "√(8)");
+        let mut sq = Tower::new();
+        let four = sq.adjoin(&Elem::rat(r(400, 1))).expect("400 ≥ 0");
+        let y = sq.sub(&sq.rat(&r(29, 1)), &four);
+        assert_eq!(sq.text(&y), "9");
+        assert_eq!(sq.sqrt_text(&y), "3");
     }
 }

@@ -39,6 +39,15 @@ enum Command {
     Encounters(polyguard_cli::commands::encounters::EncountersArgs),
     /// A random scenario as in paper B, Section VI.D.
     Generate(polyguard_cli::commands::generate::GenerateArgs),
+    /// Conflict-free course (and speed) bands for the point of each case among its
+    /// moving polygons: clear, conflict or unknown, certified (docs/way-out.md).
+    Bands(polyguard_cli::commands::bands::BandsArgs),
+    /// The nearest point out of each case's polygon grown by D (or, keep-in, into it
+    /// shrunk by D), certified (docs/way-out.md).
+    Recover(polyguard_cli::commands::recover::RecoverArgs),
+    /// Each case's polygon grown (or, --inset, shrunk) by D, certified within D·(1 + ε)
+    /// (docs/way-out.md).
+    Offset(polyguard_cli::commands::offset::OffsetArgs),
 }
 
 fn main() -> ExitCode {
@@ -51,5 +60,8 @@ fn main() -> ExitCode {
         Command::Conflicts(a) => polyguard_cli::commands::conflicts::run(a),
         Command::Encounters(a) => polyguard_cli::commands::encounters::run(a),
         Command::Generate(a) => polyguard_cli::commands::generate::run(a),
+        Command::Bands(a) => polyguard_cli::commands::bands::run(a),
+        Command::Recover(a) => polyguard_cli::commands::recover::run(a),
+        Command::Offset(a) => polyguard_cli::commands::offset::run(a),
     }
 }

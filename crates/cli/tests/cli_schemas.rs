@@ -875,7 +875,11 @@ fn json_blocks(markdown: &str) -> Vec<Value> {
 fn the_docs_examples_validate() {
     let case = schema("case.schema.json");
     let scenario = schema("scenario.schema.json");
-    for (doc, key) in [("docs/cases.md", "case"), ("docs/scenario.md", "scenario")] {
+    for (doc, key) in [
+        ("docs/cases.md", "case"),
+        ("docs/way-out.md", "case"),
+        ("docs/scenario.md", "scenario"),
+    ] {
         let path = root().join(doc);
         if !path.exists() {
             println!("note: {doc} does not exist yet; its examples are not checked");
@@ -950,4 +954,184 @@ fn encounters_answers_validate() {
     }
     assert!(n >= 3, "only {n} answer lines");
     println!("encounters-answer.schema.json: {n} answer lines validate");
+}
+
+// ---------------------------------------------------------------------------------------
+// The way out: the case's new fields and the answers of bands, recover and offset
+
+/// The way-out examples (docs/way-out.md).
+const WAYOUT_EXAMPLES: [&str; 3] = [
+    "examples/bands.jsonl",
+    "examples/recover.jsonl",
+    "examples/offset.jsonl",
+];
+
+fn way_reader_accepts(line: &str) -> Result<(), String> {
+    polyguard_harness::wayout::case::parse_way_line(line, 1)
+        .case
+        .map(|_| ())
+        .map_err(|e| e.to_string())
+}
+
+/// A good way-out case of two polygons with every new field.
+const GOOD_WAY: &str = r#"{"id":"w","lookahead":1,"sep":0.5,"time":0.5,"eps":0.1,"bands":{"unknown_max_deg":1,"speeds":[0,2]},"point":{"pos":[5,-3],"vel":[0,1]},"polygons":[{"vertices":[[0,0],[2,0],[2,2],[0,2]],"velocities":[[1,0],[1,0],[1,0],[1,0]]},{"vertices":[[4,0],[6,0],[5,1]]}]}"#;
+/// Its 3D form, with vertical speed bands.
+const GOOD_WAY_3D: &str = r#"{"id":"w3","lookahead":1,"sep":0.5,"sep_v":1,"bands":{"vertical_speeds":[-5,5]},"point":{"pos":[5,-3,2],"vel":[0,1,0]},"polygons":[{"vertices":[[0,0],[2,0],[2,2],[0,2]],"bottom":0,"top":3,"vz":0}]}"#;
+
+/// The way-out examples and the reader's optional forms validate; lines the way-out
+/// reader rejects are rejected by the schema too, except the rules its $comment leaves
+/// to the reader.
+#[test]
+fn the_case_schema_takes_the_way_out_fields() {
+    let v = schema("case.schema.json");
+    let mut count = 0;
+    for file in WAYOUT_EXAMPLES {
+        for (n, line) in jsonl(&root().join(file)) {
+            let what = format!("{file}:{n}");
+            way_reader_accepts(&line).unwrap_or_else(|e| panic!("{what}: {e}"));
+            assert_valid(&v, &what, &parse(&what, &line));
+            count += 1;
+        }
+    }
+    let accepted = [
+        GOOD_WAY.to_owned(),
+        GOOD_WAY_3D.to_owned(),
+        edit(
+            GOOD_WAY,
+            r#""time":0.5,"eps":0.1,"#,
+            r#""time":null,"eps":null,"#,
+        ),
+        edit(GOOD_WAY, r#""speeds":[0,2]"#, r#""speeds":null"#),
+        edit(
+            GOOD_WAY,
+            r#""id":"w","#,
+            r#""id":"w","buff":0.1,"polygon":null,"#,
+        ),
+    ];
+    for line in &accepted[..4] {
+        way_reader_accepts(line).unwrap_or_else(|e| panic!("{line}: {e}"));
+        assert_valid(&v, "an accepted way-out case", &parse("case", line));
+        count += 1;
+    }
+    // the reader reads a null polygon as absent; the schema wants an object ($comment)
+    way_reader_accepts(&accepted[4]).expect("null polygon beside polygons");
+    let canaries = [
+        edit(
+            GOOD_WAY,
+            r#""id":"w","#,
+            r#""id":"w","polygon":{"vertices":[[0,0],[1,0],[0,1]]},"#,
+        ),
+        edit(GOOD_WAY, r#""eps":0.1"#, r#""eps":1"#),
+        edit(GOOD_WAY, r#""unknown_max_deg":1"#, r#""unknown_max":1"#),
+        edit(GOOD_WAY, r#""unknown_max_deg":1"#, r#""unknown_max_deg":0"#),
+        edit(GOOD_WAY, r#""speeds":[0,2]"#, r#""speeds":[-1,2]"#),
+        edit(GOOD_WAY, r#""speeds":[0,2]"#, r#""speeds":[0,2,3]"#),
+        edit(GOOD_WAY, r#""speeds":[0,2]"#, r#""vertical_speeds":[0,2]"#),
+        edit(GOOD_WAY, r#""time":0.5"#, r#""time":-1"#),
+        edit(GOOD_WAY, r#""velocities""#, r#""velocity""#),
+        edit(GOOD_WAY_3D, r#","bottom":0,"top":3,"vz":0"#, ""),
+        edit(
+            GOOD_WAY_3D,
+            r#""polygons":[{"vertices":[[0,0],[2,0],[2,2],[0,2]],"bottom":0,"top":3,"vz":0}]"#,
+            r#""polygons":[]"#,
+        ),
+    ];
+    for line in &canaries {
+        assert!(
+            way_reader_accepts(line).is_err(),
+            "the reader accepts {line}"
+        );
+        assert_invalid(
+            &v,
+            "a way-out case the reader rejects",
+            &parse("canary", line),
+        );
+    }
+    let beyond = [
+        edit(GOOD_WAY, r#""time":0.5"#, r#""time":2"#),
+        edit(GOOD_WAY, r#""speeds":[0,2]"#, r#""speeds":[2,0]"#),
+    ];
+    for line in &beyond {
+        assert!(
+            way_reader_accepts(line).is_err(),
+            "the reader accepts {line}"
+        );
+        assert_valid(
+            &v,
+            "a way-out rule beyond JSON Schema",
+            &parse("case", line),
+        );
+    }
+    // detect refuses polygons, which the format allows
+    let detect = edit(GOOD_WAY, r#""id":"w","#, r#""id":"w","buff":0.1,"#);
+    assert!(reader_accepts(&detect).is_err_and(|e| e.starts_with("polygons:")));
+    println!(
+        "case.schema.json: {count} way-out lines validate, {} canaries rejected",
+        canaries.len()
+    );
+}
+
+/// Every answer line of bands, recover (both engines) and offset (and --inset) on the
+/// examples and on bad lines validates against its schema; the schemas reject answers
+/// of the other commands.
+#[test]
+fn the_way_out_answers_validate() {
+    let bad = [
+        "not json",
+        r#"{"id":"x","lookahead":1,"point":{"pos":[0,0],"vel":[0,1]},"polygons":[{"vertices":[[0,0],[0,1],[1,0]]}]}"#,
+    ]
+    .join("\n");
+    let runs: [(&str, &[&str], &str); 6] = [
+        ("bands-answer.schema.json", &["bands"], WAYOUT_EXAMPLES[0]),
+        (
+            "recover-answer.schema.json",
+            &["recover"],
+            WAYOUT_EXAMPLES[1],
+        ),
+        (
+            "recover-answer.schema.json",
+            &["recover", "--engine", "truth"],
+            WAYOUT_EXAMPLES[1],
+        ),
+        ("offset-answer.schema.json", &["offset"], WAYOUT_EXAMPLES[2]),
+        (
+            "offset-answer.schema.json",
+            &["offset", "--inset"],
+            WAYOUT_EXAMPLES[2],
+        ),
+        ("bands-answer.schema.json", &["bands"], ""),
+    ];
+    let mut answers: Vec<(String, Value)> = Vec::new();
+    for (name, args, file) in runs {
+        let v = schema(name);
+        let input = if file.is_empty() {
+            bad.clone()
+        } else {
+            format!("{}\n{bad}\n", read(&root().join(file)))
+        };
+        let mut all = args.to_vec();
+        all.push("-");
+        let (out, code) = polyguard(&all, input.as_bytes());
+        assert_eq!(code, 1, "{args:?}: the bad lines give exit 1\n{out}");
+        let lines: Vec<&str> = out.lines().collect();
+        assert!(lines.len() >= 2, "{args:?}");
+        for line in lines {
+            let value = parse(name, line);
+            assert_valid(&v, &format!("{args:?}"), &value);
+            if value.get("error").is_none() {
+                answers.push((name.to_owned(), value));
+            }
+        }
+    }
+    for name in [
+        "bands-answer.schema.json",
+        "recover-answer.schema.json",
+        "offset-answer.schema.json",
+    ] {
+        let v = schema(name);
+        for (other, value) in answers.iter().filter(|(n, _)| n != name) {
+            assert_invalid(&v, &format!("a {other} answer under {name}"), value);
+        }
+    }
+    println!("way-out answers: {} lines validate", answers.len());
 }

@@ -172,14 +172,13 @@ impl<'de> serde::de::Visitor<'de> for StrictVisitor {
     }
 }
 
-/// Reads one non-blank line of the case format. A byte-order mark in front (the first
-/// line of a file saved by some editors) is skipped.
-pub fn parse_line(line: &str, line_no: usize) -> ParsedLine {
-    parse_line_with(line, line_no, DEFAULT_KAPPA_DEG)
-}
-
-/// [`parse_line`] with the κ (degrees) that a case without `kappa` gets.
-pub fn parse_line_with(line: &str, line_no: usize, default_kappa_deg: f64) -> ParsedLine {
+/// The case format (not a paper function): one non-blank line read strictly as a JSON
+/// object, with the id to echo (the case's `id`, else the 1-based line number; kept from
+/// a line with a NaN or a repeated key too). A byte-order mark in front is skipped.
+pub fn read_case_object(
+    line: &str,
+    line_no: usize,
+) -> (Value, Result<Map<String, Value>, CaseError>) {
     let line = line.strip_prefix('\u{feff}').unwrap_or(line);
     // the line ending is not part of the case (an error at the end says its column)
     let line = line.trim_end_matches(['\n', '\r']);
@@ -193,26 +192,42 @@ pub fn parse_line_with(line: &str, line_no: usize, default_kappa_deg: f64) -> Pa
                 .and_then(|v| v.get("id").cloned())
                 .filter(|v| !is_marked(v))
                 .unwrap_or_else(|| Value::from(line_no));
-            return ParsedLine {
-                id,
-                case: Err(error),
-                options: CaseOptions::default(),
-            };
+            return (id, Err(error));
         }
     };
     let Value::Object(obj) = value else {
-        return ParsedLine {
-            id: Value::from(line_no),
-            case: Err(CaseError::Syntax {
+        return (
+            Value::from(line_no),
+            Err(CaseError::Syntax {
                 message: "the line is JSON but not an object".into(),
             }),
-            options: CaseOptions::default(),
-        };
+        );
     };
     let id = obj
         .get("id")
         .cloned()
         .unwrap_or_else(|| Value::from(line_no));
+    (id, Ok(obj))
+}
+
+/// Reads one non-blank line of the case format. A byte-order mark in front (the first
+/// line of a file saved by some editors) is skipped.
+pub fn parse_line(line: &str, line_no: usize) -> ParsedLine {
+    parse_line_with(line, line_no, DEFAULT_KAPPA_DEG)
+}
+
+/// [`parse_line`] with the κ (degrees) that a case without `kappa` gets.
+pub fn parse_line_with(line: &str, line_no: usize, default_kappa_deg: f64) -> ParsedLine {
+    let (id, obj) = match read_case_object(line, line_no) {
+        (id, Ok(obj)) => (id, obj),
+        (id, Err(e)) => {
+            return ParsedLine {
+                id,
+                case: Err(e),
+                options: CaseOptions::default(),
+            }
+        }
+    };
     let case = case_from_object_with(&obj, default_kappa_deg);
     let (case, options) = match (case, case_options(&obj)) {
         (Ok(c), Ok(o)) => (Ok(c), o),
@@ -293,7 +308,7 @@ pub fn polygon_from_line(line: &str) -> Result<MovingPolygon, CaseError> {
 }
 
 /// The case format's `point` object: `pos` and `vel`, unvalidated but for `pos`'s length.
-fn point_fields(point: &Map<String, Value>) -> Result<(Vec<f64>, Vec<f64>), CaseError> {
+pub(crate) fn point_fields(point: &Map<String, Value>) -> Result<(Vec<f64>, Vec<f64>), CaseError> {
     only_known(point, &POINT_KEYS, "point.")?;
     let pos = numbers(get(point, "pos", "point.pos")?, "point.pos")?;
     let vel = numbers(get(point, "vel", "point.vel")?, "point.vel")?;
@@ -305,10 +320,10 @@ fn point_fields(point: &Map<String, Value>) -> Result<(Vec<f64>, Vec<f64>), Case
 
 /// The fields of the case format's `polygon` object: vertices, velocities (empty when
 /// absent), and the slab.
-type PolygonFields = (Vec<[f64; 2]>, Vec<[f64; 2]>, Option<[f64; 3]>);
+pub(crate) type PolygonFields = (Vec<[f64; 2]>, Vec<[f64; 2]>, Option<[f64; 3]>);
 
 /// The case format's `polygon` object, unvalidated but for the lengths.
-fn polygon_fields(poly: &Map<String, Value>) -> Result<PolygonFields, CaseError> {
+pub(crate) fn polygon_fields(poly: &Map<String, Value>) -> Result<PolygonFields, CaseError> {
     only_known(poly, &POLYGON_KEYS, "polygon.")?;
     let vertices = points(
         get(poly, "vertices", "polygon.vertices")?,
@@ -421,7 +436,7 @@ fn first_marked(v: &Value, path: String) -> Option<(String, String)> {
     }
 }
 
-fn number(v: &Value, field: &str) -> Result<f64, CaseError> {
+pub(crate) fn number(v: &Value, field: &str) -> Result<f64, CaseError> {
     match v.as_f64() {
         Some(x) if x.is_finite() => Ok(x),
         Some(_) => Err(CaseError::NotFinite {
@@ -434,7 +449,11 @@ fn number(v: &Value, field: &str) -> Result<f64, CaseError> {
     }
 }
 
-fn get<'a>(obj: &'a Map<String, Value>, key: &str, field: &str) -> Result<&'a Value, CaseError> {
+pub(crate) fn get<'a>(
+    obj: &'a Map<String, Value>,
+    key: &str,
+    field: &str,
+) -> Result<&'a Value, CaseError> {
     match obj.get(key) {
         Some(Value::Null) | None => Err(CaseError::Missing {
             field: field.into(),
@@ -443,21 +462,21 @@ fn get<'a>(obj: &'a Map<String, Value>, key: &str, field: &str) -> Result<&'a Va
     }
 }
 
-fn object<'a>(v: &'a Value, field: &str) -> Result<&'a Map<String, Value>, CaseError> {
+pub(crate) fn object<'a>(v: &'a Value, field: &str) -> Result<&'a Map<String, Value>, CaseError> {
     v.as_object().ok_or_else(|| CaseError::WrongType {
         field: field.into(),
         expected: "an object",
     })
 }
 
-fn array<'a>(v: &'a Value, field: &str) -> Result<&'a Vec<Value>, CaseError> {
+pub(crate) fn array<'a>(v: &'a Value, field: &str) -> Result<&'a Vec<Value>, CaseError> {
     v.as_array().ok_or_else(|| CaseError::WrongType {
         field: field.into(),
         expected: "an array",
     })
 }
 
-fn numbers(v: &Value, field: &str) -> Result<Vec<f64>, CaseError> {
+pub(crate) fn numbers(v: &Value, field: &str) -> Result<Vec<f64>, CaseError> {
     array(v, field)?
         .iter()
         .enumerate()
@@ -465,7 +484,7 @@ fn numbers(v: &Value, field: &str) -> Result<Vec<f64>, CaseError> {
         .collect()
 }
 
-fn points(v: &Value, field: &str) -> Result<Vec<[f64; 2]>, CaseError> {
+pub(crate) fn points(v: &Value, field: &str) -> Result<Vec<[f64; 2]>, CaseError> {
     let arr = array(v, field)?;
     let mut out = Vec::with_capacity(arr.len());
     for (i, p) in arr.iter().enumerate() {
@@ -487,7 +506,7 @@ fn points(v: &Value, field: &str) -> Result<Vec<[f64; 2]>, CaseError> {
 /// The keys each level of a case line may have (docs: the case format). `meta` holds
 /// annotations for people and tools (a kept counterexample's class, why a regression
 /// case is there); detection never reads it.
-const TOP_KEYS: [&str; 11] = [
+pub(crate) const TOP_KEYS: [&str; 15] = [
     "id",
     "sep",
     "sep_v",
@@ -499,14 +518,18 @@ const TOP_KEYS: [&str; 11] = [
     "point",
     "polygon",
     "meta",
+    "polygons",
+    "time",
+    "bands",
+    "eps",
 ];
 const POINT_KEYS: [&str; 2] = ["pos", "vel"];
-const POLYGON_KEYS: [&str; 5] = ["vertices", "velocities", "bottom", "top", "vz"];
+pub(crate) const POLYGON_KEYS: [&str; 5] = ["vertices", "velocities", "bottom", "top", "vz"];
 
 /// The first key of `obj` that is not in `known`, as an error naming its path (`prefix`
 /// is "" or "point." …) and the nearest known key when it is close: the same letters in
 /// another case, or at most three edits away (and fewer than half its letters).
-fn only_known(
+pub(crate) fn only_known(
     obj: &Map<String, Value>,
     known: &[&'static str],
     prefix: &str,
@@ -551,6 +574,13 @@ pub fn case_from_object_with(
         Some(k) => number(k, "kappa")?,
     };
 
+    if obj.get("polygons").is_some_and(|v| !v.is_null()) {
+        return Err(CaseError::WrongType {
+            field: "polygons".into(),
+            expected: "absent for detect: detect takes one polygon (`polygon`); \
+                       `bands` takes several",
+        });
+    }
     let point = object(get(obj, "point", "point")?, "point")?;
     let (pos, vel) = point_fields(point)?;
     let poly = object(get(obj, "polygon", "polygon")?, "polygon")?;
@@ -569,7 +599,7 @@ pub fn case_from_object_with(
 }
 
 /// The case format's point fields as the engine's validated point (2 or 3 numbers each).
-fn moving_point(pos: &[f64], vel: &[f64]) -> Result<MovingPoint, CaseError> {
+pub(crate) fn moving_point(pos: &[f64], vel: &[f64]) -> Result<MovingPoint, CaseError> {
     match (pos, vel) {
         ([x, y], [vx, vy]) => MovingPoint::new_2d(Vect2::new(*x, *y), Vect2::new(*vx, *vy)),
         ([x, y, z], [vx, vy, vz]) => MovingPoint::new_3d([*x, *y, *z], [*vx, *vy, *vz]),
@@ -584,7 +614,7 @@ fn moving_point(pos: &[f64], vel: &[f64]) -> Result<MovingPoint, CaseError> {
 
 /// The case format's polygon fields as the engine's validated polygon (no velocities: at
 /// rest).
-fn moving_polygon(
+pub(crate) fn moving_polygon(
     vertices: &[[f64; 2]],
     velocities: &[[f64; 2]],
     slab: Option<[f64; 3]>,

@@ -19,7 +19,9 @@
 //! - [`wayout`]: the way out checked exactly ([`wayout::offset`]: one engine offset or
 //!   inset against the oracle; [`wayout::recovery`]: recovery points and PolyCARP's;
 //!   [`wayout::bands`]: values drawn in each band against the exact conflict of their
-//!   velocities); [`canary_offset`]: a bisector expansion it must catch.
+//!   velocities); [`canary_offset`]: a bisector expansion it must catch;
+//!   [`wayout::case`] and [`wayout::answer`]: a case line read for `bands`, `recover`
+//!   and `offset`, and answered as docs/way-out.md says.
 #![deny(missing_docs)]
 
 pub mod answer;

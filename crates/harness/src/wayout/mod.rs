@@ -2,7 +2,9 @@
 //! and shrunk), recovery points and bands against the oracle, beside the baselines they
 //! are measured against.
 
+pub mod answer;
 pub mod bands;
+pub mod case;
 pub mod offset;
 pub mod picture;
 pub mod polycarp;

@@ -76,14 +76,15 @@
 //! # Refinement
 //! The range starts as the fewest equal cells (a power of two, at most 256) whose r
 //! is at most D (r_z at most H): coarser cells could be decided only far from every
-//! obstacle, which the prefilter does anyway. Unknown cells are halved, down to a minimum width that starts at `unknown_max`/2
-//! and halves while the Unknown total is above `unknown_max` and some Unknown cell
-//! can still be split (its float midpoint strictly inside), within a budget of
-//! [`MAX_CELLS`] cell tests, and until three passes in a row each left more than 90 %
-//! of the Unknown total (halving every cell roughly halves a sliver around a
-//! boundary; a stretch that does not shrink is one the certificate cannot decide). `met` says whether the total came under `unknown_max`: a
-//! tangency where the margin does not grow away from the boundary (a course grazing
-//! at exactly D along a stretch) may keep it above.
+//! obstacle, which the prefilter does anyway. Then, pass by pass, every Unknown cell
+//! is halved, while the Unknown total is above `unknown_max` and some Unknown cell can
+//! still be split (its float midpoint strictly inside), within a budget of
+//! [`MAX_CELLS`] cell tests, and until four passes in a row each left more than 90 %
+//! of the Unknown total: halving every cell roughly halves a sliver around a boundary
+//! once the cells are narrower than it, while a stretch that does not shrink is one the
+//! certificate cannot decide (the point starting on an obstacle's boundary with D = 0,
+//! moving out of it: in conflict at t = 0, never deeper inside, never clear). `met`
+//! says whether the total came under `unknown_max`.
 
 mod cell;
 

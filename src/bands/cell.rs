@@ -58,7 +58,7 @@ fn slice_ends(t: f64) -> [f64; SLICES + 1] {
 const STALL: f64 = 0.9;
 
 /// After this many stalled passes in a row the refinement stops (`met` is false).
-const STALLS: usize = 3;
+const STALLS: usize = 4;
 
 /// The most cells a band answer starts with (see [`Tester::first_cells`]).
 const FIRST_CELLS_MAX: usize = 256;
@@ -465,9 +465,11 @@ impl<'a> Tester<'a> {
     /// The band answer over [lo, hi] (parent module's refinement).
     pub(super) fn bands(mut self, lo: f64, hi: f64, unknown_max: f64) -> Bands {
         let all: Vec<u32> = (0..self.traffic.obstacles.len() as u32).collect();
-        let mut w_min = unknown_max * 0.5;
         let mut cells = Vec::new();
         let n = self.first_cells(lo, hi);
+        // Level by level: the first cells as they are, then every Unknown cell halved
+        // once per pass.
+        let mut w_min = (hi - lo) / n as f64;
         let mut a = lo;
         for k in 1..=n {
             let b = if k == n {
@@ -475,7 +477,7 @@ impl<'a> Tester<'a> {
             } else {
                 lo + (hi - lo) * (k as f64 / n as f64)
             };
-            self.settle(a, b, &all, w_min, &mut cells);
+            self.settle(a, b, &all, f64::INFINITY, &mut cells);
             a = b;
         }
         let mut stalls = 0;

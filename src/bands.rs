@@ -65,13 +65,15 @@
 //! f64 case it is given exactly (the intervals module's error analysis).
 //!
 //! # Prefilter and early exit
-//! Each obstacle's swept box over [0, T] (its vertices at 0 and at T, rounded outward)
-//! and the box of x_m's segment are compared along x and along y: a gap (rounded
-//! down) beyond D + r makes the obstacle Clear for the cell without a scan. The two
-//! scans stop at their first deciding piece: the Clear test at the first piece that
-//! does not fail, the Conflict test at the first certain one. When r > D and the
-//! obstacle's swept box is narrower than 2(r − D), no point can be r − D deep inside
-//! it, and the breach scan is skipped.
+//! [0, T] is cut into 8 slices at float times. In each, an obstacle's swept box (every
+//! vertex moves along a segment: the box of its positions at the slice's ends, rounded
+//! outward) and the box of x_m's piece of segment are compared along x and along y; a
+//! gap (rounded down) beyond D + r in every slice makes the obstacle Clear for the cell
+//! without a scan. The two scans stop at their first deciding piece (the scan's
+//! consumer asks it to stop; no change to the scan was needed): the Clear test at the
+//! first piece that does not fail, the Conflict test at the first certain one. When
+//! r > D and every slice's box is narrower than 2(r − D) along x or y, no point can be
+//! r − D deep inside the obstacle, and the breach scan is skipped.
 //!
 //! # Refinement
 //! The range starts as the fewest equal cells (a power of two, at most 256) whose r

@@ -30,7 +30,7 @@ impl Lcg {
 }
 
 /// The 10 cells: (vertices, velocities).
-pub fn cells(seed: u64) -> Vec<(Vec<Vect2>, Vec<Vect2>)> {
+fn cells(seed: u64) -> Vec<(Vec<Vect2>, Vec<Vect2>)> {
     let mut g = Lcg(seed);
     (0..10)
         .map(|k| {

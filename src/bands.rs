@@ -65,23 +65,28 @@
 //! f64 case it is given exactly (the intervals module's error analysis).
 //!
 //! # Prefilter and early exit
-//! Each obstacle's swept box over [0, T] (its vertices at 0 and at T, rounded outward)
-//! and the box of x_m's segment are compared along x and along y: a gap (rounded
-//! down) beyond D + r makes the obstacle Clear for the cell without a scan. The two
-//! scans stop at their first deciding piece: the Clear test at the first piece that
-//! does not fail, the Conflict test at the first certain one. When r > D and the
-//! obstacle's swept box is narrower than 2(r − D), no point can be r − D deep inside
-//! it, and the breach scan is skipped.
+//! [0, T] is cut into 8 slices at float times. In each, an obstacle's swept box (every
+//! vertex moves along a segment: the box of its positions at the slice's ends, rounded
+//! outward) and the box of x_m's piece of segment are compared along x and along y; a
+//! gap (rounded down) beyond D + r in every slice makes the obstacle Clear for the cell
+//! without a scan. The two scans stop at their first deciding piece (the scan's
+//! consumer asks it to stop; no change to the scan was needed): the Clear test at the
+//! first piece that does not fail, the Conflict test at the first certain one. When
+//! r > D and every slice's box is narrower than 2(r − D) along x or y, no point can be
+//! r − D deep inside the obstacle, and the breach scan is skipped.
 //!
 //! # Refinement
 //! The range starts as the fewest equal cells (a power of two, at most 256) whose r
 //! is at most D (r_z at most H): coarser cells could be decided only far from every
-//! obstacle, which the prefilter does anyway. Unknown cells are halved, down to a minimum width that starts at `unknown_max`/2
-//! and halves while the Unknown total is above `unknown_max` and some Unknown cell
-//! can still be split (its float midpoint strictly inside) within a budget of
-//! [`MAX_CELLS`] cell tests. `met` says whether the total came under `unknown_max`: a
-//! tangency where the margin does not grow away from the boundary (a course grazing
-//! at exactly D along a stretch) may keep it above.
+//! obstacle, which the prefilter does anyway. Then, pass by pass, every Unknown cell
+//! is halved, while the Unknown total is above `unknown_max` and some Unknown cell can
+//! still be split (its float midpoint strictly inside), within a budget of
+//! [`MAX_CELLS`] cell tests, and until four passes in a row each left more than 90 %
+//! of the Unknown total: halving every cell roughly halves a sliver around a boundary
+//! once the cells are narrower than it, while a stretch that does not shrink is one the
+//! certificate cannot decide (the point starting on an obstacle's boundary with D = 0,
+//! moving out of it: in conflict at t = 0, never deeper inside, never clear). `met`
+//! says whether the total came under `unknown_max`.
 
 mod cell;
 

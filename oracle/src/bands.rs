@@ -13,12 +13,13 @@
 //! A band's ends are where a conflict starts for a course θ, with the velocity
 //! speed·(sin θ, cos θ): transcendental in θ, so an exact band construction would
 //! need more than the rational and algebraic numbers here. The oracle instead
-//! decides single velocities exactly: an f64 velocity (the engine's `velocity` of a
-//! course, or any other) is converted exactly, and [`conflict`] answers for it with
-//! the exact components of near_D. A band answer is checked by drawing values inside
-//! each Clear and Conflict band, forming their f64 velocities, and asking [`conflict`]
-//! (the harness's `wayout::bands` check). The engine certifies its bands for those f64
-//! velocities as well as for the exact ones.
+//! decides single velocities exactly: a binary floating-point velocity (the engine's
+//! `velocity` of a course, or any other), converted exactly by the caller, and
+//! [`conflict`] answers for it with the exact components of near_D. A band answer is
+//! checked by drawing values inside each Clear and Conflict band, forming their
+//! floating-point velocities, and asking [`conflict`] (the harness's `wayout::bands`
+//! check). The engine certifies its bands for those velocities as well as for the
+//! exact ones.
 
 use crate::case::Vertical;
 use crate::field::{ExactField, V2};

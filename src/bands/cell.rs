@@ -40,6 +40,26 @@ struct Probe {
     rz: f64,
 }
 
+/// How many time slices the prefilter boxes cut [0, T] into.
+const SLICES: usize = 8;
+
+/// The ends of the prefilter's time slices: 0, T/8, ..., T (float times; consecutive
+/// slices share their float end, so together they cover [0, T]).
+fn slice_ends(t: f64) -> [f64; SLICES + 1] {
+    let mut ends = [t; SLICES + 1];
+    for (k, e) in ends.iter_mut().enumerate().take(SLICES) {
+        *e = t * (k as f64 / SLICES as f64);
+    }
+    ends
+}
+
+/// A refinement pass that leaves more than this fraction of the Unknown total has
+/// stalled.
+const STALL: f64 = 0.9;
+
+/// After this many stalled passes in a row the refinement stops (`met` is false).
+const STALLS: usize = 4;
+
 /// The most cells a band answer starts with (see [`Tester::first_cells`]).
 const FIRST_CELLS_MAX: usize = 256;
 
@@ -51,14 +71,30 @@ struct Box2 {
 }
 
 impl Box2 {
-    /// The box of the points a and a + T·w over the whole segment, rounded outward.
-    fn segment(a: Vect2, w: Vect2, t: f64) -> Box2 {
-        let lo = |x: f64, y: f64| round_down(x + round_down(t * y));
-        let hi = |x: f64, y: f64| round_up(x + round_up(t * y));
+    /// The box of the points a + τ·w for τ ∈ [t0, t1] (the segment between its ends),
+    /// each end rounded outward.
+    fn between(a: Vect2, w: Vect2, t0: f64, t1: f64) -> Box2 {
+        let lo = |x: f64, y: f64, t: f64| round_down(x + round_down(t * y));
+        let hi = |x: f64, y: f64, t: f64| round_up(x + round_up(t * y));
         Box2 {
-            lo: Vect2::new(a.x.min(lo(a.x, w.x)), a.y.min(lo(a.y, w.y))),
-            hi: Vect2::new(a.x.max(hi(a.x, w.x)), a.y.max(hi(a.y, w.y))),
+            lo: Vect2::new(
+                lo(a.x, w.x, t0).min(lo(a.x, w.x, t1)),
+                lo(a.y, w.y, t0).min(lo(a.y, w.y, t1)),
+            ),
+            hi: Vect2::new(
+                hi(a.x, w.x, t0).max(hi(a.x, w.x, t1)),
+                hi(a.y, w.y, t0).max(hi(a.y, w.y, t1)),
+            ),
         }
+    }
+
+    /// The box of a moving polygon over [t0, t1]: each vertex moves along a segment.
+    fn polygon(p: &[Vect2], vels: &[Vect2], t0: f64, t1: f64) -> Box2 {
+        let mut b = Box2::between(p[0], vels[0], t0, t1);
+        for (&a, &w) in p.iter().zip(vels).skip(1) {
+            b = b.join(Box2::between(a, w, t0, t1));
+        }
+        b
     }
 
     /// Is the box narrower than 2·depth along x or y (rounded down)? Then no point of
@@ -128,8 +164,8 @@ struct Cell {
 pub(super) struct Tester<'a> {
     traffic: &'a Traffic<'a>,
     family: Family,
-    /// Each obstacle's swept box over [0, T].
-    boxes: Vec<Box2>,
+    /// Each obstacle's swept boxes over the [`SLICES`] slices of [0, T].
+    boxes: Vec<[Box2; SLICES]>,
     ws: Box<Workspace>,
     /// Cell tests so far.
     cells: usize,
@@ -138,15 +174,16 @@ pub(super) struct Tester<'a> {
 impl<'a> Tester<'a> {
     /// The boxes of a validated situation.
     pub(super) fn new(traffic: &'a Traffic<'a>, family: Family) -> Tester<'a> {
+        let ends = slice_ends(traffic.t);
         let boxes = traffic
             .obstacles
             .iter()
             .map(|o| {
-                let mut b = Box2::segment(o.p[0], o.vels[0], traffic.t);
-                for (&p, &v) in o.p.iter().zip(o.vels).skip(1) {
-                    b = b.join(Box2::segment(p, v, traffic.t));
+                let mut slices = [Box2::polygon(o.p, o.vels, 0.0, 0.0); SLICES];
+                for (k, b) in slices.iter_mut().enumerate() {
+                    *b = Box2::polygon(o.p, o.vels, ends[k], ends[k + 1]);
                 }
-                b
+                slices
             })
             .collect();
         Tester {
@@ -252,13 +289,26 @@ impl<'a> Tester<'a> {
         })
     }
 
+    /// Is the point moving at `v` farther than `reach` from obstacle i throughout
+    /// [0, T]? In each time slice their boxes are apart by more than `reach` along x
+    /// or y (the parent module's prefilter).
+    fn apart(&self, i: usize, v: Vect2, reach: f64) -> bool {
+        let ends = slice_ends(self.traffic.t);
+        self.boxes[i].iter().enumerate().all(|(k, b)| {
+            b.apart(
+                Box2::between(self.traffic.s, v, ends[k], ends[k + 1]),
+                reach,
+            )
+        })
+    }
+
     /// The certificate for obstacle i on a cell (parent module): `No` Clear, `Yes`
     /// Conflict, `Unsure` neither.
     fn verdict(&mut self, i: usize, pr: &Probe) -> Tri {
         let Separation { d, h } = self.traffic.sep;
         // Clear: near_{D+r} (and H + r_z) is empty at the sample.
         let reach = round_up(d + pr.r);
-        if self.boxes[i].apart(Box2::segment(self.traffic.s, pr.v, self.traffic.t), reach) {
+        if self.apart(i, pr.v, reach) {
             return Tri::No;
         }
         let grown = round_up(h + pr.rz);
@@ -292,7 +342,10 @@ impl<'a> Tester<'a> {
                 found: false,
             };
             self.scan(i, pr, z, Relation::Near, near, &mut f) && f.found
-        } else if self.boxes[i].narrower_than(round_up(pr.r - d)) {
+        } else if self.boxes[i]
+            .iter()
+            .all(|b| b.narrower_than(round_up(pr.r - d)))
+        {
             // No point of the obstacle is r − D deep inside: its swept box is narrower.
             false
         } else {
@@ -412,9 +465,11 @@ impl<'a> Tester<'a> {
     /// The band answer over [lo, hi] (parent module's refinement).
     pub(super) fn bands(mut self, lo: f64, hi: f64, unknown_max: f64) -> Bands {
         let all: Vec<u32> = (0..self.traffic.obstacles.len() as u32).collect();
-        let mut w_min = unknown_max * 0.5;
         let mut cells = Vec::new();
         let n = self.first_cells(lo, hi);
+        // Level by level: the first cells as they are, then every Unknown cell halved
+        // once per pass.
+        let mut w_min = (hi - lo) / n as f64;
         let mut a = lo;
         for k in 1..=n {
             let b = if k == n {
@@ -422,9 +477,10 @@ impl<'a> Tester<'a> {
             } else {
                 lo + (hi - lo) * (k as f64 / n as f64)
             };
-            self.settle(a, b, &all, w_min, &mut cells);
+            self.settle(a, b, &all, f64::INFINITY, &mut cells);
             a = b;
         }
+        let mut stalls = 0;
         loop {
             let unknown = unknown_width(&cells);
             if unknown <= unknown_max {
@@ -437,8 +493,19 @@ impl<'a> Tester<'a> {
                 self.split(cell, w_min, &mut next);
             }
             cells = next;
-            let stuck = self.cells == before && w_min < unknown_max * f64::EPSILON;
-            if stuck || self.cells + 2 > MAX_CELLS {
+            let split = self.cells > before;
+            if split {
+                // Halving every Unknown cell roughly halves a sliver around a boundary;
+                // an Unknown stretch that does not shrink is one the certificate cannot
+                // decide at any width.
+                if unknown_width(&cells) > STALL * unknown {
+                    stalls += 1;
+                } else {
+                    stalls = 0;
+                }
+            }
+            let stuck = !split && w_min < unknown_max * f64::EPSILON;
+            if stuck || stalls >= STALLS || self.cells + 2 > MAX_CELLS {
                 break;
             }
         }

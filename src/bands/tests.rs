@@ -374,3 +374,32 @@ fn inputs_are_checked_by_field() {
     };
     assert_eq!(err(course_bands(&flat, 1.0, 0.1)), "obstacles[0].slab");
 }
+
+#[test]
+fn a_bound_that_cannot_be_met_is_reported() {
+    // The point starts on the bottom edge of the square [−10, 10] × [0, 20], D = 0:
+    // every course is in conflict at t = 0 (exactly on the boundary). Courses into the
+    // square go deeper than any r: certified Conflict. Courses out of it never have a
+    // point deeper than r inside nor a margin for Clear: Unknown at every width.
+    let p = vec![v(-10.0, 0.0), v(10.0, 0.0), v(10.0, 20.0), v(-10.0, 20.0)];
+    let vels = vec![Vect2::ZERO; 4];
+    let obstacles = [Obstacle {
+        p: &p,
+        vels: &vels,
+        slab: None,
+    }];
+    let traffic = Traffic {
+        t: 10.0,
+        s: Vect2::ZERO,
+        height: None,
+        obstacles: &obstacles,
+        sep: sep(0.0, 0.0),
+    };
+    let b = course_bands(&traffic, 1.0, TENTH_DEGREE).unwrap();
+    assert_tiling(&b, 0.0, TAU);
+    assert!(!b.met && b.unknown_total > TENTH_DEGREE);
+    assert!(b.bands.iter().all(|x| x.kind != BandKind::Clear));
+    assert_eq!(kind_at(&b, 0.0), BandKind::Conflict);
+    assert_eq!(kind_at(&b, PI), BandKind::Unknown);
+    assert!(b.unknown_total >= PI * 0.9, "{b:?}");
+}

@@ -333,3 +333,37 @@ fn help_cites_the_way_out_page() {
         assert!(out.contains("docs/way-out.md"), "{cmd}: {out}");
     }
 }
+
+/// `--svg` draws the chosen case's bands as a compass rose: its title is the case id, a
+/// wedge is drawn in the colour of each kind the answer has, and without a FILE (standard
+/// input) or with an unknown id it refuses with exit 2.
+#[test]
+fn svg_draws_the_chosen_cases_rose() {
+    let dir = std::env::temp_dir().join(format!("pg-bands-svg-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let out = dir.join("rose.svg");
+    let file = common::root().join("examples/bands.jsonl");
+    let (f, o) = (file.to_string_lossy(), out.to_string_lossy());
+    let (lines, _, code) = run(
+        &["bands", &f, "--svg", &o, "--svg-case", "line-of-cells"],
+        "",
+    );
+    assert_eq!(code, 0);
+    let svg = std::fs::read_to_string(&out).expect("svg written");
+    assert!(svg.contains(">line-of-cells<"));
+    let first = &lines[0]["course"]["bands"];
+    for (name, colour) in [("clear", "#2e9d46"), ("conflict", "#d7301f")] {
+        let has = first
+            .as_array()
+            .is_some_and(|b| b.iter().any(|x| x["kind"] == name));
+        assert!(has, "the example has {name} bands");
+        assert!(svg.contains(&format!("fill=\"{colour}\" fill-opacity=\"0.85\"")));
+    }
+    let (_, err, code) = run(&["bands", "--svg", &o], "");
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("--svg needs a case FILE"), "{err}");
+    let (_, err, code) = run(&["bands", &f, "--svg", &o, "--svg-case", "nope"], "");
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("no case with id \"nope\""), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

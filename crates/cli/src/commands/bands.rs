@@ -34,6 +34,13 @@ pub struct BandsArgs {
     /// `bands.unknown_max_deg` (speed bands aim at the same share of their range).
     #[arg(long, default_value_t = DEFAULT_UNKNOWN_MAX_DEG, value_parser = parse_positive)]
     pub unknown_max_deg: f64,
+    /// Also draw one case's course bands as a compass rose into this SVG file (the first
+    /// valid case, or `--svg-case`); needs FILE, not standard input.
+    #[arg(long, value_name = "OUT.svg")]
+    pub svg: Option<PathBuf>,
+    /// The id of the case to draw with `--svg`.
+    #[arg(long, value_name = "ID", requires = "svg")]
+    pub svg_case: Option<String>,
 }
 
 /// Runs `polyguard bands`.
@@ -44,5 +51,20 @@ pub fn run(args: &BandsArgs) -> ExitCode {
         unknown_max_deg: args.unknown_max_deg,
         ..Ask::default()
     };
-    run_lines("bands", Command::Bands, &args.file, &ask)
+    let file = args
+        .file
+        .as_deref()
+        .filter(|f| *f != std::path::Path::new("-"));
+    if args.svg.is_some() && file.is_none() {
+        eprintln!("polyguard bands: --svg needs a case FILE (standard input is read once)");
+        return ExitCode::from(2);
+    }
+    let status = run_lines("bands", Command::Bands, &args.file, &ask);
+    if let (Some(out), Some(file)) = (&args.svg, file) {
+        if let Err(e) = super::bands_svg::write(file, args.svg_case.as_deref(), &ask, out) {
+            eprintln!("polyguard bands: --svg: {e}");
+            return ExitCode::from(2);
+        }
+    }
+    status
 }

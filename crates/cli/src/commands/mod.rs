@@ -5,6 +5,7 @@ pub mod assure_common;
 pub mod assure_intervals;
 pub mod assure_moving;
 pub mod bands;
+pub mod bands_svg;
 pub mod conflicts;
 pub mod detect;
 pub mod detect_batch;

@@ -169,6 +169,20 @@ fn polygons(out: &mut String, m: &Map, c: &Compass) {
     }
 }
 
+/// Tints each band's sector from the point out to the ring, faintly, so that a clear
+/// lane reads as a way between the polygons.
+fn lanes(out: &mut String, m: &Map, c: &Compass, r: f64) {
+    let r0 = r * (1.0 - RING);
+    for b in &c.bands.bands {
+        let _ = writeln!(
+            out,
+            r##"<path d="{}" fill="{}" fill-opacity="0.10" stroke="none"/>"##,
+            wedge(m, b.lo, b.hi, 0.0, r0),
+            colour(b.kind)
+        );
+    }
+}
+
 /// Draws the ring of course bands at the reach radius, with degree ticks.
 fn rose(out: &mut String, m: &Map, c: &Compass, r: f64) {
     let r0 = r * (1.0 - RING);
@@ -316,11 +330,12 @@ pub fn compass_svg(c: &Compass) -> String {
         W / 2.0,
         esc(c.title)
     );
+    let reach = (c.v.sq().sqrt() * c.t * k).max(60.0);
+    lanes(&mut out, &m, c, reach);
+    rose(&mut out, &m, c, reach);
     out.push_str(r##"<g clip-path="url(#map)">"##);
     polygons(&mut out, &m, c);
     out.push_str("</g>\n");
-    let reach = c.v.sq().sqrt() * c.t * k;
-    rose(&mut out, &m, c, reach.max(60.0));
     point(&mut out, &m, c);
     legend(&mut out, c);
     out.push_str("</svg>\n");
@@ -388,7 +403,7 @@ mod tests {
         // The clear band spans more than half a turn: two arcs in one path.
         let clear_path = svg
             .lines()
-            .find(|l| l.contains(&format!("fill=\"{CLEAR}\" fill-opacity")))
+            .find(|l| l.contains(&format!("fill=\"{CLEAR}\" fill-opacity=\"0.85\"")))
             .unwrap_or("");
         assert_eq!(clear_path.matches(" A").count(), 4, "{clear_path}");
         assert!(svg.contains(">N<") && svg.contains(">E<") && svg.contains(">030<"));

@@ -21,7 +21,7 @@ const PICTURE_EPS: f64 = 0.01;
 fn id_matches(id: &Value, want: &str) -> bool {
     match id {
         Value::String(s) => s == want,
-        other => other.to_string() == want,
+        other => serde_json::to_string(other).is_ok_and(|text| text == want),
     }
 }
 

@@ -52,9 +52,9 @@
 //! cannot be certified, nearly parallel shifted edges whose intersection is undecided)
 //! can widen the gap; the bounds stay certified.
 //!
-//! [`Recovery::Impossible`] for `recovery_in` is certified too: every candidate certainly
-//! breaks the condition, and if the feasible set were not empty its nearest point to s
-//! would be one of them and satisfy it.
+//! [`Recovery::Impossible`] for `recovery_in` is certified too: s and every candidate
+//! certainly break the condition, and if the feasible set were not empty its nearest
+//! point to s would be one of them and satisfy it.
 //!
 //! The candidates are O(n²) and each is checked against n edges: O(n³) for n vertices,
 //! meant for polygons of tens of vertices.
@@ -399,6 +399,10 @@ impl<'a> Shape<'a> {
         let mut min_lo = cands.iter().fold(f64::INFINITY, |m, c| m.min(c.lo));
         if s_tri == Tri::Unsure {
             min_lo = 0.0;
+        }
+        if cands.is_empty() && s_tri == Tri::Unsure {
+            // s may be feasible itself: nothing certain either way.
+            return Err(RecoveryError::Uncertified);
         }
         if cands.is_empty() {
             return Ok(Recovery::Impossible {

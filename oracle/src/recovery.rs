@@ -296,25 +296,33 @@ impl Scene {
     }
 
     /// The shifted edge i's start p0 = a + σD·N/√E (N = e⊥ = (e_y, −e_x)) in a tower
-    /// holding √E as its first root.
-    fn shifted_start(&self, sd: &BigRational, i: usize) -> (Tower, [Elem; 2], Pt, BigRational) {
+    /// holding √E as its first root; `None` for an edge of length 0 (a repeated vertex,
+    /// whose features are its circle's).
+    fn shifted_start(
+        &self,
+        sd: &BigRational,
+        i: usize,
+    ) -> Option<(Tower, [Elem; 2], Pt, BigRational)> {
         let (a, e) = self.edge(i);
         let big_e = dot(&e, &e);
+        if big_e.is_zero() {
+            return None;
+        }
         let mut tw = Tower::new();
-        let root = tw
-            .adjoin(&Elem::rat(big_e.clone()))
-            .unwrap_or(Elem::rat(big_e.clone()));
+        let root = tw.adjoin(&Elem::rat(big_e.clone()))?;
         let k = sd / &big_e;
         let p0 = [
             tw.add(&tw.rat(&a[0]), &root.scale(&(&k * &e[1]))),
             tw.add(&tw.rat(&a[1]), &root.scale(&(-&k * &e[0]))),
         ];
-        (tw, p0, e, big_e)
+        Some((tw, p0, e, big_e))
     }
 
     /// The clamped projection of s on shifted edge i (the parameter along e is rational).
     fn projection(&self, side: Side, sd: &BigRational, i: usize, out: &mut Vec<(Tower, Elem)>) {
-        let (tw, p0, e, big_e) = self.shifted_start(sd, i);
+        let Some((tw, p0, e, big_e)) = self.shifted_start(sd, i) else {
+            return;
+        };
         let tau = dot(&sub(&self.s, &self.v[i]), &e) / &big_e;
         let tau = tau.clamp(BigRational::zero(), BigRational::one());
         let x = [
@@ -385,7 +393,9 @@ impl Scene {
         j: usize,
         out: &mut Vec<(Tower, Elem)>,
     ) {
-        let (mut tw, p0, e, big_e) = self.shifted_start(sd, i);
+        let Some((mut tw, p0, e, big_e)) = self.shifted_start(sd, i) else {
+            return;
+        };
         let wx = tw.sub(&p0[0], &tw.rat(&self.v[j][0]));
         let wy = tw.sub(&p0[1], &tw.rat(&self.v[j][1]));
         let b = tw.add(&wx.scale(&e[0]), &wy.scale(&e[1]));

@@ -228,7 +228,8 @@ fn bad_inputs_name_their_field() {
 }
 
 /// A star-shaped polygon about (cx, cy): sorted angles, random radii (simple, ccw,
-/// with reflex vertices where a radius dips).
+/// with reflex vertices where a radius dips). Consecutive angles are less than π apart
+/// (for a triangle too), so the centre is inside and the ring runs counterclockwise.
 fn star() -> impl Strategy<Value = Vec<Vect2>> {
     (
         prop::collection::vec((0.0f64..1.0, 0.3f64..3.0), 3..8),
@@ -237,10 +238,13 @@ fn star() -> impl Strategy<Value = Vec<Vect2>> {
     )
         .prop_map(|(raw, cx, cy)| {
             let n = raw.len();
+            let spread = if n == 3 { 0.3 } else { 0.8 };
             raw.iter()
                 .enumerate()
                 .map(|(i, &(a, r))| {
-                    let ang = (i as f64 + 0.1 + 0.8 * a) * core::f64::consts::TAU / n as f64;
+                    let ang = (i as f64 + (1.0 - spread) / 2.0 + spread * a)
+                        * core::f64::consts::TAU
+                        / n as f64;
                     v(cx + r * ang.cos(), cy + r * ang.sin())
                 })
                 .collect()
@@ -248,7 +252,7 @@ fn star() -> impl Strategy<Value = Vec<Vect2>> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(48))]
+    #![proptest_config(ProptestConfig::with_cases(32))]
 
     #[test]
     fn random_polygons_agree_with_the_oracle(
@@ -275,14 +279,15 @@ fn zero_separation_is_containment() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(32))]
+    #![proptest_config(ProptestConfig::with_cases(20))]
 
-    /// Moving (warping) polygons at a time t, and points on or near a vertex or an edge.
+    /// Moving (warping) polygons at a time t (half of them at t = 0, static), and points
+    /// on or near a vertex or an edge.
     #[test]
     fn moving_polygons_and_near_points_agree_with_the_oracle(
         p in star(),
         vel in prop::collection::vec((-0.3f64..0.3, -0.3f64..0.3), 8),
-        t in 0.0f64..3.0,
+        t in prop_oneof![Just(0.0), 0.0f64..3.0],
         k in 0usize..8,
         along in prop::sample::select(vec![0.0, 0.5, 0.25]),
         off in prop::sample::select(vec![0.0, 0.3, -0.3, 1e-9]),
@@ -291,6 +296,10 @@ proptest! {
         let n = p.len();
         // Small shears only, so that the polygon stays simple and counterclockwise.
         let vels: Vec<Vect2> = vel[..n].iter().map(|&(x, y)| v(x * 0.1, y * 0.1)).collect();
+        // Twice the signed area at t, in f64: the shears keep it well above 0.
+        let q = at(&p, &vels, t);
+        let area: f64 = (0..n).map(|i| q[i].x * q[(i + 1) % n].y - q[i].y * q[(i + 1) % n].x).sum();
+        prop_assume!(area > 0.01);
         let (a, b) = (p[k % n], p[(k + 1) % n]);
         let e = b - a;
         let s = a + e.scale(along) + e.perp().scale(off);

@@ -85,7 +85,8 @@ pub enum Recovery {
         dist_hi: f64,
         /// A certified lower bound of the exact minimum distance m.
         min_lo: f64,
-        /// s itself satisfies the condition (then x = s).
+        /// s itself is certified to satisfy the condition (then x = s). False when it
+        /// does not, or when that could not be certified (a point of ∂P with D = 0).
         clear: bool,
     },
     /// The feasible set is empty (certified).
@@ -449,7 +450,8 @@ impl<'a> Shape<'a> {
 
     /// Is the exact f64 point x certainly feasible? Every vertex and every edge at least
     /// D from x (the §II.C tests `closer_than`, `interior_closer_than` certainly false),
-    /// and the crossing parity (§II.D) certainly on the right side.
+    /// and the crossing parity (§II.D) certainly on the right side. `No` only when x is
+    /// certainly infeasible.
     fn certify(&self, side: Side, x: Vect2) -> Tri {
         let n = self.n();
         let rel: Vec<BallV> = (0..n).map(|i| self.rel(i, x)).collect();
@@ -470,6 +472,10 @@ impl<'a> Shape<'a> {
         let inside = self.parity(&rel, |i| self.terms(i, x));
         let side_ok = match side {
             Side::Out => inside.not(),
+            // With D = 0 a point of ∂P is feasible, and the parity of a point on ∂P says
+            // nothing: an even parity does not prove x outside P. (With D > 0 a point on
+            // ∂P is infeasible either way.)
+            Side::In if self.d == 0.0 && inside == Tri::No => Tri::Unsure,
             Side::In => inside,
         };
         far.and(side_ok)

@@ -92,7 +92,8 @@ fn check(p: &[Vect2], vels: &[Vect2], t: f64, s: Vect2, d: f64, out: bool) {
                 dist_hi - min_lo,
                 scale(p, s, d)
             );
-            assert_eq!(clear, m.zero);
+            // clear is certified: s is then exactly feasible.
+            assert!(!clear || m.zero);
         }
         (Ok(Recovery::Impossible { .. }), oracle::ExactRecovery::Impossible) => {}
         (g, e) => panic!("engine {g:?}, oracle {e:?}"),

@@ -15,6 +15,7 @@ use polyguard_oracle::convert::q;
 use polyguard_oracle::recovery::{self as oracle, ExactRecovery};
 
 use super::polycarp;
+use crate::gen::Source;
 
 /// Which condition.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -55,7 +56,8 @@ pub enum Verdict {
         dist_hi_above: bool,
         /// dist_hi − min_lo ≤ REL_TOL·S (the engine's stated tolerance).
         gap_within: bool,
-        /// The engine said s was clear, and so it is (or neither).
+        /// The engine said s was clear only if it is (a certified flag: s may be clear
+        /// without the engine saying so, on ∂P with D = 0).
         clear_agrees: bool,
     },
     /// Both say the feasible set is empty.
@@ -166,7 +168,7 @@ pub fn check_engine(qy: &Query) -> Verdict {
                 min_lo_below: m.cmp_rational(&lo) != Ordering::Less,
                 dist_hi_above: &ex * &ex + &ey * &ey <= &hi * &hi,
                 gap_within: dist_hi - min_lo <= REL_TOL * scale(qy),
-                clear_agrees: clear == m.zero,
+                clear_agrees: !clear || m.zero,
             }
         }
     }
@@ -222,6 +224,51 @@ pub fn polycarp_report(qy: &Query, buff: f64) -> PolycarpReport {
     }
 }
 
+/// Draws one query for a hunt: a star-shaped counterclockwise polygon of 3 to 9 vertices
+/// (angles less than π apart about an inside centre, radii in [0.3, 3)), static or warping
+/// slightly (vertex speeds below 0.03, t in [0, 3)), s on or near a vertex or an edge, or
+/// anywhere about the polygon, D among a few sizes, either side.
+pub fn draw_query<S: Source>(src: &mut S) -> Query {
+    let n = 3 + src.below(7);
+    let spread = if n == 3 { 0.3 } else { 0.8 };
+    let (cx, cy) = (src.range(-2.0, 2.0), src.range(-2.0, 2.0));
+    let p: Vec<Vect2> = (0..n)
+        .map(|i| {
+            let a = (i as f64 + (1.0 - spread) / 2.0 + spread * src.unit()) * std::f64::consts::TAU
+                / n as f64;
+            let r = src.range(0.3, 3.0);
+            Vect2::new(cx + r * a.cos(), cy + r * a.sin())
+        })
+        .collect();
+    let moving = src.coin();
+    let vels = if moving {
+        (0..n)
+            .map(|_| Vect2::new(src.range(-0.03, 0.03), src.range(-0.03, 0.03)))
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let t = if moving { src.range(0.0, 3.0) } else { 0.0 };
+    let k = src.below(n);
+    let (a, b) = (p[k], p[(k + 1) % n]);
+    let s = match src.below(3) {
+        0 => a,
+        1 => {
+            let e = b - a;
+            a + e.scale(src.pick(&[0.25, 0.5])) + e.perp().scale(src.pick(&[0.0, 0.1, -0.1]))
+        }
+        _ => Vect2::new(cx + src.range(-4.0, 4.0), cy + src.range(-4.0, 4.0)),
+    };
+    Query {
+        p,
+        vels,
+        t,
+        s,
+        d: src.pick(&[0.0, 0.05, 0.3, 1.0]),
+        side: if src.coin() { Side::Out } else { Side::In },
+    }
+}
+
 /// The float margin of [`PolycarpReport::margin`] (uncertified, for reports).
 fn margin(qy: &Query, x: Vect2) -> f64 {
     let n = qy.p.len();
@@ -258,6 +305,23 @@ mod tests {
             s,
             d,
             side,
+        }
+    }
+
+    /// A short hunt: drawn queries, every engine answer sound, within its tolerance when
+    /// a point, and no refusal but the documented near-degenerate one.
+    #[test]
+    fn drawn_queries_are_sound() {
+        let mut src = crate::gen::SplitMix(7);
+        for _ in 0..24 {
+            let qy = draw_query(&mut src);
+            let verdict = check_engine(&qy);
+            assert!(verdict.sound(), "{qy:?}: {verdict:?}");
+            match verdict {
+                Verdict::Point { gap_within, .. } => assert!(gap_within, "{qy:?}"),
+                Verdict::Refused(e) => assert_eq!(e, RecoveryError::Uncertified, "{qy:?}"),
+                _ => {}
+            }
         }
     }
 

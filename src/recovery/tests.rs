@@ -274,6 +274,21 @@ fn zero_separation_is_containment() {
     let r = recovery_out(&square(), v(1.0, 1.0), 0.0);
     assert!(matches!(r, Ok(Recovery::Point { clear: true, .. })));
     check(&square(), &[], 0.0, v(-1.0, 0.5), 0.0, false);
+    // From far below a triangle, into it: the nearest point of P is its vertex C, which
+    // must be pushed into P (along the inward bisector) to be certified.
+    let tri = vec![
+        v(-0.9245876690546373, 0.8156091667960288),
+        v(-1.8513649712107147, -1.6368068874980566),
+        v(-0.17514818540671184, -3.069559486709352),
+    ];
+    check(
+        &tri,
+        &[],
+        0.0,
+        v(-0.0004396781031328345, -5.49200035913006),
+        0.0,
+        false,
+    );
     let quad = vec![v(0.0, 0.0), v(3.0, 0.5), v(2.5, 2.0), v(0.2, 1.5)];
     check(&quad, &[], 0.0, v(4.0, 3.0), 0.0, false);
     check(&quad, &[], 0.0, v(1.0, -1.0), 0.0, false);

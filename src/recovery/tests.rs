@@ -24,8 +24,12 @@ fn ell() -> Vec<Vect2> {
     ]
 }
 
-fn arr(p: &[Vect2]) -> Vec<[f64; 2]> {
-    p.iter().map(|q| [q.x, q.y]).collect()
+fn arr(p: &[Vect2]) -> Vec<oracle::Point> {
+    p.iter().map(|w| pt(*w)).collect()
+}
+
+fn pt(w: Vect2) -> oracle::Point {
+    [q(w.x), q(w.y)]
 }
 
 fn q(x: f64) -> BigRational {
@@ -43,24 +47,17 @@ fn scale(p: &[Vect2], s: Vect2, d: f64) -> f64 {
 /// Checks an engine answer against the oracle: the condition exactly, the bounds
 /// min_lo ≤ m ≤ |x − s| ≤ dist_hi, and the gap within the stated tolerance.
 fn check(p: &[Vect2], vels: &[Vect2], t: f64, s: Vect2, d: f64, out: bool) {
-    let pa = arr(p);
-    let va = arr(vels);
+    let (pa, va, sa, ta, da) = (arr(p), arr(vels), pt(s), q(t), q(d));
     let (got, exact) = match (out, vels.is_empty()) {
-        (true, true) => (
-            recovery_out(p, s, d),
-            oracle::recovery_out(&pa, [s.x, s.y], d),
-        ),
-        (false, true) => (
-            recovery_in(p, s, d),
-            oracle::recovery_in(&pa, [s.x, s.y], d),
-        ),
+        (true, true) => (recovery_out(p, s, d), oracle::recovery_out(&pa, &sa, &da)),
+        (false, true) => (recovery_in(p, s, d), oracle::recovery_in(&pa, &sa, &da)),
         (true, false) => (
             recovery_out_at(p, vels, t, s, d),
-            oracle::recovery_out_at(&pa, &va, t, [s.x, s.y], d),
+            oracle::recovery_out_at(&pa, &va, &ta, &sa, &da),
         ),
         (false, false) => (
             recovery_in_at(p, vels, t, s, d),
-            oracle::recovery_in_at(&pa, &va, t, [s.x, s.y], d),
+            oracle::recovery_in_at(&pa, &va, &ta, &sa, &da),
         ),
     };
     let exact = exact.expect("finite inputs");
@@ -75,9 +72,9 @@ fn check(p: &[Vect2], vels: &[Vect2], t: f64, s: Vect2, d: f64, out: bool) {
             oracle::ExactRecovery::Min(m),
         ) => {
             let ok = if out {
-                oracle::satisfies_out(&pa, &va, t, [x.x, x.y], d)
+                oracle::satisfies_out(&pa, &va, &ta, &pt(x), &da)
             } else {
-                oracle::satisfies_in(&pa, &va, t, [x.x, x.y], d)
+                oracle::satisfies_in(&pa, &va, &ta, &pt(x), &da)
             };
             assert!(ok, "x = {x:?} breaks the condition");
             assert_ne!(m.cmp_rational(&q(min_lo)), Ordering::Less, "min_lo above m");

@@ -11,8 +11,8 @@ use polyguard::recovery::{
     recovery_in, recovery_in_at, recovery_out, recovery_out_at, Recovery, RecoveryError, REL_TOL,
 };
 use polyguard::Vect2;
-use polyguard_oracle::convert::q;
-use polyguard_oracle::recovery::{self as oracle, ExactRecovery};
+use polyguard_oracle::convert::{q, tower_to_f64};
+use polyguard_oracle::recovery::{self as oracle, ExactMin, ExactRecovery};
 
 use super::polycarp;
 use crate::gen::Source;
@@ -87,8 +87,24 @@ impl Verdict {
     }
 }
 
-fn arr(p: &[Vect2]) -> Vec<[f64; 2]> {
-    p.iter().map(|v| [v.x, v.y]).collect()
+/// Exact points of f64 vectors (finite inputs: non-finite ones become `None`).
+fn arr(p: &[Vect2]) -> Option<Vec<oracle::Point>> {
+    p.iter().map(|v| pt(*v)).collect()
+}
+
+fn pt(v: Vect2) -> Option<oracle::Point> {
+    Some([q(v.x)?, q(v.y)?])
+}
+
+/// The exact minimum m of an [`ExactMin`] about as the nearest f64 (for reports).
+pub fn min_to_f64(m: &ExactMin) -> f64 {
+    if m.zero {
+        return 0.0;
+    }
+    m.cands
+        .iter()
+        .map(|(t, d2)| tower_to_f64(t, d2).max(0.0).sqrt())
+        .fold(f64::INFINITY, f64::min)
 }
 
 /// The engine's answer to the query.
@@ -103,21 +119,25 @@ pub fn engine(qy: &Query) -> Result<Recovery, RecoveryError> {
 
 /// The oracle's exact answer (`None` for a non-finite input).
 pub fn exact(qy: &Query) -> Option<ExactRecovery> {
-    let (p, v, s) = (arr(&qy.p), arr(&qy.vels), [qy.s.x, qy.s.y]);
+    let (p, v, s, t, d) = (arr(&qy.p)?, arr(&qy.vels)?, pt(qy.s)?, q(qy.t)?, q(qy.d)?);
     match (qy.side, qy.vels.is_empty()) {
-        (Side::Out, true) => oracle::recovery_out(&p, s, qy.d),
-        (Side::In, true) => oracle::recovery_in(&p, s, qy.d),
-        (Side::Out, false) => oracle::recovery_out_at(&p, &v, qy.t, s, qy.d),
-        (Side::In, false) => oracle::recovery_in_at(&p, &v, qy.t, s, qy.d),
+        (Side::Out, true) => oracle::recovery_out(&p, &s, &d),
+        (Side::In, true) => oracle::recovery_in(&p, &s, &d),
+        (Side::Out, false) => oracle::recovery_out_at(&p, &v, &t, &s, &d),
+        (Side::In, false) => oracle::recovery_in_at(&p, &v, &t, &s, &d),
     }
 }
 
-/// Does x meet the query's condition, exactly?
+/// Does x meet the query's condition, exactly? (False for non-finite inputs.)
 pub fn meets(qy: &Query, x: Vect2) -> bool {
-    let (p, v) = (arr(&qy.p), arr(&qy.vels));
+    let (Some(p), Some(v), Some(x), Some(t), Some(d)) =
+        (arr(&qy.p), arr(&qy.vels), pt(x), q(qy.t), q(qy.d))
+    else {
+        return false;
+    };
     match qy.side {
-        Side::Out => oracle::satisfies_out(&p, &v, qy.t, [x.x, x.y], qy.d),
-        Side::In => oracle::satisfies_in(&p, &v, qy.t, [x.x, x.y], qy.d),
+        Side::Out => oracle::satisfies_out(&p, &v, &t, &x, &d),
+        Side::In => oracle::satisfies_in(&p, &v, &t, &x, &d),
     }
 }
 
@@ -211,7 +231,7 @@ pub fn polycarp_report(qy: &Query, buff: f64) -> PolycarpReport {
         ..qy.clone()
     };
     let min = match exact(&stat) {
-        Some(ExactRecovery::Min(m)) => Some(m.approx()),
+        Some(ExactRecovery::Min(m)) => Some(min_to_f64(&m)),
         _ => None,
     };
     PolycarpReport {

@@ -52,9 +52,9 @@
 //! cannot be certified, nearly parallel shifted edges whose intersection is undecided)
 //! can widen the gap; the bounds stay certified.
 //!
-//! [`Recovery::Impossible`] for `recovery_in` is certified too: every candidate certainly
-//! breaks the condition, and if the feasible set were not empty its nearest point to s
-//! would be one of them and satisfy it.
+//! [`Recovery::Impossible`] for `recovery_in` is certified too: s and every candidate
+//! certainly break the condition, and if the feasible set were not empty its nearest
+//! point to s would be one of them and satisfy it.
 //!
 //! The candidates are O(n²) and each is checked against n edges: O(n³) for n vertices,
 //! meant for polygons of tens of vertices.
@@ -85,7 +85,8 @@ pub enum Recovery {
         dist_hi: f64,
         /// A certified lower bound of the exact minimum distance m.
         min_lo: f64,
-        /// s itself satisfies the condition (then x = s).
+        /// s itself is certified to satisfy the condition (then x = s). False when it
+        /// does not, or when that could not be certified (a point of ∂P with D = 0).
         clear: bool,
     },
     /// The feasible set is empty (certified).
@@ -400,6 +401,10 @@ impl<'a> Shape<'a> {
         if s_tri == Tri::Unsure {
             min_lo = 0.0;
         }
+        if cands.is_empty() && s_tri == Tri::Unsure {
+            // s may be feasible itself: nothing certain either way.
+            return Err(RecoveryError::Uncertified);
+        }
         if cands.is_empty() {
             return Ok(Recovery::Impossible {
                 reason: "no point of P is D from its boundary: its inradius is below D",
@@ -445,7 +450,8 @@ impl<'a> Shape<'a> {
 
     /// Is the exact f64 point x certainly feasible? Every vertex and every edge at least
     /// D from x (the §II.C tests `closer_than`, `interior_closer_than` certainly false),
-    /// and the crossing parity (§II.D) certainly on the right side.
+    /// and the crossing parity (§II.D) certainly on the right side. `No` only when x is
+    /// certainly infeasible.
     fn certify(&self, side: Side, x: Vect2) -> Tri {
         let n = self.n();
         let rel: Vec<BallV> = (0..n).map(|i| self.rel(i, x)).collect();
@@ -466,9 +472,58 @@ impl<'a> Shape<'a> {
         let inside = self.parity(&rel, |i| self.terms(i, x));
         let side_ok = match side {
             Side::Out => inside.not(),
+            // With D = 0 a point of ∂P is feasible, and the parity of a point on ∂P says
+            // nothing: an even parity proves x outside P only with x on no edge. (With
+            // D > 0 a point on ∂P is infeasible either way.)
+            Side::In if self.d == 0.0 && inside == Tri::No => match self.off_boundary(&rel, x) {
+                Tri::Yes => Tri::No,
+                _ => Tri::Unsure,
+            },
             Side::In => inside,
         };
         far.and(side_ok)
+    }
+
+    /// Is x on no edge of P? Per edge a b (vertices minus x): on it exactly when
+    /// a × b = 0 and a·b ≤ 0; decided on balls, else exactly on the terms.
+    fn off_boundary(&self, rel: &[BallV], x: Vect2) -> Tri {
+        let mut off = Tri::Yes;
+        for j in 0..self.n() {
+            let k = self.next(j);
+            let (a, b) = (rel[j], rel[k]);
+            let cross = a.cross(b);
+            let ball_off = crate::ball::positive(cross)
+                .or(crate::ball::positive(cross.neg()))
+                .or(crate::ball::positive(a.dot(b)));
+            let edge_off = match ball_off {
+                Tri::Yes => Tri::Yes,
+                _ => self.off_edge_exact(j, k, x),
+            };
+            off = off.and(edge_off);
+            if off == Tri::No {
+                return off;
+            }
+        }
+        off
+    }
+
+    /// [`Shape::off_boundary`]'s test of one edge, on the exact terms.
+    fn off_edge_exact(&self, j: usize, k: usize, x: Vect2) -> Tri {
+        let (Some(ta), Some(tb)) = (self.terms(j, x), self.terms(k, x)) else {
+            return Tri::Unsure;
+        };
+        let sum = |t: &[f64]| exact::Sum::of(t);
+        let (ax, ay) = (sum(&ta.x[..ta.n]), sum(&ta.y[..ta.n]));
+        let (bx, by) = (sum(&tb.x[..tb.n]), sum(&tb.y[..tb.n]));
+        let mut cross = ax.mul(&by);
+        cross.add_sum(&ay.mul(&bx), -1.0);
+        let mut dot = ax.mul(&bx);
+        dot.add_sum(&ay.mul(&by), 1.0);
+        match (cross.sign(), dot.sign()) {
+            (Some(0), Some(d)) => Tri::from_bool(d > 0),
+            (Some(_), _) => Tri::Yes,
+            _ => Tri::Unsure,
+        }
     }
 
     /// The crossing parity of the upward ray from the point whose vertex offsets are
@@ -573,11 +628,12 @@ impl<'a> Shape<'a> {
         for (i, q) in self.q.iter().enumerate() {
             // The point of the circle on the ray from its centre through s, pushed away
             // from the centre; with D = 0 (only `in` gets here) the circle is the vertex,
-            // pushed into P along the inward bisector −σ(N̂ᵢ₋₁ + N̂ᵢ).
+            // pushed into P along the inward bisector (the sum of the two edges' push
+            // directions σN̂, inward for `in`).
             let w = q.neg();
             let len = sqrt_ball(w.sq());
             let dir = if self.d == 0.0 {
-                -(lines[(i + n - 1) % n].nn + lines[i].nn)
+                lines[(i + n - 1) % n].nn + lines[i].nn
             } else {
                 w.v
             };

@@ -124,6 +124,22 @@ pub fn to_float(x: &num_rational::BigRational) -> f64 {
     num_traits::ToPrimitive::to_f64(x).unwrap_or(f64::NAN)
 }
 
+/// A tower number rounded to about the nearest f64, for reports only (never for a
+/// decision): each level's u + w·√b evaluated in floats.
+pub fn tower_to_f64(t: &crate::tower::Tower, a: &crate::tower::Elem) -> f64 {
+    fn at(t: &crate::tower::Tower, k: usize, a: &[num_rational::BigRational]) -> f64 {
+        if k == 0 {
+            return to_float(&a[0]);
+        }
+        let h = 1 << (k - 1);
+        let (u, w) = a.split_at(h);
+        let rad = at(t, k - 1, &t.radicand(k - 1).0[..h]).max(0.0);
+        at(t, k - 1, u) + at(t, k - 1, w) * rad.sqrt()
+    }
+    let a = t.top(a);
+    at(t, a.level(), &a.0)
+}
+
 /// The exact point of an f64 pair (`None` if a coordinate is not finite).
 pub fn exact_point(p: [f64; 2]) -> Option<[num_rational::BigRational; 2]> {
     Some([q(p[0])?, q(p[1])?])

@@ -23,7 +23,6 @@ use core::cmp::Ordering;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 
-use crate::convert::q;
 use crate::tower::{sign_q, Elem, Tower};
 
 /// The exact minimum distance m, as the least of finitely many tower numbers.
@@ -61,17 +60,6 @@ impl ExactMin {
         }
         best
     }
-
-    /// A float approximation of m (for reports; no decision reads it).
-    pub fn approx(&self) -> f64 {
-        if self.zero {
-            return 0.0;
-        }
-        self.cands
-            .iter()
-            .map(|(t, d2)| t.approx(d2).max(0.0).sqrt())
-            .fold(f64::INFINITY, f64::min)
-    }
 }
 
 /// Which condition.
@@ -81,7 +69,9 @@ enum Side {
     In,
 }
 
-type Pt = [BigRational; 2];
+/// An exact point (x, y).
+pub type Point = [BigRational; 2];
+type Pt = Point;
 
 /// The exact inputs: vertices (at time t), s, D.
 struct Scene {
@@ -90,50 +80,69 @@ struct Scene {
     d: BigRational,
 }
 
-/// The exact minimum for the out condition (module doc); `None` for a non-finite input
-/// or D < 0.
-pub fn recovery_out(p: &[[f64; 2]], s: [f64; 2], d: f64) -> Option<ExactRecovery> {
+/// The exact minimum for the out condition (module doc); `None` for D < 0 or fewer than
+/// 3 vertices.
+pub fn recovery_out(p: &[Point], s: &Point, d: &BigRational) -> Option<ExactRecovery> {
     Some(scene(p, None, s, d)?.solve(Side::Out))
 }
 
 /// The exact minimum for the in condition (module doc), or `Impossible`.
-pub fn recovery_in(p: &[[f64; 2]], s: [f64; 2], d: f64) -> Option<ExactRecovery> {
+pub fn recovery_in(p: &[Point], s: &Point, d: &BigRational) -> Option<ExactRecovery> {
     Some(scene(p, None, s, d)?.solve(Side::In))
 }
 
 /// [`recovery_out`] for the exact polygon (p_i + t·V_i) at time t.
 pub fn recovery_out_at(
-    p: &[[f64; 2]],
-    vels: &[[f64; 2]],
-    t: f64,
-    s: [f64; 2],
-    d: f64,
+    p: &[Point],
+    vels: &[Point],
+    t: &BigRational,
+    s: &Point,
+    d: &BigRational,
 ) -> Option<ExactRecovery> {
     Some(scene(p, Some((vels, t)), s, d)?.solve(Side::Out))
 }
 
 /// [`recovery_in`] for the exact polygon (p_i + t·V_i) at time t.
 pub fn recovery_in_at(
-    p: &[[f64; 2]],
-    vels: &[[f64; 2]],
-    t: f64,
-    s: [f64; 2],
-    d: f64,
+    p: &[Point],
+    vels: &[Point],
+    t: &BigRational,
+    s: &Point,
+    d: &BigRational,
 ) -> Option<ExactRecovery> {
     Some(scene(p, Some((vels, t)), s, d)?.solve(Side::In))
 }
 
 /// Does x satisfy the out condition dist(x, P(t)) ≥ D exactly? (`vels` empty: static.)
-pub fn satisfies_out(p: &[[f64; 2]], vels: &[[f64; 2]], t: f64, x: [f64; 2], d: f64) -> bool {
+pub fn satisfies_out(
+    p: &[Point],
+    vels: &[Point],
+    t: &BigRational,
+    x: &Point,
+    d: &BigRational,
+) -> bool {
     satisfies(p, vels, t, x, d, Side::Out)
 }
 
 /// Does x satisfy the in condition x ∈ P(t), dist(x, ∂P(t)) ≥ D exactly?
-pub fn satisfies_in(p: &[[f64; 2]], vels: &[[f64; 2]], t: f64, x: [f64; 2], d: f64) -> bool {
+pub fn satisfies_in(
+    p: &[Point],
+    vels: &[Point],
+    t: &BigRational,
+    x: &Point,
+    d: &BigRational,
+) -> bool {
     satisfies(p, vels, t, x, d, Side::In)
 }
 
-fn satisfies(p: &[[f64; 2]], vels: &[[f64; 2]], t: f64, x: [f64; 2], d: f64, side: Side) -> bool {
+fn satisfies(
+    p: &[Point],
+    vels: &[Point],
+    t: &BigRational,
+    x: &Point,
+    d: &BigRational,
+    side: Side,
+) -> bool {
     let mv = if vels.is_empty() {
         None
     } else {
@@ -147,26 +156,33 @@ fn satisfies(p: &[[f64; 2]], vels: &[[f64; 2]], t: f64, x: [f64; 2], d: f64, sid
     sc.feasible(side, &tw, &x)
 }
 
-/// The exact scene, or `None` for a non-finite input or D < 0.
-fn scene(p: &[[f64; 2]], vels: Option<(&[[f64; 2]], f64)>, s: [f64; 2], d: f64) -> Option<Scene> {
-    let d = q(d)?;
-    if d < BigRational::zero() || p.len() < 3 {
+/// The exact scene at time t, or `None` for D < 0, fewer than 3 vertices or a velocity
+/// list of another length.
+fn scene(
+    p: &[Point],
+    vels: Option<(&[Point], &BigRational)>,
+    s: &Point,
+    d: &BigRational,
+) -> Option<Scene> {
+    if d < &BigRational::zero() || p.len() < 3 {
         return None;
     }
-    let mut v = Vec::with_capacity(p.len());
-    for (i, pi) in p.iter().enumerate() {
-        let mut x = [q(pi[0])?, q(pi[1])?];
-        if let Some((vs, t)) = vels {
-            let vi = vs.get(i)?;
-            let t = q(t)?;
-            x = [&x[0] + &t * q(vi[0])?, &x[1] + &t * q(vi[1])?];
+    let v = match vels {
+        None => p.to_vec(),
+        Some((vs, t)) => {
+            if vs.len() != p.len() {
+                return None;
+            }
+            p.iter()
+                .zip(vs)
+                .map(|(a, w)| [&a[0] + t * &w[0], &a[1] + t * &w[1]])
+                .collect()
         }
-        v.push(x);
-    }
+    };
     Some(Scene {
         v,
-        s: [q(s[0])?, q(s[1])?],
-        d,
+        s: s.clone(),
+        d: d.clone(),
     })
 }
 
@@ -296,25 +312,33 @@ impl Scene {
     }
 
     /// The shifted edge i's start p0 = a + σD·N/√E (N = e⊥ = (e_y, −e_x)) in a tower
-    /// holding √E as its first root.
-    fn shifted_start(&self, sd: &BigRational, i: usize) -> (Tower, [Elem; 2], Pt, BigRational) {
+    /// holding √E as its first root; `None` for an edge of length 0 (a repeated vertex,
+    /// whose features are its circle's).
+    fn shifted_start(
+        &self,
+        sd: &BigRational,
+        i: usize,
+    ) -> Option<(Tower, [Elem; 2], Pt, BigRational)> {
         let (a, e) = self.edge(i);
         let big_e = dot(&e, &e);
+        if big_e.is_zero() {
+            return None;
+        }
         let mut tw = Tower::new();
-        let root = tw
-            .adjoin(&Elem::rat(big_e.clone()))
-            .unwrap_or(Elem::rat(big_e.clone()));
+        let root = tw.adjoin(&Elem::rat(big_e.clone()))?;
         let k = sd / &big_e;
         let p0 = [
             tw.add(&tw.rat(&a[0]), &root.scale(&(&k * &e[1]))),
             tw.add(&tw.rat(&a[1]), &root.scale(&(-&k * &e[0]))),
         ];
-        (tw, p0, e, big_e)
+        Some((tw, p0, e, big_e))
     }
 
     /// The clamped projection of s on shifted edge i (the parameter along e is rational).
     fn projection(&self, side: Side, sd: &BigRational, i: usize, out: &mut Vec<(Tower, Elem)>) {
-        let (tw, p0, e, big_e) = self.shifted_start(sd, i);
+        let Some((tw, p0, e, big_e)) = self.shifted_start(sd, i) else {
+            return;
+        };
         let tau = dot(&sub(&self.s, &self.v[i]), &e) / &big_e;
         let tau = tau.clamp(BigRational::zero(), BigRational::one());
         let x = [
@@ -385,7 +409,9 @@ impl Scene {
         j: usize,
         out: &mut Vec<(Tower, Elem)>,
     ) {
-        let (mut tw, p0, e, big_e) = self.shifted_start(sd, i);
+        let Some((mut tw, p0, e, big_e)) = self.shifted_start(sd, i) else {
+            return;
+        };
         let wx = tw.sub(&p0[0], &tw.rat(&self.v[j][0]));
         let wy = tw.sub(&p0[1], &tw.rat(&self.v[j][1]));
         let b = tw.add(&wx.scale(&e[0]), &wy.scale(&e[1]));
@@ -441,12 +467,16 @@ impl Scene {
 mod tests {
     use super::*;
 
-    fn sq2() -> Vec<[f64; 2]> {
-        vec![[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]]
-    }
-
     fn r(n: i64, d: i64) -> BigRational {
         BigRational::new(n.into(), d.into())
+    }
+
+    fn pt(x: i64, y: i64) -> Point {
+        [r(x, 1), r(y, 1)]
+    }
+
+    fn sq2() -> Vec<Point> {
+        vec![pt(0, 0), pt(2, 0), pt(2, 2), pt(0, 2)]
     }
 
     fn min_of(e: Option<ExactRecovery>) -> ExactMin {
@@ -458,92 +488,51 @@ mod tests {
 
     #[test]
     fn square_out_and_in() {
+        let zero = r(0, 1);
+        let half = r(1, 2);
         // From the centre, out of the 1/2-neighbourhood: 3/2 exactly.
-        let m = min_of(recovery_out(&sq2(), [1.0, 1.0], 0.5));
+        let m = min_of(recovery_out(&sq2(), &pt(1, 1), &half));
         assert_eq!(m.cmp_rational(&r(3, 2)), Ordering::Equal);
         // From (−1, −1) into the 1/2-core: to (1/2, 1/2), √(9/2), between 2.121 and 2.122.
-        let m = min_of(recovery_in(&sq2(), [-1.0, -1.0], 0.5));
+        let m = min_of(recovery_in(&sq2(), &pt(-1, -1), &half));
         assert_eq!(m.cmp_rational(&r(2121, 1000)), Ordering::Greater);
         assert_eq!(m.cmp_rational(&r(2122, 1000)), Ordering::Less);
-        assert!(satisfies_in(&sq2(), &[], 0.0, [0.5, 0.5], 0.5));
-        assert!(!satisfies_in(&sq2(), &[], 0.0, [0.5, 0.49], 0.5));
-        assert!(satisfies_out(&sq2(), &[], 0.0, [2.5, 1.0], 0.5));
-        assert!(!satisfies_out(&sq2(), &[], 0.0, [2.3, 2.3], 0.5));
-    }
-
-    /// m is not above the distance of any feasible point: points drawn about s (half of
-    /// them just beyond the float value of m, where a missed candidate would show) that
-    /// meet the condition, exactly, are all at least m away (m ≤ an upper bound of
-    /// |x − s|).
-    #[test]
-    fn no_feasible_point_is_nearer_than_the_minimum() {
-        let polys: [&[[f64; 2]]; 3] = [
-            &[
-                [0.0, 0.0],
-                [4.0, 0.0],
-                [4.0, 3.0],
-                [2.3, 3.0],
-                [2.0, 1.0],
-                [1.7, 3.0],
-                [0.0, 3.0],
-            ],
-            &[[0.0, 0.0], [3.0, 0.5], [2.5, 2.0], [0.2, 1.5]],
-            &[[0.0, 0.0], [4.0, 0.0], [0.5, 1.0]],
-        ];
-        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
-        let mut next = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
-        for p in polys {
-            for (s, d) in [([2.0, 1.5], 0.4), ([1.0, 0.4], 0.3), ([3.5, 0.2], 0.2)] {
-                for out in [true, false] {
-                    let ex = if out {
-                        recovery_out(p, s, d)
-                    } else {
-                        recovery_in(p, s, d)
-                    };
-                    let Some(ExactRecovery::Min(m)) = ex else {
-                        continue;
-                    };
-                    let approx = m.approx();
-                    for k in 0..600 {
-                        let rad = if k % 2 == 0 {
-                            3.0 * next()
-                        } else {
-                            approx * (1.0 + 0.1 * next())
-                        };
-                        let ang = core::f64::consts::TAU * next();
-                        let x = [s[0] + rad * ang.cos(), s[1] + rad * ang.sin()];
-                        let meets = if out {
-                            satisfies_out(p, &[], 0.0, x, d)
-                        } else {
-                            satisfies_in(p, &[], 0.0, x, d)
-                        };
-                        if !meets {
-                            continue;
-                        }
-                        let dist = ((x[0] - s[0]).powi(2) + (x[1] - s[1]).powi(2)).sqrt();
-                        // An upper bound of the exact |x − s|: a few roundings, 2⁻⁵⁰ covers them.
-                        let hi = q(dist * (1.0 + 2f64.powi(-50))).unwrap();
-                        assert_ne!(
-                            m.cmp_rational(&hi),
-                            Ordering::Greater,
-                            "{p:?} {s:?} {d} {out}"
-                        );
-                    }
-                }
-            }
-        }
+        let at = |x: BigRational, y: BigRational| [x, y];
+        assert!(satisfies_in(
+            &sq2(),
+            &[],
+            &zero,
+            &at(half.clone(), half.clone()),
+            &half
+        ));
+        assert!(!satisfies_in(
+            &sq2(),
+            &[],
+            &zero,
+            &at(half.clone(), r(49, 100)),
+            &half
+        ));
+        assert!(satisfies_out(
+            &sq2(),
+            &[],
+            &zero,
+            &at(r(5, 2), r(1, 1)),
+            &half
+        ));
+        assert!(!satisfies_out(
+            &sq2(),
+            &[],
+            &zero,
+            &at(r(23, 10), r(23, 10)),
+            &half
+        ));
     }
 
     #[test]
     fn thin_rectangle_has_no_core() {
-        let p = [[0.0, 0.0], [10.0, 0.0], [10.0, 0.5], [0.0, 0.5]];
+        let p = [pt(0, 0), pt(10, 0), [r(10, 1), r(1, 2)], [r(0, 1), r(1, 2)]];
         assert!(matches!(
-            recovery_in(&p, [5.0, 0.25], 0.3),
+            recovery_in(&p, &[r(5, 1), r(1, 4)], &r(3, 10)),
             Some(ExactRecovery::Impossible)
         ));
     }

@@ -161,12 +161,6 @@ impl Tower {
         }
     }
 
-    /// A float approximation of a (for reports only: no decision reads it).
-    pub fn approx(&self, a: &Elem) -> f64 {
-        let a = self.top(a);
-        self.approx_at(a.level(), &a.0)
-    }
-
     /// a written exactly: rationals `p/q` (`p` when q = 1), a level above as
     /// `u + (w)·√(b)` with u, w and b written the same way, a zero coefficient left out.
     pub fn text(&self, a: &Elem) -> String {
@@ -219,14 +213,9 @@ impl Tower {
         }
     }
 
-    fn approx_at(&self, k: usize, a: &[BigRational]) -> f64 {
-        if k == 0 {
-            return crate::convert::to_float(&a[0]);
-        }
-        let h = 1 << (k - 1);
-        let (u, w) = a.split_at(h);
-        let rad = self.approx_at(k - 1, &self.rads[k - 1].0[..h]).max(0.0);
-        self.approx_at(k - 1, u) + self.approx_at(k - 1, w) * rad.sqrt()
+    /// The radicand b_k (an element of level k).
+    pub fn radicand(&self, k: usize) -> &Elem {
+        &self.rads[k]
     }
 }
 
@@ -287,8 +276,6 @@ mod tests {
         );
         // A negative radicand is refused.
         assert!(t.clone().adjoin(&t.sub(&r6, &t.rat(&q(3)))).is_none());
-        let approx = t.approx(&r);
-        assert!(approx > 3.146 && approx < 3.1463);
     }
 }
 

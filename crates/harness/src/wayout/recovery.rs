@@ -11,10 +11,11 @@ use polyguard::recovery::{
     recovery_in, recovery_in_at, recovery_out, recovery_out_at, Recovery, RecoveryError, REL_TOL,
 };
 use polyguard::Vect2;
-use polyguard_oracle::convert::q;
-use polyguard_oracle::recovery::{self as oracle, ExactRecovery};
+use polyguard_oracle::convert::{q, tower_to_f64};
+use polyguard_oracle::recovery::{self as oracle, ExactMin, ExactRecovery};
 
 use super::polycarp;
+use crate::gen::Source;
 
 /// Which condition.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -55,7 +56,8 @@ pub enum Verdict {
         dist_hi_above: bool,
         /// dist_hi − min_lo ≤ REL_TOL·S (the engine's stated tolerance).
         gap_within: bool,
-        /// The engine said s was clear, and so it is (or neither).
+        /// The engine said s was clear only if it is (a certified flag: s may be clear
+        /// without the engine saying so, on ∂P with D = 0).
         clear_agrees: bool,
     },
     /// Both say the feasible set is empty.
@@ -85,8 +87,24 @@ impl Verdict {
     }
 }
 
-fn arr(p: &[Vect2]) -> Vec<[f64; 2]> {
-    p.iter().map(|v| [v.x, v.y]).collect()
+/// Exact points of f64 vectors (finite inputs: non-finite ones become `None`).
+fn arr(p: &[Vect2]) -> Option<Vec<oracle::Point>> {
+    p.iter().map(|v| pt(*v)).collect()
+}
+
+fn pt(v: Vect2) -> Option<oracle::Point> {
+    Some([q(v.x)?, q(v.y)?])
+}
+
+/// The exact minimum m of an [`ExactMin`] about as the nearest f64 (for reports).
+pub fn min_to_f64(m: &ExactMin) -> f64 {
+    if m.zero {
+        return 0.0;
+    }
+    m.cands
+        .iter()
+        .map(|(t, d2)| tower_to_f64(t, d2).max(0.0).sqrt())
+        .fold(f64::INFINITY, f64::min)
 }
 
 /// The engine's answer to the query.
@@ -101,21 +119,25 @@ pub fn engine(qy: &Query) -> Result<Recovery, RecoveryError> {
 
 /// The oracle's exact answer (`None` for a non-finite input).
 pub fn exact(qy: &Query) -> Option<ExactRecovery> {
-    let (p, v, s) = (arr(&qy.p), arr(&qy.vels), [qy.s.x, qy.s.y]);
+    let (p, v, s, t, d) = (arr(&qy.p)?, arr(&qy.vels)?, pt(qy.s)?, q(qy.t)?, q(qy.d)?);
     match (qy.side, qy.vels.is_empty()) {
-        (Side::Out, true) => oracle::recovery_out(&p, s, qy.d),
-        (Side::In, true) => oracle::recovery_in(&p, s, qy.d),
-        (Side::Out, false) => oracle::recovery_out_at(&p, &v, qy.t, s, qy.d),
-        (Side::In, false) => oracle::recovery_in_at(&p, &v, qy.t, s, qy.d),
+        (Side::Out, true) => oracle::recovery_out(&p, &s, &d),
+        (Side::In, true) => oracle::recovery_in(&p, &s, &d),
+        (Side::Out, false) => oracle::recovery_out_at(&p, &v, &t, &s, &d),
+        (Side::In, false) => oracle::recovery_in_at(&p, &v, &t, &s, &d),
     }
 }
 
-/// Does x meet the query's condition, exactly?
+/// Does x meet the query's condition, exactly? (False for non-finite inputs.)
 pub fn meets(qy: &Query, x: Vect2) -> bool {
-    let (p, v) = (arr(&qy.p), arr(&qy.vels));
+    let (Some(p), Some(v), Some(x), Some(t), Some(d)) =
+        (arr(&qy.p), arr(&qy.vels), pt(x), q(qy.t), q(qy.d))
+    else {
+        return false;
+    };
     match qy.side {
-        Side::Out => oracle::satisfies_out(&p, &v, qy.t, [x.x, x.y], qy.d),
-        Side::In => oracle::satisfies_in(&p, &v, qy.t, [x.x, x.y], qy.d),
+        Side::Out => oracle::satisfies_out(&p, &v, &t, &x, &d),
+        Side::In => oracle::satisfies_in(&p, &v, &t, &x, &d),
     }
 }
 
@@ -166,7 +188,7 @@ pub fn check_engine(qy: &Query) -> Verdict {
                 min_lo_below: m.cmp_rational(&lo) != Ordering::Less,
                 dist_hi_above: &ex * &ex + &ey * &ey <= &hi * &hi,
                 gap_within: dist_hi - min_lo <= REL_TOL * scale(qy),
-                clear_agrees: clear == m.zero,
+                clear_agrees: !clear || m.zero,
             }
         }
     }
@@ -209,7 +231,7 @@ pub fn polycarp_report(qy: &Query, buff: f64) -> PolycarpReport {
         ..qy.clone()
     };
     let min = match exact(&stat) {
-        Some(ExactRecovery::Min(m)) => Some(m.approx()),
+        Some(ExactRecovery::Min(m)) => Some(min_to_f64(&m)),
         _ => None,
     };
     PolycarpReport {
@@ -219,6 +241,51 @@ pub fn polycarp_report(qy: &Query, buff: f64) -> PolycarpReport {
         meets: meets(&stat, x),
         dist: (x - qy.s).sq().sqrt(),
         min,
+    }
+}
+
+/// Draws one query for a hunt: a star-shaped counterclockwise polygon of 3 to 9 vertices
+/// (angles less than π apart about an inside centre, radii in [0.3, 3)), static or warping
+/// slightly (vertex speeds below 0.03, t in [0, 3)), s on or near a vertex or an edge, or
+/// anywhere about the polygon, D among a few sizes, either side.
+pub fn draw_query<S: Source>(src: &mut S) -> Query {
+    let n = 3 + src.below(7);
+    let spread = if n == 3 { 0.3 } else { 0.8 };
+    let (cx, cy) = (src.range(-2.0, 2.0), src.range(-2.0, 2.0));
+    let p: Vec<Vect2> = (0..n)
+        .map(|i| {
+            let a = (i as f64 + (1.0 - spread) / 2.0 + spread * src.unit()) * std::f64::consts::TAU
+                / n as f64;
+            let r = src.range(0.3, 3.0);
+            Vect2::new(cx + r * a.cos(), cy + r * a.sin())
+        })
+        .collect();
+    let moving = src.coin();
+    let vels = if moving {
+        (0..n)
+            .map(|_| Vect2::new(src.range(-0.03, 0.03), src.range(-0.03, 0.03)))
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let t = if moving { src.range(0.0, 3.0) } else { 0.0 };
+    let k = src.below(n);
+    let (a, b) = (p[k], p[(k + 1) % n]);
+    let s = match src.below(3) {
+        0 => a,
+        1 => {
+            let e = b - a;
+            a + e.scale(src.pick(&[0.25, 0.5])) + e.perp().scale(src.pick(&[0.0, 0.1, -0.1]))
+        }
+        _ => Vect2::new(cx + src.range(-4.0, 4.0), cy + src.range(-4.0, 4.0)),
+    };
+    Query {
+        p,
+        vels,
+        t,
+        s,
+        d: src.pick(&[0.0, 0.05, 0.3, 1.0]),
+        side: if src.coin() { Side::Out } else { Side::In },
     }
 }
 
@@ -258,6 +325,23 @@ mod tests {
             s,
             d,
             side,
+        }
+    }
+
+    /// A short hunt: drawn queries, every engine answer sound, within its tolerance when
+    /// a point, and no refusal but the documented near-degenerate one.
+    #[test]
+    fn drawn_queries_are_sound() {
+        let mut src = crate::gen::SplitMix(7);
+        for _ in 0..24 {
+            let qy = draw_query(&mut src);
+            let verdict = check_engine(&qy);
+            assert!(verdict.sound(), "{qy:?}: {verdict:?}");
+            match verdict {
+                Verdict::Point { gap_within, .. } => assert!(gap_within, "{qy:?}"),
+                Verdict::Refused(e) => assert_eq!(e, RecoveryError::Uncertified, "{qy:?}"),
+                _ => {}
+            }
         }
     }
 

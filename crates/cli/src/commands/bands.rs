@@ -61,7 +61,7 @@ pub fn run(args: &BandsArgs) -> ExitCode {
     }
     let status = run_lines("bands", Command::Bands, &args.file, &ask);
     if let (Some(out), Some(file)) = (&args.svg, file) {
-        if let Err(e) = super::bands_svg::write(file, args.svg_case.as_deref(), &ask, out) {
+        if let Err(e) = super::wayout_svg::write_bands(file, args.svg_case.as_deref(), &ask, out) {
             eprintln!("polyguard bands: --svg: {e}");
             return ExitCode::from(2);
         }

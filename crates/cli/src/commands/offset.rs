@@ -30,6 +30,14 @@ pub struct OffsetArgs {
     /// The inset (the polygon shrunk by D) instead of the offset.
     #[arg(long)]
     pub inset: bool,
+    /// Also draw one case's result into this SVG file (the first valid case, or
+    /// `--svg-case`), an offset beside a PolyCARP-style bisector expansion and the points
+    /// of the true buffer it leaves out; needs FILE, not standard input.
+    #[arg(long, value_name = "OUT.svg")]
+    pub svg: Option<PathBuf>,
+    /// The id of the case to draw with `--svg`.
+    #[arg(long, value_name = "ID", requires = "svg")]
+    pub svg_case: Option<String>,
 }
 
 /// Runs `polyguard offset`.
@@ -40,5 +48,20 @@ pub fn run(args: &OffsetArgs) -> ExitCode {
         inset: args.inset,
         ..Ask::default()
     };
-    run_lines("offset", Command::Offset, &args.file, &ask)
+    let file = args
+        .file
+        .as_deref()
+        .filter(|f| *f != std::path::Path::new("-"));
+    if args.svg.is_some() && file.is_none() {
+        eprintln!("polyguard offset: --svg needs a case FILE (standard input is read once)");
+        return ExitCode::from(2);
+    }
+    let status = run_lines("offset", Command::Offset, &args.file, &ask);
+    if let (Some(out), Some(file)) = (&args.svg, file) {
+        if let Err(e) = super::wayout_svg::write_offset(file, args.svg_case.as_deref(), &ask, out) {
+            eprintln!("polyguard offset: --svg: {e}");
+            return ExitCode::from(2);
+        }
+    }
+    status
 }

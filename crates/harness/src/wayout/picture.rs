@@ -342,6 +342,115 @@ pub fn compass_svg(c: &Compass) -> String {
     out
 }
 
+/// What the offset picture shows: P, its certified offset (or inset), and for an offset
+/// a bisector expansion beside it with the points of the true buffer it leaves out.
+#[derive(Clone, Debug)]
+pub struct OffsetPicture<'a> {
+    /// The title, e.g. the case id.
+    pub title: &'a str,
+    /// The polygon P (at the case's time).
+    pub p: &'a [Vect2],
+    /// D.
+    pub d: f64,
+    /// The certified result.
+    pub offset: &'a Offset,
+    /// An inset rather than an offset.
+    pub inset: bool,
+    /// A PolyCARP-style bisector expansion of P by D, for comparison.
+    pub bisector: Option<&'a [Vect2]>,
+    /// Points at distance D from P that the bisector expansion leaves outside.
+    pub missed: &'a [Vect2],
+}
+
+/// The SVG of an offset picture: north up, one scale, P filled, the certified result
+/// outlined in blue, the bisector expansion dashed orange, its missed points red.
+pub fn offset_svg(o: &OffsetPicture) -> String {
+    let mut pts: Vec<Vect2> = o.p.to_vec();
+    for r in &o.offset.regions {
+        pts.extend(&r.outer);
+    }
+    if let Some(b) = o.bisector {
+        pts.extend(b);
+    }
+    let (mut lo, mut hi) = (pts[0], pts[0]);
+    for q in &pts {
+        lo = Vect2::new(lo.x.min(q.x), lo.y.min(q.y));
+        hi = Vect2::new(hi.x.max(q.x), hi.y.max(q.y));
+    }
+    let half = ((hi.x - lo.x).max(hi.y - lo.y) / 2.0).max(f64::MIN_POSITIVE);
+    let m = Map {
+        s: Vect2::new((lo.x + hi.x) / 2.0, (lo.y + hi.y) / 2.0),
+        k: (MAP.2 / 2.0 - 10.0) / (half * 1.05),
+        cx: MAP.0 + MAP.2 / 2.0,
+        cy: MAP.1 + MAP.2 / 2.0,
+    };
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        r##"<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{H}" viewBox="0 0 {W} {H}">"##
+    );
+    let _ = writeln!(out, r##"<rect width="{W}" height="{H}" fill="white"/>"##);
+    let _ = writeln!(
+        out,
+        r##"<text x="{}" y="40" font-size="18" text-anchor="middle" font-family="sans-serif">{}</text>"##,
+        W / 2.0,
+        esc(o.title)
+    );
+    for r in &o.offset.regions {
+        let mut d = ring_path(&m, &r.outer);
+        for h in &r.holes {
+            d.push(' ');
+            d.push_str(&ring_path(&m, h));
+        }
+        let _ = writeln!(
+            out,
+            r##"<path d="{d}" fill="#4a7fc1" fill-opacity="0.15" stroke="#1f4e8c" stroke-width="1.5" fill-rule="evenodd"/>"##
+        );
+    }
+    let _ = writeln!(
+        out,
+        r##"<path d="{}" fill="#5a6f86" fill-opacity="0.6" stroke="#2d3a48" stroke-width="1.5"/>"##,
+        ring_path(&m, o.p)
+    );
+    if let Some(b) = o.bisector {
+        let _ = writeln!(
+            out,
+            r##"<path d="{}" fill="none" stroke="#e07b00" stroke-width="2" stroke-dasharray="7 4"/>"##,
+            ring_path(&m, b)
+        );
+    }
+    for &q in o.missed {
+        let (x, y) = m.px(q);
+        let _ = writeln!(
+            out,
+            r##"<circle cx="{x:.2}" cy="{y:.2}" r="2.5" fill="{CONFLICT}"/>"##
+        );
+    }
+    let y = MAP.1 + MAP.2 + 30.0;
+    let what = if o.inset { "inset" } else { "offset" };
+    let mut lines = vec![format!(
+        "filled: P; blue: the certified {what} by D = {}",
+        short(o.d)
+    )];
+    if o.bisector.is_some() {
+        lines.push("dashed orange: a PolyCARP-style bisector expansion by D".to_string());
+        lines.push(format!(
+            "red: {} sampled points within D of P that the bisector expansion leaves out",
+            o.missed.len()
+        ));
+    }
+    for (i, line) in lines.iter().enumerate() {
+        let _ = writeln!(
+            out,
+            r##"<text x="50" y="{:.1}" font-size="13" font-family="sans-serif">{}</text>"##,
+            y + 19.0 * i as f64,
+            line
+        );
+    }
+    out.push_str("</svg>\n");
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -19,6 +19,8 @@
 //!   never allocates memory the caller must free (the batch and `pg_intervals` write
 //!   into the caller's array and say how many items the answer has), but for the text
 //!   of `pg_encounters`, whose length only the answer knows, freed by `pg_free_text`.
+//! - The way out ([`wayout`]): certified course, speed and vertical speed bands,
+//!   recovery points, offsets and insets, into the caller's buffers.
 //! - `pg_encounters` (whole flights against areas, docs/moving-features.md, in
 //!   [`moving`]) may also return `PG_PARTIAL` (> 0): answered, some input rejected.
 //! - On an error, the answer written for a single case is the most conservative one

@@ -339,37 +339,7 @@ unsafe fn bands_call(
         let point = unsafe { deref(point, "point") }?;
         let sep = unsafe { deref(sep, "sep") }?;
         let owned = unsafe { obstacles_of(obstacles) }?;
-        let list: Vec<Obstacle> = (0..owned.p.len())
-            .map(|i| Obstacle {
-                p: &owned.p[i],
-                vels: &owned.vels[i],
-                slab: owned.slabs[i],
-            })
-            .collect();
-        let traffic = Traffic {
-            t: lookahead,
-            s: Vect2::new(point.pos.x, point.pos.y),
-            height: (point.has_z != 0).then_some(Height {
-                sz: point.z,
-                vz: point.vz,
-            }),
-            obstacles: &list,
-            sep: Separation { d: sep.d, h: sep.h },
-        };
-        let answer: Result<Bands, BandsError> = match family {
-            Family::Course { speed } => bands::course_bands(&traffic, speed, unknown_max),
-            Family::Speed { course, min, max } => {
-                bands::speed_bands(&traffic, course, min, max, unknown_max)
-            }
-            Family::Vertical { min, max } => bands::vertical_speed_bands(
-                &traffic,
-                Vect2::new(point.vel.x, point.vel.y),
-                min,
-                max,
-                unknown_max,
-            ),
-        };
-        let answer = answer.map_err(|e| bands_failure(&e))?;
+        let answer = engine_bands(point, sep, &owned, lookahead, family, unknown_max)?;
         write_bands(&answer.bands, out, cap);
         *info = PgBandsInfo {
             count: answer.bands.len(),
@@ -389,6 +359,48 @@ unsafe fn bands_call(
         }
         Ok(())
     })
+}
+
+/// The engine's bands (`polyguard::bands`) for the C point, separation and obstacles.
+fn engine_bands(
+    point: &PgPoint,
+    sep: &PgSeparation,
+    owned: &Owned,
+    lookahead: f64,
+    family: Family,
+    unknown_max: f64,
+) -> Result<Bands, Failure> {
+    let list: Vec<Obstacle> = (0..owned.p.len())
+        .map(|i| Obstacle {
+            p: &owned.p[i],
+            vels: &owned.vels[i],
+            slab: owned.slabs[i],
+        })
+        .collect();
+    let traffic = Traffic {
+        t: lookahead,
+        s: Vect2::new(point.pos.x, point.pos.y),
+        height: (point.has_z != 0).then_some(Height {
+            sz: point.z,
+            vz: point.vz,
+        }),
+        obstacles: &list,
+        sep: Separation { d: sep.d, h: sep.h },
+    };
+    let answer: Result<Bands, BandsError> = match family {
+        Family::Course { speed } => bands::course_bands(&traffic, speed, unknown_max),
+        Family::Speed { course, min, max } => {
+            bands::speed_bands(&traffic, course, min, max, unknown_max)
+        }
+        Family::Vertical { min, max } => bands::vertical_speed_bands(
+            &traffic,
+            Vect2::new(point.vel.x, point.vel.y),
+            min,
+            max,
+            unknown_max,
+        ),
+    };
+    answer.map_err(|e| bands_failure(&e))
 }
 
 /// Writes the first `cap` bands into `out`.

@@ -115,6 +115,9 @@ fn bands_field(engine: &str, unknown_max: &str) -> String {
     if let Some(f) = fixed {
         return f.into();
     }
+    if let Some(obstacle) = engine.strip_suffix(".slab") {
+        return format!("{obstacle}.bottom");
+    }
     engine
         .replacen(".p", ".vertices", 1)
         .replacen(".vels", ".velocities", 1)

@@ -891,7 +891,10 @@ static void test_wayout(void) {
     rc = pg_course_bands(&point, &obstacles, 10.0, &sep, 1.0, 0.01, small, 2, &info2);
     CHECK(rc == PG_ERR_CAPACITY, "%s", pg_status_name(rc));
     CHECK(info2.count == info.count, "the count %u", (unsigned)info2.count);
-    CHECK(memcmp(small, bands, sizeof small) == 0, "the first two bands");
+    for (k = 0; k < 2; k++) /* field by field: the structs' padding is not written */
+        CHECK(small[k].lo == bands[k].lo && small[k].hi == bands[k].hi &&
+                  small[k].kind == bands[k].kind,
+              "band %u of the small buffer", (unsigned)k);
     rc = pg_course_bands(&point, &obstacles, 10.0, &sep, -1.0, 0.01, small, 2, &info2);
     expect_error(rc, PG_ERR_BAD_PARAMETER, "speed", "a negative speed");
     CHECK(info2.count == 1 && small[0].kind == PG_BAND_UNKNOWN, "the conservative band");

@@ -35,13 +35,18 @@ struct Owned {
     slab: Option<Slab>,
 }
 
-/// A mapping's optional member (`mapping.get(key)`; None when absent or None).
-fn member<'py>(obj: &Bound<'py, PyAny>, key: &str) -> PyResult<Option<Bound<'py, PyAny>>> {
+/// A mapping's optional member (`mapping.get(key)`; None when absent or None); an
+/// object without `get` is `polyguard.Error` naming `field` (the obstacle).
+fn member<'py>(
+    obj: &Bound<'py, PyAny>,
+    key: &str,
+    field: &str,
+) -> PyResult<Option<Bound<'py, PyAny>>> {
     let v = obj.call_method1("get", (key,)).map_err(|_| {
         crate::error(
             obj.py(),
-            key,
-            &format!("{key}: the obstacle is not a mapping with `vertices`"),
+            field,
+            &format!("{field}: not a mapping with `vertices` (a polygon object)"),
         )
     })?;
     Ok((!v.is_none()).then_some(v))
@@ -57,7 +62,8 @@ fn obstacles_of(py: Python<'_>, obj: &Bound<'_, PyAny>) -> PyResult<Vec<Owned>> 
     for (i, item) in iter.enumerate() {
         let item = item?;
         let name = |f: &str| format!("obstacles[{i}].{f}");
-        let vertices = member(&item, "vertices")?.ok_or_else(|| {
+        let whole = format!("obstacles[{i}]");
+        let vertices = member(&item, "vertices", &whole)?.ok_or_else(|| {
             crate::error(
                 py,
                 &name("vertices"),
@@ -65,14 +71,14 @@ fn obstacles_of(py: Python<'_>, obj: &Bound<'_, PyAny>) -> PyResult<Vec<Owned>> 
             )
         })?;
         let p = pairs(&vertices, &name("vertices")).map_err(|e| read_error(py, &e))?;
-        let vels = match member(&item, "velocities")? {
+        let vels = match member(&item, "velocities", &whole)? {
             Some(v) => pairs(&v, &name("velocities")).map_err(|e| read_error(py, &e))?,
             None => vec![[0.0, 0.0]; p.len()],
         };
         let slab = [
-            member(&item, "bottom")?,
-            member(&item, "top")?,
-            member(&item, "vz")?,
+            member(&item, "bottom", &whole)?,
+            member(&item, "top", &whole)?,
+            member(&item, "vz", &whole)?,
         ];
         let slab = match slab {
             [None, None, None] => None,

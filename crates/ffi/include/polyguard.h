@@ -14,6 +14,12 @@
  * or breaching a keep-in fence; pg_detect_exit says whether it leaves a keep-in fence,
  * never "no" when it does.
  *
+ * The way out (docs/ffi.md): pg_course_bands, pg_speed_bands and
+ * pg_vertical_speed_bands split courses or speeds into certified clear and conflict
+ * bands; pg_recovery gives the nearest point out of (or into) a polygon's separation;
+ * pg_offset and pg_inset certified grown and shrunk polygons. An answer the engine
+ * cannot certify is PG_ERR_UNCERTIFIED, never an uncertified answer.
+ *
  * Rules of every function:
  *  - It returns an int status: PG_OK (0) or a negative PG_ERR_* code, and keeps a
  *    message naming the field ("polygon.vertices: clockwise order ...") that
@@ -23,8 +29,9 @@
  *    PG_ERR_PANIC. (Memory exhaustion aborts the process, as in Rust.)
  *  - Ownership: the caller owns every array. The library reads them during the call
  *    only, keeps no pointer, and never returns memory the caller must free: results are
- *    written through the caller's out-pointers (pg_detect_batch and pg_intervals into
- *    a caller-allocated array of capacity cap, see there). The one exception is the
+ *    written through the caller's out-pointers (pg_detect_batch, pg_intervals, the
+ *    bands, pg_offset and pg_inset into caller-allocated arrays of capacity cap, see
+ *    there). The one exception is the
  *    text of pg_encounters (whole flights against areas, docs/moving-features.md),
  *    which the library allocates and pg_free_text frees; pg_encounters may also
  *    return PG_PARTIAL (1): answered, but some input was rejected. Array pointers may

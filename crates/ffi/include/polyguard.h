@@ -14,6 +14,12 @@
  * or breaching a keep-in fence; pg_detect_exit says whether it leaves a keep-in fence,
  * never "no" when it does.
  *
+ * The way out (docs/ffi.md): pg_course_bands, pg_speed_bands and
+ * pg_vertical_speed_bands split courses or speeds into certified clear and conflict
+ * bands; pg_recovery gives the nearest point out of (or into) a polygon's separation;
+ * pg_offset and pg_inset certified grown and shrunk polygons. An answer the engine
+ * cannot certify is PG_ERR_UNCERTIFIED, never an uncertified answer.
+ *
  * Rules of every function:
  *  - It returns an int status: PG_OK (0) or a negative PG_ERR_* code, and keeps a
  *    message naming the field ("polygon.vertices: clockwise order ...") that
@@ -23,8 +29,9 @@
  *    PG_ERR_PANIC. (Memory exhaustion aborts the process, as in Rust.)
  *  - Ownership: the caller owns every array. The library reads them during the call
  *    only, keeps no pointer, and never returns memory the caller must free: results are
- *    written through the caller's out-pointers (pg_detect_batch and pg_intervals into
- *    a caller-allocated array of capacity cap, see there). The one exception is the
+ *    written through the caller's out-pointers (pg_detect_batch, pg_intervals, the
+ *    bands, pg_offset and pg_inset into caller-allocated arrays of capacity cap, see
+ *    there). The one exception is the
  *    text of pg_encounters (whole flights against areas, docs/moving-features.md),
  *    which the library allocates and pg_free_text frees; pg_encounters may also
  *    return PG_PARTIAL (1): answered, but some input was rejected. Array pointers may
@@ -157,6 +164,36 @@
 
 // `pg_encounter_options.geodesy`: the WGS84 ellipsoid.
 #define PG_GEODESY_WGS84 1
+
+// The engine could not certify an answer (a near-degenerate input within rounding, or
+// an offset's rounding too coarse for D·ε at this scale): no answer is given rather
+// than an uncertified one.
+#define PG_ERR_UNCERTIFIED -16
+
+// `pg_band.kind`: no value of the band is in conflict (certified).
+#define PG_BAND_CLEAR 0
+
+// `pg_band.kind`: every value of the band is in conflict (certified).
+#define PG_BAND_CONFLICT 1
+
+// `pg_band.kind`: not decided.
+#define PG_BAND_UNKNOWN 2
+
+// `pg_recovery`'s fence: out of the polygon's D-neighbourhood (recovery_out).
+#define PG_FENCE_KEEP_OUT 0
+
+// `pg_recovery`'s fence: into the polygon's D-core (recovery_in).
+#define PG_FENCE_KEEP_IN 1
+
+// `pg_recovery_point.kind`: no answer (written on an error).
+#define PG_RECOVERY_NONE -1
+
+// `pg_recovery_point.kind`: a certified recovery point.
+#define PG_RECOVERY_POINT 0
+
+// `pg_recovery_point.kind`: no point of the polygon is D from its boundary (its
+// inradius is below D; keep-in only), certified.
+#define PG_RECOVERY_IMPOSSIBLE 1
 
 // The case's parameters: the lookahead T (> 0), BUFF (> 0, paper A §II.A), F (in
 // (0, 1), §II.I) and the corner angle κ in degrees (in (0, 180), §II.J).
@@ -322,6 +359,64 @@ typedef struct pg_encounter_options {
   // `PG_GEODESY_SPHERE` or `PG_GEODESY_WGS84`.
   int geodesy;
 } pg_encounter_options;
+
+// One closed band [lo, hi] of a band answer (course in radians clockwise from +y,
+// speed, or vertical speed) and what is certified on it.
+typedef struct pg_band {
+  // The low end.
+  double lo;
+  // The high end.
+  double hi;
+  // `PG_BAND_CLEAR`, `PG_BAND_CONFLICT` or `PG_BAND_UNKNOWN`.
+  int kind;
+} pg_band;
+
+// The summary of a band answer.
+typedef struct pg_bands_info {
+  // The number of bands of the whole answer (written even when the buffer is too
+  // small).
+  size_t count;
+  // The total width of the Unknown bands.
+  double unknown_total;
+  // 1 when `unknown_total ≤ unknown_max` was reached, else 0.
+  int met;
+} pg_bands_info;
+
+// The answer of `pg_recovery`.
+typedef struct pg_recovery_point {
+  // `PG_RECOVERY_POINT`, `PG_RECOVERY_IMPOSSIBLE` or `PG_RECOVERY_NONE` (an error).
+  int kind;
+  // The point: it satisfies its condition for the exact inputs (NaN otherwise).
+  struct pg_vec2 x;
+  // A certified upper bound of |x − s|.
+  double dist_hi;
+  // A certified lower bound of the exact minimum distance.
+  double min_lo;
+  // 1 when s itself satisfies the condition (then x = s).
+  int clear;
+} pg_recovery_point;
+
+// One ring of `pg_offset` / `pg_inset`: `n` vertices from `vertices[first]`.
+typedef struct pg_ring {
+  // The index of its first vertex in the vertex buffer.
+  size_t first;
+  // Its number of vertices.
+  size_t n;
+  // The region it belongs to (0, 1, …).
+  size_t region;
+  // 0: the region's outer ring (counterclockwise); 1: a hole (clockwise).
+  int hole;
+} pg_ring;
+
+// The sizes of an offset or inset answer (written even when a buffer is too small).
+typedef struct pg_shape_info {
+  // The regions (0 for an empty inset).
+  size_t regions;
+  // The rings: each region's outer ring then its holes.
+  size_t rings;
+  // The vertices of all rings.
+  size_t vertices;
+} pg_shape_info;
 
 #ifdef __cplusplus
 extern "C" {
@@ -535,6 +630,153 @@ int pg_encounters(const char *movers,
 // # Safety
 // `text` is NULL or a pointer `pg_encounters` wrote into `*out`, not yet freed.
 void pg_free_text(char *text);
+
+// Course bands over [0, 2π) at `speed` for the point `point->pos` (in 3D with
+// `point->z`, `point->vz` when `point->has_z`) among the moving polygons `obstacles`
+// (`pg_detect_batch`'s flat arrays; a polygon needs no particular order here, and a
+// slab only with a 3D point) over [0, `lookahead`], separation D = `sep->d` (and
+// H = `sep->h` in 3D). The engine's `polyguard::bands::course_bands` (definitions and
+// certificate in its module doc; paper A §II–§III's motion and near_D): courses in
+// radians clockwise from +y ("north"), velocity speed·(sin θ, cos θ); the bands tile
+// [0, fl(2π)] in order, each `PG_BAND_CLEAR` (no course in it loses separation),
+// `PG_BAND_CONFLICT` (every course does) or `PG_BAND_UNKNOWN`, whose total width is
+// refined towards `unknown_max` (> 0); `point->vel` is not used.
+//
+// The buffer: at most `cap` bands are written to `out` (NULL allowed when `cap` is 0);
+// `info` receives the number of bands of the whole answer, the Unknown total and
+// `met`. When the count exceeds `cap`, the first `cap` bands are written and the status
+// is `PG_ERR_CAPACITY`: call again with `cap >= info->count`.
+//
+// Returns `PG_OK`, `PG_ERR_CAPACITY`, or another `PG_ERR_*` code with a message naming
+// the field (`lookahead`, `speed`, `unknown_max`, `sep.d`,
+// `obstacles[1].vertices[2][0]`, `obstacles.offsets[2]`); on those `info->count` is 1
+// and `out[0]` (when `cap` ≥ 1) is one Unknown band over the whole range, so that an
+// unchecked status never reads "clear".
+//
+// # Safety
+// Each pointer is NULL or valid for the call; `obstacles`' arrays as for
+// `pg_detect_batch`; `out` has room for `cap` bands. Nothing is kept.
+int pg_course_bands(const struct pg_point *point,
+                    const struct pg_polygons *obstacles,
+                    double lookahead,
+                    const struct pg_separation *sep,
+                    double speed,
+                    double unknown_max,
+                    struct pg_band *out,
+                    size_t cap,
+                    struct pg_bands_info *info);
+
+// Speed bands over [`min`, `max`] (0 ≤ min ≤ max) at the fixed `course` (radians
+// clockwise from +y): `pg_course_bands` with the speed varied (the engine's
+// `polyguard::bands::speed_bands`); the same buffer protocol, statuses and
+// conservative answer (one Unknown band [min, max]).
+//
+// # Safety
+// As `pg_course_bands`.
+int pg_speed_bands(const struct pg_point *point,
+                   const struct pg_polygons *obstacles,
+                   double lookahead,
+                   const struct pg_separation *sep,
+                   double course,
+                   double min,
+                   double max,
+                   double unknown_max,
+                   struct pg_band *out,
+                   size_t cap,
+                   struct pg_bands_info *info);
+
+// Vertical speed bands over [`min`, `max`] with the horizontal velocity `point->vel`
+// fixed (3D: `point->has_z` is required; the engine's
+// `polyguard::bands::vertical_speed_bands`); the same buffer protocol, statuses and
+// conservative answer as `pg_course_bands`.
+//
+// # Safety
+// As `pg_course_bands`.
+int pg_vertical_speed_bands(const struct pg_point *point,
+                            const struct pg_polygons *obstacles,
+                            double lookahead,
+                            const struct pg_separation *sep,
+                            double min,
+                            double max,
+                            double unknown_max,
+                            struct pg_band *out,
+                            size_t cap,
+                            struct pg_bands_info *info);
+
+// The recovery point of `s` for the polygon `polygon` at time `t` (its slab is not
+// used): with `fence == PG_FENCE_KEEP_OUT` the nearest x with dist(x, P(t)) ≥ `sep`,
+// with `PG_FENCE_KEEP_IN` the nearest x ∈ P(t) with dist(x, ∂P(t)) ≥ `sep` (the
+// engine's `polyguard::recovery::recovery_out` / `recovery_in`, their `_at` forms when
+// `polygon->velocities` is not NULL; paper A §II's polygon, §II.G's distance, §II–§III's
+// motion).
+//
+// `out->kind` is `PG_RECOVERY_POINT` with x certified to satisfy its condition,
+// min_lo ≤ (the exact minimum) ≤ |x − s| ≤ dist_hi (the gap within the engine's
+// `REL_TOL` times the problem's scale), and `clear` 1 when s itself satisfies it (then
+// x = s); or `PG_RECOVERY_IMPOSSIBLE` (keep-in only, certified: the polygon's inradius
+// is below `sep`), an answer, not an error.
+//
+// Returns `PG_OK`, or a `PG_ERR_*` code with a message naming the field
+// (`polygon.vertices`, `s`, `t`, `sep`, `fence`); `PG_ERR_CLOCKWISE` when the vertices
+// are not certainly counterclockwise, `PG_ERR_UNCERTIFIED` when no candidate could be
+// certified. On those `*out` has kind `PG_RECOVERY_NONE` and NaN numbers.
+//
+// # Safety
+// `polygon` as for `pg_detect`; `out` NULL or valid. Nothing is kept.
+int pg_recovery(const struct pg_polygon *polygon,
+                double t,
+                struct pg_vec2 s,
+                double sep,
+                int fence,
+                struct pg_recovery_point *out);
+
+// The certified offset of the polygon at time `t` by `d` within relative tolerance
+// `eps`: regions Q with P ⊕ disc(d) ⊆ Q ⊆ P ⊕ disc(d·(1 + eps)) (the engine's
+// `polyguard::offset::offset`, `offset_at` when `polygon->velocities` is not NULL;
+// paper A §II's polygon; definitions in its module doc). The slab is not used.
+//
+// The answer: `info` receives the numbers of regions, rings and vertices. Ring k is
+// `rings[k]`: its vertices `vertices[rings[k].first] … [first + n − 1]`, its region,
+// and whether it is the region's outer ring (counterclockwise, listed first) or a hole
+// (clockwise). When `ring_cap` or `vertex_cap` is too small, nothing is written but
+// `info`, and the status is `PG_ERR_CAPACITY`: call again with `ring_cap >=
+// info->rings` and `vertex_cap >= info->vertices` (caps of 0 ask for the sizes alone).
+//
+// Returns `PG_OK`, `PG_ERR_CAPACITY`, or another `PG_ERR_*` code with a message naming
+// the field (`polygon.vertices`, `t`, `d`, `eps`); `PG_ERR_UNCERTIFIED` when the
+// result failed its certificate (no polygon rather than a wrong one). On those `info`
+// is all zeros.
+//
+// # Safety
+// `polygon` as for `pg_detect`; `rings`, `vertices` have room for their caps; `info`
+// NULL or valid. Nothing is kept.
+int pg_offset(const struct pg_polygon *polygon,
+              double t,
+              double d,
+              double eps,
+              struct pg_ring *rings,
+              size_t ring_cap,
+              struct pg_vec2 *vertices,
+              size_t vertex_cap,
+              struct pg_shape_info *info);
+
+// The certified inset of the polygon at time `t` by `d`: pieces Q with
+// Q ⊆ {x ∈ P : dist(x, ∂P) ≥ d} and Q ⊇ {x ∈ P : dist(x, ∂P) ≥ d·(1 + eps)}, maybe
+// several regions, maybe none (`info->regions` 0: an answer, not an error). The
+// engine's `polyguard::offset::inset` (`inset_at` with velocities); the buffers,
+// statuses and fields as `pg_offset`.
+//
+// # Safety
+// As `pg_offset`.
+int pg_inset(const struct pg_polygon *polygon,
+             double t,
+             double d,
+             double eps,
+             struct pg_ring *rings,
+             size_t ring_cap,
+             struct pg_vec2 *vertices,
+             size_t vertex_cap,
+             struct pg_shape_info *info);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -19,6 +19,8 @@
 //!   never allocates memory the caller must free (the batch and `pg_intervals` write
 //!   into the caller's array and say how many items the answer has), but for the text
 //!   of `pg_encounters`, whose length only the answer knows, freed by `pg_free_text`.
+//! - The way out ([`wayout`]): certified course, speed and vertical speed bands,
+//!   recovery points, offsets and insets, into the caller's buffers.
 //! - `pg_encounters` (whole flights against areas, docs/moving-features.md, in
 //!   [`moving`]) may also return `PG_PARTIAL` (> 0): answered, some input rejected.
 //! - On an error, the answer written for a single case is the most conservative one
@@ -38,9 +40,16 @@ use polyguard::well_formed::Fault;
 use polyguard::{Method, Relation, Separation, Span, Vect2};
 
 pub mod moving;
+pub mod wayout;
 pub use moving::{
     pg_encounter_options_default, pg_encounters, pg_free_text, PgEncounterOptions,
     PG_GEODESY_SPHERE, PG_GEODESY_WGS84,
+};
+pub use wayout::{
+    pg_course_bands, pg_inset, pg_offset, pg_recovery, pg_speed_bands, pg_vertical_speed_bands,
+    PgBand, PgBandsInfo, PgRecoveryPoint, PgRing, PgShapeInfo, PG_BAND_CLEAR, PG_BAND_CONFLICT,
+    PG_BAND_UNKNOWN, PG_ERR_UNCERTIFIED, PG_FENCE_KEEP_IN, PG_FENCE_KEEP_OUT,
+    PG_RECOVERY_IMPOSSIBLE, PG_RECOVERY_NONE, PG_RECOVERY_POINT,
 };
 
 /// Success.
@@ -1052,6 +1061,7 @@ pub extern "C" fn pg_status_name(status: c_int) -> *const c_char {
         PG_ERR_INVALID => b"PG_ERR_INVALID\0",
         PG_ERR_UTF8 => b"PG_ERR_UTF8\0",
         PG_ERR_INPUT => b"PG_ERR_INPUT\0",
+        PG_ERR_UNCERTIFIED => b"PG_ERR_UNCERTIFIED\0",
         PG_PARTIAL => b"PG_PARTIAL\0",
         _ => b"unknown\0",
     };
@@ -1151,6 +1161,9 @@ mod tests {
             PG_ERR_CAPACITY,
             PG_ERR_PANIC,
             PG_ERR_INVALID,
+            PG_ERR_UTF8,
+            PG_ERR_INPUT,
+            PG_ERR_UNCERTIFIED,
         ];
         let names: std::collections::HashSet<String> = codes
             .iter()

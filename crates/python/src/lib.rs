@@ -10,6 +10,8 @@
 //!   fences").
 //! - [`earth`]: `conflicts` on a scenario GeoJSON (docs/scenario.md).
 //! - [`moving`]: `encounters` of whole flights with areas (docs/moving-features.md).
+//! - [`wayout`]: the way out: `course_bands`, `speed_bands`, `vertical_speed_bands`,
+//!   `recover`, `offset`, `inset` (certified bands, recovery points and offsets).
 //!
 //! Bad input raises `polyguard.CaseError` (or `polyguard.ScenarioError`), a `ValueError`
 //! whose `field` names the field as the case format spells it.
@@ -25,6 +27,7 @@ pub mod earth;
 pub mod intervals;
 pub mod moving;
 pub mod single;
+pub mod wayout;
 
 create_exception!(
     polyguard,
@@ -110,5 +113,11 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(earth::conflicts, m)?)?;
     m.add_function(wrap_pyfunction!(moving::_encounters_json, m)?)?;
     m.add_function(wrap_pyfunction!(moving::_encounters_columns, m)?)?;
+    m.add_function(wrap_pyfunction!(wayout::course_bands, m)?)?;
+    m.add_function(wrap_pyfunction!(wayout::speed_bands, m)?)?;
+    m.add_function(wrap_pyfunction!(wayout::vertical_speed_bands, m)?)?;
+    m.add_function(wrap_pyfunction!(wayout::recover, m)?)?;
+    m.add_function(wrap_pyfunction!(wayout::offset, m)?)?;
+    m.add_function(wrap_pyfunction!(wayout::inset, m)?)?;
     Ok(())
 }

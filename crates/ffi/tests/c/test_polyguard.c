@@ -19,6 +19,12 @@
  *    FILE (the output of `polyguard encounters` on the same files and options) the text
  *    byte for byte; NULL texts, bad UTF-8, unreadable input, bad options and rejected
  *    rows as statuses.
+ * 6. The way out: pg_course_bands checked course by course with pg_intervals (a course
+ *    inside a clear band has no span of near_D, one inside a conflict band a certain
+ *    span), the buffer protocol with a too-small buffer, speed bands; pg_recovery's
+ *    point at distance >= D by a plain distance in C, an impossible keep-in; pg_offset's
+ *    ring containing points at distance D and its vertices within D(1 + eps), the
+ *    capacity protocol, and pg_inset's empty answer.
  *
  * Exit status 0 when every check passes; each failure is printed.
  */
@@ -28,6 +34,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+/* pi, spelled out: M_PI is not C99 */
+#define M_PI_VALUE 3.14159265358979323846
 
 static int failures = 0;
 static int checks = 0;
@@ -787,6 +796,165 @@ static void test_encounters(const char *cli_path) {
     free(areas);
 }
 
+/* ---- 6. the way out ----------------------------------------------------------- */
+
+/* The distance from x to the segment a b, in plain f64 (a check, not a certificate). */
+static double seg_dist(pg_vec2 x, pg_vec2 a, pg_vec2 b) {
+    double ex = b.x - a.x, ey = b.y - a.y;
+    double u = ((x.x - a.x) * ex + (x.y - a.y) * ey) / (ex * ex + ey * ey);
+    double px, py;
+    if (u < 0.0)
+        u = 0.0;
+    if (u > 1.0)
+        u = 1.0;
+    px = a.x + u * ex - x.x;
+    py = a.y + u * ey - x.y;
+    return sqrt(px * px + py * py);
+}
+
+/* The distance from x to the boundary of the ring. */
+static double ring_dist(pg_vec2 x, const pg_vec2 *v, size_t n) {
+    double best = INFINITY;
+    size_t i;
+    for (i = 0; i < n; i++) {
+        double d = seg_dist(x, v[i], v[(i + 1) % n]);
+        if (d < best)
+            best = d;
+    }
+    return best;
+}
+
+/* Is x strictly inside the ring (crossing parity)? */
+static int ring_inside(pg_vec2 x, const pg_vec2 *v, size_t n) {
+    int in = 0;
+    size_t i;
+    for (i = 0; i < n; i++) {
+        pg_vec2 a = v[i], b = v[(i + 1) % n];
+        if ((a.y > x.y) != (b.y > x.y) && x.x < a.x + (x.y - a.y) * (b.x - a.x) / (b.y - a.y))
+            in = !in;
+    }
+    return in;
+}
+
+static void test_wayout(void) {
+    /* the square [3, 5] x [-1, 1] at rest east of the point, D = 0.5, T = 10, speed 1 */
+    static const pg_vec2 sq[4] = {{3.0, -1.0}, {5.0, -1.0}, {5.0, 1.0}, {3.0, 1.0}};
+    static const size_t offsets[2] = {0, 4};
+    pg_polygons obstacles = {sq, NULL, offsets, 1, NULL};
+    pg_polygon polygon = POLY(sq, NULL, 4);
+    pg_point point = P2(0.0, 0.0, 0.0, 0.0);
+    pg_separation sep = {0.5, 0.0};
+    pg_params params = params_for(10.0, 1.0, 0.0001);
+    pg_band bands[256], small[2];
+    pg_bands_info info, info2;
+    pg_span spans[8];
+    pg_recovery_point rec;
+    pg_ring rings[4];
+    pg_vec2 verts[512];
+    pg_shape_info shape;
+    size_t k, clear = 0, conflict = 0;
+    int rc;
+
+    rc = pg_course_bands(&point, &obstacles, 10.0, &sep, 1.0, 0.01, bands, 256, &info);
+    CHECK(rc == PG_OK, "pg_course_bands: %s %s", pg_status_name(rc), last_message());
+    CHECK(info.count >= 3 && info.count <= 256, "%u bands", (unsigned)info.count);
+    CHECK(info.met == 1 && info.unknown_total <= 0.01, "unknown %g", info.unknown_total);
+    CHECK(bands[0].lo == 0.0 && bands[info.count - 1].hi == 2.0 * M_PI_VALUE, "the tiling");
+    for (k = 0; k < info.count && k < 256; k++) {
+        double mid = 0.5 * (bands[k].lo + bands[k].hi);
+        long n;
+        if (k > 0)
+            CHECK(bands[k].lo == bands[k - 1].hi, "band %u does not start where %u ends",
+                  (unsigned)k, (unsigned)k - 1);
+        if (bands[k].kind == PG_BAND_UNKNOWN)
+            continue;
+        point.vel.x = sin(mid);
+        point.vel.y = cos(mid);
+        n = spans_of(&params, &point, &polygon, PG_RELATION_NEAR, sep, spans, 8);
+        if (bands[k].kind == PG_BAND_CLEAR) {
+            clear++;
+            CHECK(n == 0, "course %.6f in a clear band: %ld spans of near_D", mid, n);
+        } else {
+            conflict++;
+            CHECK(n >= 1 && spans[0].certain == 1,
+                  "course %.6f in a conflict band: no certain span", mid);
+        }
+    }
+    CHECK(clear >= 1 && conflict >= 1, "%u clear, %u conflict bands", (unsigned)clear,
+          (unsigned)conflict);
+    /* east (pi/2) heads into the square */
+    for (k = 0; k < info.count; k++)
+        if (bands[k].lo <= M_PI_VALUE / 2 && M_PI_VALUE / 2 <= bands[k].hi)
+            CHECK(bands[k].kind == PG_BAND_CONFLICT, "east is not in conflict");
+
+    /* a buffer too small: the first two bands, the whole count, PG_ERR_CAPACITY */
+    rc = pg_course_bands(&point, &obstacles, 10.0, &sep, 1.0, 0.01, small, 2, &info2);
+    CHECK(rc == PG_ERR_CAPACITY, "%s", pg_status_name(rc));
+    CHECK(info2.count == info.count, "the count %u", (unsigned)info2.count);
+    for (k = 0; k < 2; k++) /* field by field: the structs' padding is not written */
+        CHECK(small[k].lo == bands[k].lo && small[k].hi == bands[k].hi &&
+                  small[k].kind == bands[k].kind,
+              "band %u of the small buffer", (unsigned)k);
+    rc = pg_course_bands(&point, &obstacles, 10.0, &sep, -1.0, 0.01, small, 2, &info2);
+    expect_error(rc, PG_ERR_BAD_PARAMETER, "speed", "a negative speed");
+    CHECK(info2.count == 1 && small[0].kind == PG_BAND_UNKNOWN, "the conservative band");
+
+    /* speed bands due east over [0, 2]: speed 0 never moves (clear: 3 - 0.5 away) */
+    rc = pg_speed_bands(&point, &obstacles, 10.0, &sep, M_PI_VALUE / 2, 0.0, 2.0, 0.01, bands,
+                        256, &info);
+    CHECK(rc == PG_OK, "pg_speed_bands: %s %s", pg_status_name(rc), last_message());
+    CHECK(bands[0].lo == 0.0 && bands[0].kind == PG_BAND_CLEAR, "speed 0 is clear");
+    CHECK(bands[info.count - 1].hi == 2.0 && bands[info.count - 1].kind == PG_BAND_CONFLICT,
+          "speed 2 east is in conflict");
+
+    /* recovery: from inside the buffer out to D, by a plain distance */
+    {
+        pg_vec2 s = {2.8, 0.3};
+        rc = pg_recovery(&polygon, 0.0, s, 0.5, PG_FENCE_KEEP_OUT, &rec);
+        CHECK(rc == PG_OK && rec.kind == PG_RECOVERY_POINT, "%s", pg_status_name(rc));
+        CHECK(ring_dist(rec.x, sq, 4) >= 0.5 && !ring_inside(rec.x, sq, 4),
+              "the point (%.17g, %.17g) is not D away", rec.x.x, rec.x.y);
+        CHECK(rec.min_lo <= 0.3 && 0.3 <= rec.dist_hi && rec.dist_hi - rec.min_lo < 1e-6,
+              "the distance [%g, %g] does not enclose 0.3", rec.min_lo, rec.dist_hi);
+        rc = pg_recovery(&polygon, 0.0, s, 0.5, PG_FENCE_KEEP_IN, &rec);
+        CHECK(rc == PG_OK && rec.kind == PG_RECOVERY_POINT, "%s", pg_status_name(rc));
+        CHECK(ring_inside(rec.x, sq, 4) && ring_dist(rec.x, sq, 4) >= 0.5, "not in the core");
+        rc = pg_recovery(&polygon, 0.0, s, 1.5, PG_FENCE_KEEP_IN, &rec);
+        CHECK(rc == PG_OK && rec.kind == PG_RECOVERY_IMPOSSIBLE, "inradius 1 < 1.5");
+        rc = pg_recovery(&polygon, 0.0, s, 0.5, 3, &rec);
+        expect_error(rc, PG_ERR_BAD_PARAMETER, "fence", "an unknown fence");
+        CHECK(rec.kind == PG_RECOVERY_NONE, "no answer on an error");
+    }
+
+    /* offset by 0.5 within 1 %: one ring, points at distance 0.5 inside, vertices within
+       0.505 */
+    rc = pg_offset(&polygon, 0.0, 0.5, 0.01, NULL, 0, NULL, 0, &shape);
+    CHECK(rc == PG_ERR_CAPACITY && shape.regions == 1 && shape.rings == 1, "sizes %s",
+          pg_status_name(rc));
+    rc = pg_offset(&polygon, 0.0, 0.5, 0.01, rings, 4, verts, 512, &shape);
+    CHECK(rc == PG_OK, "pg_offset: %s %s", pg_status_name(rc), last_message());
+    if (rc == PG_OK) {
+        for (k = 0; k < shape.vertices; k++)
+            CHECK(ring_dist(verts[k], sq, 4) <= 0.5 * 1.01, "vertex %u too far", (unsigned)k);
+        for (k = 0; k < 64; k++) {
+            double a = 2.0 * M_PI_VALUE * (double)k / 64.0;
+            pg_vec2 c = sq[(k / 16) % 4];
+            pg_vec2 x;
+            x.x = c.x + 0.5 * cos(a);
+            x.y = c.y + 0.5 * sin(a);
+            if (ring_dist(x, sq, 4) >= 0.5 * (1.0 - 1e-12))
+                CHECK(ring_inside(x, verts + rings[0].first, rings[0].n),
+                      "(%g, %g) at distance 0.5 is outside the offset", x.x, x.y);
+        }
+    }
+    rc = pg_offset(&polygon, 0.0, 0.5, 0.01, rings, 1, verts, 4, &shape);
+    CHECK(rc == PG_ERR_CAPACITY && shape.vertices > 4, "a small vertex buffer");
+    rc = pg_inset(&polygon, 0.0, 1.5, 0.01, rings, 4, verts, 512, &shape);
+    CHECK(rc == PG_OK && shape.regions == 0 && shape.rings == 0, "the empty inset");
+    rc = pg_offset(&polygon, 0.0, 0.5, 0.0, rings, 4, verts, 512, &shape);
+    expect_error(rc, PG_ERR_BAD_PARAMETER, "eps", "eps 0");
+}
+
 int main(int argc, char **argv) {
     FILE *cli = NULL;
     const char *encounters_cli = NULL;
@@ -818,6 +986,7 @@ int main(int argc, char **argv) {
     test_batch();
     test_intervals();
     test_encounters(encounters_cli);
+    test_wayout();
     printf("%d checks, %d failed%s\n", checks, failures,
            cli != NULL ? " (examples also compared with the CLI)" : "");
     return failures == 0 ? 0 : 1;

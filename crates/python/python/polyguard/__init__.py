@@ -12,6 +12,10 @@
 - Moving features (docs/moving-features.md): ``encounters`` answers whole flights (MF-JSON,
   or pandas frames of fixes as traffic and MovingPandas hold them) against static and
   moving areas with the certified spans of inside and near, as a pandas DataFrame.
+- The way out (docs/python.md, "The way out"): ``course_bands``, ``speed_bands`` and
+  ``vertical_speed_bands`` give certified conflict-free bands among moving polygons,
+  ``recover`` the nearest point out of (or into) a polygon's separation, ``offset`` and
+  ``inset`` certified grown and shrunk polygons.
 - Paper B (A. Bienkowski, D. Sidoti and K. R. Pattipati, IEEE Access 9, 2021):
   ``conflicts`` runs the four-stage interference identification (§IV) on a scenario
   GeoJSON.
@@ -31,15 +35,21 @@ from ._native import (
     Truth,
     __version__,
     conflicts,
+    course_bands,
     detect,
     detect_batch,
     detect_case,
     detect_exit,
     detect_time,
     detect_time_case,
+    inset,
     intervals,
+    offset,
+    recover,
+    speed_bands,
     truth,
     truth_case,
+    vertical_speed_bands,
 )
 from ._moving import encounters
 
@@ -54,6 +64,7 @@ __all__ = [
     "Truth",
     "__version__",
     "conflicts",
+    "course_bands",
     "detect",
     "detect_batch",
     "detect_case",
@@ -61,7 +72,12 @@ __all__ = [
     "detect_time",
     "detect_time_case",
     "encounters",
+    "inset",
     "intervals",
+    "offset",
+    "recover",
+    "speed_bands",
     "truth",
     "truth_case",
+    "vertical_speed_bands",
 ]

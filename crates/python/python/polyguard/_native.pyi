@@ -36,15 +36,21 @@ __all__ = [
     "_encounters_columns",
     "_encounters_json",
     "conflicts",
+    "course_bands",
     "detect",
     "detect_batch",
     "detect_case",
     "detect_exit",
     "detect_time",
     "detect_time_case",
+    "inset",
     "intervals",
+    "offset",
+    "recover",
+    "speed_bands",
     "truth",
     "truth_case",
+    "vertical_speed_bands",
 ]
 
 __version__: str
@@ -339,3 +345,122 @@ def _encounters_columns(
     """``_encounters_json`` for movers given as the columns of a table of fixes
     (int64 nanoseconds, NaT as missing; NaN altitude: none), grouped as the CSV of fixes.
     """
+
+_Kind = Literal["clear", "conflict", "unknown"]
+
+class _CourseBands(TypedDict):
+    """``course_bands``' answer: the bands in degrees, tiling [0, 360]."""
+
+    bands: list[Tuple[float, float, _Kind]]
+    unknown_total_deg: float
+    met: bool
+
+class _Bands(TypedDict):
+    """``speed_bands`` / ``vertical_speed_bands``' answer: the bands tiling [min, max]."""
+
+    bands: list[Tuple[float, float, _Kind]]
+    unknown_total: float
+    met: bool
+
+class _Recovery(TypedDict, total=False):
+    """``recover``'s answer: ``point``, ``distance``, ``min_lo``, ``moved``; or
+    ``impossible`` alone."""
+
+    point: Tuple[float, float]
+    distance: float
+    min_lo: float
+    moved: bool
+    impossible: str
+
+class _Region(TypedDict):
+    """One region of ``offset`` / ``inset``: its outer ring (counterclockwise) and its
+    holes (clockwise)."""
+
+    outer: list[Tuple[float, float]]
+    holes: list[list[Tuple[float, float]]]
+
+def course_bands(
+    pos: _Vector,
+    vel: _Vector,
+    obstacles: Sequence[Mapping[str, Any]],
+    *,
+    lookahead: _Number,
+    sep: _Number,
+    sep_v: _Number = 0.0,
+    speed: Optional[_Number] = None,
+    unknown_max_deg: _Number = 0.1,
+) -> _CourseBands:
+    """Course bands over [0°, 360°] (clockwise from +y) for the point at ``pos`` (3
+    numbers in 3D, ``vel``'s third the vertical speed) moving at ``speed`` (default: the
+    horizontal |vel|) among the moving ``obstacles`` over [0, lookahead], separation
+    ``sep`` (and ``sep_v`` in 3D). A clear band is certified free of loss of separation
+    for every course in it, a conflict band certified in conflict for every course; the
+    Unknown total is refined towards ``unknown_max_deg``. Raises Error naming the field.
+    """
+
+def speed_bands(
+    pos: _Vector,
+    vel: _Vector,
+    obstacles: Sequence[Mapping[str, Any]],
+    *,
+    lookahead: _Number,
+    sep: _Number,
+    min: _Number,
+    max: _Number,
+    sep_v: _Number = 0.0,
+    course_deg: Optional[_Number] = None,
+    unknown_max: Optional[_Number] = None,
+) -> _Bands:
+    """Speed bands over [min, max] at ``course_deg`` (default: ``vel``'s course), as
+    ``course_bands``; ``unknown_max`` defaults to (max - min) / 1000."""
+
+def vertical_speed_bands(
+    pos: _Vector,
+    vel: _Vector,
+    obstacles: Sequence[Mapping[str, Any]],
+    *,
+    lookahead: _Number,
+    sep: _Number,
+    sep_v: _Number,
+    min: _Number,
+    max: _Number,
+    unknown_max: Optional[_Number] = None,
+) -> _Bands:
+    """Vertical speed bands over [min, max] with ``vel``'s horizontal part fixed (3D:
+    ``pos`` and ``vel`` of 3 numbers), as ``speed_bands``."""
+
+def recover(
+    vertices: _Points,
+    s: _Vector,
+    sep: _Number,
+    *,
+    fence: Literal["keep_out", "keep_in"] = "keep_out",
+    velocities: Optional[_Points] = None,
+    t: _Number = 0.0,
+) -> _Recovery:
+    """The nearest point to ``s`` at least ``sep`` from the polygon (``keep_out``), or
+    inside it at least ``sep`` from its boundary (``keep_in``), at time ``t``: certified
+    to meet its condition, the exact minimum distance in [min_lo, distance]; or
+    ``{"impossible": reason}``. Raises Error naming the field."""
+
+def offset(
+    vertices: _Points,
+    d: _Number,
+    eps: _Number = 0.01,
+    *,
+    velocities: Optional[_Points] = None,
+    t: _Number = 0.0,
+) -> list[_Region]:
+    """The certified offset by ``d``: regions Q with P + disc(d) inside Q inside
+    P + disc(d (1 + eps)). Raises Error naming the field."""
+
+def inset(
+    vertices: _Points,
+    d: _Number,
+    eps: _Number = 0.01,
+    *,
+    velocities: Optional[_Points] = None,
+    t: _Number = 0.0,
+) -> list[_Region]:
+    """The certified inset by ``d``: pieces inside {x in P : dist(x, boundary) >= d}
+    containing {x in P : dist(x, boundary) >= d (1 + eps)}; maybe none."""

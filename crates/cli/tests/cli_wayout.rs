@@ -401,3 +401,42 @@ fn offset_svg_shows_what_the_bisector_expansion_misses() {
     assert_eq!(svg.matches("fill=\"#4a7fc1\"").count(), 1);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `recover --polycarp` judges PolyCARP's point exactly beside the engine's: in the V
+/// notch it breaks the condition while the engine's meets it; on the thin strip it
+/// returns a point where the engine (and the oracle) say none exists; where it meets the
+/// condition its excess over the exact minimum is never negative.
+#[test]
+fn polycarp_recovery_is_judged_beside_the_engines() {
+    let (answers, err, code) = run(
+        &[
+            "recover",
+            "--engine",
+            "truth",
+            "--polycarp",
+            "examples/recover-vs-polycarp.jsonl",
+        ],
+        "",
+    );
+    assert_eq!(code, 0, "{err}");
+    let by_id = |id: &str| {
+        answers
+            .iter()
+            .find(|a| a["id"] == id)
+            .unwrap_or_else(|| panic!("no answer {id}"))
+    };
+    let notch = by_id("v-notch");
+    assert_eq!(notch["recovery"]["meets"], true);
+    assert_eq!(notch["polycarp"]["meets"], false);
+    let strip = by_id("thin-strip-keep-in");
+    assert_eq!(strip["recovery"]["impossible_exact"], true);
+    assert_eq!(strip["polycarp"]["meets"], false);
+    assert!(strip["polycarp"]["excess"].is_null());
+    for a in &answers {
+        if a["polycarp"]["meets"] == true {
+            let excess = a["polycarp"]["excess"].as_f64().expect("excess");
+            assert!(excess >= 0.0, "{a}");
+        }
+        assert!(a["recovery"]["meets"] != false, "{a}");
+    }
+}

@@ -44,6 +44,11 @@ pub struct RecoverArgs {
     /// Which implementation answers.
     #[arg(long, value_enum, default_value = "f64")]
     pub engine: RecoverEngine,
+    /// Also answer with NASA PolyCARP's recovery point (its algorithm, ported; BUFF =
+    /// D/100), judged exactly: does it meet the condition, how much farther than the
+    /// exact minimum is it.
+    #[arg(long)]
+    pub polycarp: bool,
 }
 
 /// Runs `polyguard recover`.
@@ -52,6 +57,7 @@ pub fn run(args: &RecoverArgs) -> ExitCode {
         sep: args.sep,
         fence: args.fence.unwrap_or_default(),
         truth: args.engine == RecoverEngine::Truth,
+        polycarp: args.polycarp,
         ..Ask::default()
     };
     run_lines("recover", Command::Recover, &args.file, &ask)

@@ -55,6 +55,9 @@ pub struct Ask {
     pub inset: bool,
     /// Add the oracle's exact minimum distance (`recover --engine truth`).
     pub truth: bool,
+    /// Add PolyCARP's recovery point beside the engine's, judged exactly (`recover
+    /// --polycarp`).
+    pub polycarp: bool,
 }
 
 /// The format's defaults (docs/way-out.md).
@@ -68,6 +71,7 @@ impl Default for Ask {
             fence: Fence::KeepOut,
             inset: false,
             truth: false,
+            polycarp: false,
         }
     }
 }
@@ -343,6 +347,9 @@ pub fn recover_answer(case: &WayCase, ask: &Ask) -> Result<Map<String, Value>, F
     }
     let mut out = Map::new();
     out.insert("recovery".into(), Value::Object(recovery));
+    if ask.polycarp {
+        out.insert("polycarp".into(), polycarp_json(&qy));
+    }
     out.insert("sep".into(), qy.d.into());
     out.insert(
         "fence".into(),
@@ -350,6 +357,39 @@ pub fn recover_answer(case: &WayCase, ask: &Ask) -> Result<Map<String, Value>, F
     );
     out.insert("time".into(), qy.t.into());
     Ok(out)
+}
+
+/// The share of D that PolyCARP's BUFF is given beside `recover --polycarp` (its
+/// ResolBUFF is D).
+pub const POLYCARP_BUFF_SHARE: f64 = 0.01;
+
+/// PolyCARP's recovery point for the query (NASA PolyCARP's `recovery_point`, ported in
+/// `wayout::polycarp`; BUFF = D/100, ResolBUFF = D), on the polygon at the query's time
+/// evaluated in f64: the point, |x − s|, whether it meets the condition (exactly, on
+/// that polygon) and how much farther than the exact minimum it is (`null` when no
+/// point meets the condition).
+fn polycarp_json(qy: &Query) -> Value {
+    let p: Vec<Vect2> = if qy.vels.is_empty() {
+        qy.p.clone()
+    } else {
+        qy.p.iter()
+            .zip(&qy.vels)
+            .map(|(a, v)| a.at(*v, qy.t))
+            .collect()
+    };
+    let at = Query {
+        p,
+        vels: Vec::new(),
+        t: 0.0,
+        ..qy.clone()
+    };
+    let r = rec::polycarp_report(&at, POLYCARP_BUFF_SHARE * qy.d);
+    json!({
+        "point": [r.x.x, r.x.y],
+        "distance": r.dist,
+        "meets": r.meets,
+        "excess": r.excess(),
+    })
 }
 
 /// The order of m and the f64 x ≥ 0, exactly.

@@ -6,7 +6,7 @@ use std::process::ExitCode;
 
 use polyguard_harness::wayout::answer::{Ask, Command, DEFAULT_UNKNOWN_MAX_DEG};
 
-use super::wayout_common::{parse_positive, parse_separation, run as run_lines};
+use super::wayout_common::{parse_positive, parse_separation};
 
 /// Arguments of `polyguard bands`.
 #[derive(Debug, clap::Args)]
@@ -34,13 +34,9 @@ pub struct BandsArgs {
     /// `bands.unknown_max_deg` (speed bands aim at the same share of their range).
     #[arg(long, default_value_t = DEFAULT_UNKNOWN_MAX_DEG, value_parser = parse_positive)]
     pub unknown_max_deg: f64,
-    /// Also draw one case's course bands as a compass rose into this SVG file (the first
-    /// valid case, or `--svg-case`); needs FILE, not standard input.
-    #[arg(long, value_name = "OUT.svg")]
-    pub svg: Option<PathBuf>,
-    /// The id of the case to draw with `--svg`.
-    #[arg(long, value_name = "ID", requires = "svg")]
-    pub svg_case: Option<String>,
+    /// The picture (`--svg`, `--svg-case`).
+    #[command(flatten)]
+    pub svg: super::wayout_svg::SvgArgs,
 }
 
 /// Runs `polyguard bands`.
@@ -51,20 +47,5 @@ pub fn run(args: &BandsArgs) -> ExitCode {
         unknown_max_deg: args.unknown_max_deg,
         ..Ask::default()
     };
-    let file = args
-        .file
-        .as_deref()
-        .filter(|f| *f != std::path::Path::new("-"));
-    if args.svg.is_some() && file.is_none() {
-        eprintln!("polyguard bands: --svg needs a case FILE (standard input is read once)");
-        return ExitCode::from(2);
-    }
-    let status = run_lines("bands", Command::Bands, &args.file, &ask);
-    if let (Some(out), Some(file)) = (&args.svg, file) {
-        if let Err(e) = super::wayout_svg::write_bands(file, args.svg_case.as_deref(), &ask, out) {
-            eprintln!("polyguard bands: --svg: {e}");
-            return ExitCode::from(2);
-        }
-    }
-    status
+    super::wayout_svg::run_and_draw("bands", Command::Bands, &args.file, &ask, &args.svg)
 }

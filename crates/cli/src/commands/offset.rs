@@ -6,7 +6,7 @@ use std::process::ExitCode;
 
 use polyguard_harness::wayout::answer::{Ask, Command, DEFAULT_EPS};
 
-use super::wayout_common::{parse_eps, parse_separation, run as run_lines};
+use super::wayout_common::{parse_eps, parse_separation};
 
 /// Arguments of `polyguard offset`.
 #[derive(Debug, clap::Args)]
@@ -30,14 +30,9 @@ pub struct OffsetArgs {
     /// The inset (the polygon shrunk by D) instead of the offset.
     #[arg(long)]
     pub inset: bool,
-    /// Also draw one case's result into this SVG file (the first valid case, or
-    /// `--svg-case`), an offset beside a PolyCARP-style bisector expansion and the points
-    /// of the true buffer it leaves out; needs FILE, not standard input.
-    #[arg(long, value_name = "OUT.svg")]
-    pub svg: Option<PathBuf>,
-    /// The id of the case to draw with `--svg`.
-    #[arg(long, value_name = "ID", requires = "svg")]
-    pub svg_case: Option<String>,
+    /// The picture (`--svg`, `--svg-case`).
+    #[command(flatten)]
+    pub svg: super::wayout_svg::SvgArgs,
 }
 
 /// Runs `polyguard offset`.
@@ -48,20 +43,5 @@ pub fn run(args: &OffsetArgs) -> ExitCode {
         inset: args.inset,
         ..Ask::default()
     };
-    let file = args
-        .file
-        .as_deref()
-        .filter(|f| *f != std::path::Path::new("-"));
-    if args.svg.is_some() && file.is_none() {
-        eprintln!("polyguard offset: --svg needs a case FILE (standard input is read once)");
-        return ExitCode::from(2);
-    }
-    let status = run_lines("offset", Command::Offset, &args.file, &ask);
-    if let (Some(out), Some(file)) = (&args.svg, file) {
-        if let Err(e) = super::wayout_svg::write_offset(file, args.svg_case.as_deref(), &ask, out) {
-            eprintln!("polyguard offset: --svg: {e}");
-            return ExitCode::from(2);
-        }
-    }
-    status
+    super::wayout_svg::run_and_draw("offset", Command::Offset, &args.file, &ask, &args.svg)
 }

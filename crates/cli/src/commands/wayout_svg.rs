@@ -2,7 +2,8 @@
 //! case's course bands, and one case's certified offset beside a bisector expansion
 //! (docs/way-out.md), drawn by the harness's `wayout::picture`.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
 
 use serde_json::Value;
 
@@ -11,9 +12,53 @@ use polyguard::offset::{inset_at, offset, offset_at};
 use polyguard::recovery::{recovery_out, Recovery};
 use polyguard::Vect2;
 use polyguard_harness::canary_offset::bisector_expansion;
-use polyguard_harness::wayout::answer::{band_case, Ask};
+use polyguard_harness::wayout::answer::{band_case, Ask, Command};
 use polyguard_harness::wayout::case::{parse_way_line, WayCase};
 use polyguard_harness::wayout::picture::{compass_svg, offset_svg, Compass, OffsetPicture};
+
+/// `--svg OUT` and `--svg-case ID`, shared by `bands` and `offset`.
+#[derive(Debug, clap::Args)]
+pub struct SvgArgs {
+    /// Also draw one case into this SVG file (the first valid case, or `--svg-case`):
+    /// `bands` draws the compass rose of its course bands, `offset` its result beside a
+    /// PolyCARP-style bisector expansion and the points of the buffer that one leaves
+    /// out. Needs FILE, not standard input.
+    #[arg(long, value_name = "OUT.svg")]
+    pub svg: Option<PathBuf>,
+    /// The id of the case to draw with `--svg`.
+    #[arg(long, value_name = "ID", requires = "svg")]
+    pub svg_case: Option<String>,
+}
+
+/// Answers every line of `file` with `cmd` (`wayout_common::run`), then draws the picture
+/// `--svg` asks for: `write_bands` for `bands`, `write_offset` for `offset`. Exit 2
+/// when `--svg` is given without a FILE or the picture cannot be drawn.
+pub fn run_and_draw(
+    name: &str,
+    cmd: Command,
+    file: &Option<PathBuf>,
+    ask: &Ask,
+    svg: &SvgArgs,
+) -> ExitCode {
+    let path = file.as_deref().filter(|f| *f != Path::new("-"));
+    if svg.svg.is_some() && path.is_none() {
+        eprintln!("polyguard {name}: --svg needs a case FILE (standard input is read once)");
+        return ExitCode::from(2);
+    }
+    let status = super::wayout_common::run(name, cmd, file, ask);
+    if let (Some(out), Some(path)) = (&svg.svg, path) {
+        let want = svg.svg_case.as_deref();
+        let drawn = match cmd {
+            Command::Offset => write_offset(path, want, ask, out),
+            _ => write_bands(path, want, ask, out),
+        };
+        if let Err(e) = drawn {
+            eprintln!("polyguard {name}: --svg: {e}");
+            return ExitCode::from(2);
+        }
+    }
+    status
+}
 
 /// The relative tolerance of the offsets drawn (a picture needs no finer).
 const PICTURE_EPS: f64 = 0.01;

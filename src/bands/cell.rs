@@ -344,13 +344,13 @@ impl<'a> Tester<'a> {
         let mut all = AllFail { all: true };
         let ran = scan_clear
             && self.scan(
-            i,
-            pr,
-            z,
-            Relation::Near,
-            Separation { d: reach, h: 0.0 },
-            &mut all,
-        );
+                i,
+                pr,
+                z,
+                Relation::Near,
+                Separation { d: reach, h: 0.0 },
+                &mut all,
+            );
         if ran && all.all {
             return Tri::No;
         }

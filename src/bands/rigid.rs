@@ -165,9 +165,7 @@ impl<'a> Rigid<'a> {
     fn deep_at(&self, lam: f64, depth: f64) -> bool {
         let (y, r2) = self.point(lam);
         let th = Ball::exact(depth).add(Ball::exact(r2));
-        y.is_finite()
-            && inside(self.p, y)
-            && edges(self.p).all(|(_, a, b)| at_least(y, a, b, th))
+        y.is_finite() && inside(self.p, y) && edges(self.p).all(|(_, a, b)| at_least(y, a, b, th))
     }
 
     /// The float point of σ̃ deepest inside P among the sampled ones: its λ (`None`
@@ -256,3 +254,6 @@ impl Judged {
         }
     }
 }
+
+#[cfg(test)]
+mod tests;

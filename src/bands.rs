@@ -92,15 +92,20 @@
 //! w − V: its float ỹ has each coordinate within ρ_y of y(t*), |y − ỹ| ≤ 2ρ_y.
 //! Distances between exact floats are certified by the offset certificate's tests
 //! (`at_least`, `within`: squared distances as balls, no absolute epsilon); inside is an
-//! exact crossing count of the float point (not on ∂P, odd).
+//! exact crossing count of the float point (not on ∂P, odd; the winding number has
+//! the crossing count's parity).
 //!
 //! Then, with reach = D + r rounded up (strictly above D + r):
 //! - **Clear**: s is outside P (exact) and every edge of P is at least reach + 2ρ from
 //!   σ̃ (the segments do not meet, exact orientations, and the four end-to-segment
 //!   distances are certified, as the offset certificate's `segments_at_least`; a box
-//!   gap rounded down may settle an edge first). Every point of σ is then at least
+//!   gap rounded down, or both ends of the edge certainly on one side of σ̃'s line and
+//!   at least that far from it ((ẽ − s) × (a − s) of one certain sign and squared at
+//!   least th²·|ẽ − s|², as balls), may settle an edge first: the distance to a line
+//!   is affine along an edge on one side of it). Every point of σ is then at least
 //!   reach + 2ρ − √2ρ ≥ reach from ∂P, and σ, connected and starting outside P, never
-//!   enters it: dist(y(t), P) ≥ reach > D + r for every t, so near_{D+r} never holds at
+//!   enters it: dist(y(t), P) ≥ reach > D + r for every t (`round_up` adds at least
+//!   half of the smallest subnormal), so near_{D+r} never holds at
 //!   the sample, which is the Clear certificate above.
 //! - **Conflict, r ≤ D**: with near = D − r rounded down (≥ 0): some t* where ỹ is
 //!   within near − 2ρ_y of an edge (certified, near − 2ρ_y certainly > 0), so

@@ -5,7 +5,7 @@
 
 use std::vec::Vec;
 
-use crate::ball::{positive, round_up, Ball, Tri};
+use crate::ball::{nonnegative, positive, round_up, Ball, BallV, Tri};
 use crate::offset::{at_least, segments_at_least, winding_number, within};
 use crate::vect2::Vect2;
 
@@ -31,7 +31,11 @@ pub(super) struct Rigid<'a> {
     u: [Ball; 2],
     /// s certainly outside P (exact location, not on ∂P).
     s_out: bool,
-    /// σ̃'s float nearest approach to ∂P: (the parameter λ ∈ [0, 1], the edge).
+}
+
+/// σ̃'s float geometry against P (guides the choice of witnesses, decides nothing).
+struct Shape {
+    /// The nearest approach to ∂P: (the parameter λ ∈ [0, 1], the edge).
     near: (f64, usize),
     /// The float parameters 0, the crossings of σ̃ with ∂P, 1, sorted.
     events: Vec<f64>,
@@ -91,6 +95,21 @@ impl<'a> Rigid<'a> {
             return None;
         }
         let s_out = matches!(winding_number(p, s), Some((w, false)) if w % 2 == 0);
+        Some(Rigid {
+            p,
+            s,
+            e,
+            rho2,
+            t,
+            u,
+            s_out,
+        })
+    }
+
+    /// σ̃'s float geometry against P: its nearest approach to ∂P (ends against edges,
+    /// vertices against σ̃, crossings) and its crossings.
+    fn shape(&self) -> Shape {
+        let (p, s, e) = (self.p, self.s, self.e);
         let d = e - s;
         let mut events = Vec::with_capacity(8);
         events.push(0.0);
@@ -120,28 +139,47 @@ impl<'a> Rigid<'a> {
             }
         }
         events.sort_by(f64::total_cmp);
-        Some(Rigid {
-            p,
-            s,
-            e,
-            rho2,
-            t,
-            u,
-            s_out,
+        Shape {
             near: (best.1, best.2),
             events,
-        })
+        }
     }
 
     /// dist(σ, P) > th − 2ρ... precisely: s outside P and every edge at least `th`
     /// (a ball) from σ̃, certified; then every point of σ is at least th − √2·ρ from
     /// ∂P and outside P (parent module).
     fn apart(&self, th: Ball) -> bool {
+        if !self.s_out {
+            return false;
+        }
         let hi = th.hi();
-        self.s_out
-            && edges(self.p).all(|(_, a, b)| {
-                boxes_apart(self.s, self.e, a, b, hi) || segments_at_least(self.s, self.e, a, b, th)
-            })
+        let dv = BallV::diff(self.e, self.s);
+        let lim = th.sq().mul(dv.sq());
+        // The side of σ̃'s line each vertex certainly lies on at least th away (0: not
+        // certain): an edge with both ends on one side is at least th from the line.
+        let side = |a: Vect2| {
+            let c = dv.cross(BallV::diff(a, self.s));
+            if nonnegative(c.sq().sub(lim)) != Tri::Yes {
+                0
+            } else if positive(c) == Tri::Yes {
+                1
+            } else if positive(c.neg()) == Tri::Yes {
+                -1
+            } else {
+                0
+            }
+        };
+        let n = self.p.len();
+        let first = side(self.p[0]);
+        let mut here = first;
+        (0..n).all(|j| {
+            let (a, b) = (self.p[j], self.p[(j + 1) % n]);
+            let next = if j + 1 == n { first } else { side(b) };
+            let far = here != 0 && here == next;
+            here = next;
+            far || boxes_apart(self.s, self.e, a, b, hi)
+                || segments_at_least(self.s, self.e, a, b, th)
+        })
     }
 
     /// The point y(t*) for λ (t* = fl(λ·T) ∈ [0, T]): its float value and 2ρ_y, twice
@@ -170,9 +208,9 @@ impl<'a> Rigid<'a> {
 
     /// The float point of σ̃ deepest inside P among the sampled ones: its λ (`None`
     /// when no sampled point is inside).
-    fn deepest(&self) -> Option<f64> {
+    fn deepest(&self, shape: &Shape) -> Option<f64> {
         let mut best: Option<(f64, f64)> = None;
-        for w in self.events.windows(2) {
+        for w in shape.events.windows(2) {
             let (l0, l1) = (w[0], w[1]);
             if l1 <= l0 {
                 continue;
@@ -196,13 +234,16 @@ impl<'a> Rigid<'a> {
 
     /// Some t ∈ [0, T] with dist(y(t), P) ≤ th, certified: at σ̃'s nearest approach to
     /// ∂P, or inside P at its deepest sampled point.
-    fn touches(&self, th: f64) -> bool {
-        let (lam, j) = self.near;
+    fn touches(&self, shape: &Shape, th: f64) -> bool {
+        let (lam, j) = shape.near;
         if self.within_at(lam, j, th) {
             return true;
         }
-        let crosses = self.events.len() > 2 || !self.s_out;
-        crosses && self.deepest().is_some_and(|lam| self.deep_at(lam, 0.0))
+        let crosses = shape.events.len() > 2 || !self.s_out;
+        crosses
+            && self
+                .deepest(shape)
+                .is_some_and(|lam| self.deep_at(lam, 0.0))
     }
 
     /// The fast path's verdict for one cell (parent module): `No` Clear (every point of
@@ -216,14 +257,17 @@ impl<'a> Rigid<'a> {
         if self.apart(reach_b) {
             return Judged::decided(Tri::No);
         }
+        let shape = self.shape();
         let conflict = match near {
-            Some(nd) => self.touches(nd),
-            None => self.deepest().is_some_and(|lam| self.deep_at(lam, deep)),
+            Some(nd) => self.touches(&shape, nd),
+            None => self
+                .deepest(&shape)
+                .is_some_and(|lam| self.deep_at(lam, deep)),
         };
         if conflict {
             return Judged::decided(Tri::Yes);
         }
-        let scan_clear = !self.touches(reach);
+        let scan_clear = !self.touches(&shape, reach);
         let scan_conflict = match near {
             Some(nd) => !self.apart(Ball::exact(round_up(nd + self.rho2))),
             None => true,

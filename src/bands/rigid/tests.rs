@@ -142,7 +142,7 @@ proptest! {
     #[test]
     fn the_fast_path_agrees_at_the_boundary(c in case(), f in -1e-13..1e-13f64) {
         let g = Rigid::new(&c.p, c.vel, c.s, c.w, c.t).expect("finite");
-        let (lam, j) = g.near;
+        let (lam, j) = g.shape().near;
         let y = g.s + (g.e - g.s).scale(lam);
         let md = seg_dist2(y, c.p[j], c.p[(j + 1) % c.p.len()]).0.sqrt();
         agree(&Case { d: md * (1.0 + f), r: 0.0, ..c })?;

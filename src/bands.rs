@@ -104,8 +104,8 @@
 //!   least th²·|ẽ − s|², as balls), may settle an edge first: the distance to a line
 //!   is affine along an edge on one side of it). Every point of σ is then at least
 //!   reach + 2ρ − √2ρ ≥ reach from ∂P, and σ, connected and starting outside P, never
-//!   enters it: dist(y(t), P) ≥ reach > D + r for every t (`round_up` adds at least
-//!   half of the smallest subnormal), so near_{D+r} never holds at
+//!   enters it: dist(y(t), P) ≥ reach > D + r for every t (`round_up` lands at least
+//!   `ball::ETA`/2 above the exact sum), so near_{D+r} never holds at
 //!   the sample, which is the Clear certificate above.
 //! - **Conflict, r ≤ D**: with near = D − r rounded down (≥ 0): some t* where ỹ is
 //!   within near − 2ρ_y of an edge (certified, near − 2ρ_y certainly > 0), so

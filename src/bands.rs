@@ -96,6 +96,11 @@
 //! the crossing count's parity).
 //!
 //! Then, with reach = D + r rounded up (strictly above D + r):
+//! - **Prefilter** (replacing the sliced boxes for these obstacles): every coordinate
+//!   of a point of σ lies between s's and e's, and e's within ρ ≤ 2ρ of ẽ's; when the
+//!   box of s and ẽ grown by 2ρ (rounded outward) and P's vertex box are more than
+//!   reach apart along x or y (the gap rounded down), every t is farther than reach:
+//!   Clear.
 //! - **Clear**: s is outside P (exact) and every edge of P is at least reach + 2ρ from
 //!   σ̃ (the segments do not meet, exact orientations, and the four end-to-segment
 //!   distances are certified, as the offset certificate's `segments_at_least`; a box

@@ -321,23 +321,22 @@ impl<'a> Tester<'a> {
         let Separation { d, h } = self.traffic.sep;
         // Clear: near_{D+r} (and H + r_z) is empty at the sample.
         let reach = round_up(d + pr.r);
-        if self.apart(i, pr.v, reach) {
-            return Tri::No;
-        }
-        // The fast path for a rigidly translating obstacle, then the scans it left
-        // able to decide.
+        // The fast path for a rigidly translating obstacle (its own box test replaces
+        // the sliced prefilter), then the scans it left able to decide.
         let (mut scan_clear, mut scan_conflict) = (true, true);
-        if let Some(vel) = self.rigid[i] {
-            let tr = self.traffic;
-            if let Some(g) = Rigid::new(tr.obstacles[i].p, vel, tr.s, pr.v, tr.t) {
-                let near = (pr.r <= d).then(|| round_down(d - pr.r).max(0.0));
-                let deep = round_up(pr.r - d);
-                let judged = g.judge(reach, near, deep);
-                if judged.tri != Tri::Unsure {
-                    return judged.tri;
-                }
-                (scan_clear, scan_conflict) = (judged.scan_clear, judged.scan_conflict);
+        let tr = self.traffic;
+        let rigid =
+            self.rigid[i].and_then(|vel| Rigid::new(tr.obstacles[i].p, vel, tr.s, pr.v, tr.t));
+        if let Some(g) = rigid {
+            let near = (pr.r <= d).then(|| round_down(d - pr.r).max(0.0));
+            let deep = round_up(pr.r - d);
+            let judged = g.judge(reach, near, deep);
+            if judged.tri != Tri::Unsure {
+                return judged.tri;
             }
+            (scan_clear, scan_conflict) = (judged.scan_clear, judged.scan_conflict);
+        } else if self.apart(i, pr.v, reach) {
+            return Tri::No;
         }
         let grown = round_up(h + pr.rz);
         let z = self.heights(i, pr, grown, false);

@@ -5,7 +5,7 @@
 
 use std::vec::Vec;
 
-use crate::ball::{nonnegative, positive, round_up, Ball, BallV, Tri};
+use crate::ball::{nonnegative, positive, round_down, round_up, Ball, BallV, Tri};
 use crate::offset::{at_least, segments_at_least, winding_number, within};
 use crate::vect2::Vect2;
 
@@ -69,7 +69,7 @@ fn edges(p: &[Vect2]) -> impl Iterator<Item = (usize, Vect2, Vect2)> + '_ {
 fn boxes_apart(a: Vect2, b: Vect2, c: Vect2, d: Vect2, th: f64) -> bool {
     let gx = (c.x.min(d.x) - a.x.max(b.x)).max(a.x.min(b.x) - c.x.max(d.x));
     let gy = (c.y.min(d.y) - a.y.max(b.y)).max(a.y.min(b.y) - c.y.max(d.y));
-    crate::ball::round_down(gx.max(gy)) >= th
+    round_down(gx.max(gy)) >= th
 }
 
 /// q is certainly inside P: not on ∂P, and an odd crossing count (exact).
@@ -182,6 +182,24 @@ impl<'a> Rigid<'a> {
         })
     }
 
+    /// σ's box and P's box are more than `reach` apart along x or y (rounded toward
+    /// the safe side): every coordinate of a point of σ lies between s's and e's, and
+    /// e's is within ρ ≤ 2ρ of ẽ's.
+    fn boxes_apart(&self, reach: f64) -> bool {
+        let (mut lo, mut hi) = (self.p[0], self.p[0]);
+        for a in &self.p[1..] {
+            lo = Vect2::new(lo.x.min(a.x), lo.y.min(a.y));
+            hi = Vect2::new(hi.x.max(a.x), hi.y.max(a.y));
+        }
+        let (s, e, r) = (self.s, self.e, self.rho2);
+        let slo = Vect2::new(round_down(s.x.min(e.x) - r), round_down(s.y.min(e.y) - r));
+        let shi = Vect2::new(round_up(s.x.max(e.x) + r), round_up(s.y.max(e.y) + r));
+        round_down(lo.x - shi.x) > reach
+            || round_down(slo.x - hi.x) > reach
+            || round_down(lo.y - shi.y) > reach
+            || round_down(slo.y - hi.y) > reach
+    }
+
     /// The point y(t*) for λ (t* = fl(λ·T) ∈ [0, T]): its float value and 2ρ_y, twice
     /// the bound of each coordinate's error.
     fn point(&self, lam: f64) -> (Vect2, f64) {
@@ -253,6 +271,9 @@ impl<'a> Rigid<'a> {
     /// cannot when some point of σ is certainly within `reach`, the near_{D−r} scan
     /// cannot when σ is certainly farther than `near` from P.
     pub(super) fn judge(&self, reach: f64, near: Option<f64>, deep: f64) -> Judged {
+        if self.boxes_apart(reach) {
+            return Judged::decided(Tri::No);
+        }
         let reach_b = Ball::exact(reach).add(Ball::exact(self.rho2));
         if self.apart(reach_b) {
             return Judged::decided(Tri::No);

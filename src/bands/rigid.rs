@@ -13,9 +13,9 @@ use crate::vect2::Vect2;
 /// tries (interior points at k/SAMPLES of the stretch).
 const SAMPLES: usize = 8;
 
-/// The relative path of the point in a translating polygon's frame: σ̃ = [s, e], the
+/// The relative path of the point in a translating polygon's frame: σ̃ = [s, ẽ], the
 /// float image of σ = {s + t·(w − V) : t ∈ [0, T]} (parent module: within `rho2` of σ
-/// at every t), with its float geometry against P.
+/// at every t).
 pub(super) struct Rigid<'a> {
     /// P at t = 0 (exact f64 vertices, counterclockwise).
     p: &'a [Vect2],
@@ -145,9 +145,8 @@ impl<'a> Rigid<'a> {
         }
     }
 
-    /// dist(σ, P) > th − 2ρ... precisely: s outside P and every edge at least `th`
-    /// (a ball) from σ̃, certified; then every point of σ is at least th − √2·ρ from
-    /// ∂P and outside P (parent module).
+    /// s outside P and every edge at least `th` (a ball) from σ̃, certified; then
+    /// every point of σ is outside P and at least th − √2·ρ from ∂P (parent module).
     fn apart(&self, th: Ball) -> bool {
         if !self.s_out {
             return false;

@@ -75,6 +75,61 @@
 //! r > D and every slice's box is narrower than 2(r − D) along x or y, no point can be
 //! r − D deep inside the obstacle, and the breach scan is skipped.
 //!
+//! # Fast path for translating polygons
+//! An obstacle without a slab whose vertex velocities are all one f64 vector V (static:
+//! V = 0) moves rigidly: P(t) = P(0) + t·V. For the sample's f64 velocity w, the point
+//! relative to the polygon is y(t) = x_m(t) − t·V = s + t·(w − V), and
+//! dist(x_m(t), P(t)) = dist(y(t), P(0)) exactly. Over [0, T], y runs along the segment
+//! σ from s to e = s + T·(w − V), y(t) = s + (t/T)·(e − s); P(0)'s vertices are the
+//! exact input floats.
+//!
+//! **Rounding of σ.** e is computed with [`ball::Ball`](crate::ball::Ball) arithmetic
+//! per coordinate (w − V, times T, plus s): the float ẽ has each coordinate within ρ of
+//! e's (the larger of the two balls' radii), so |e − ẽ| ≤ √2·ρ, and the float segment
+//! σ̃ = [s, ẽ] satisfies |y(t) − ỹ(t)| = (t/T)·|e − ẽ| ≤ √2·ρ ≤ 2ρ for ỹ(t) = s +
+//! (t/T)(ẽ − s). A witness point y(t*) at a float time t* = fl(λ·T) ∈ [0, T] (λ ∈ [0, 1],
+//! so the rounded product stays in [0, T]) is computed with balls from s, t* and
+//! w − V: its float ỹ has each coordinate within ρ_y of y(t*), |y − ỹ| ≤ 2ρ_y.
+//! Distances between exact floats are certified by the offset certificate's tests
+//! (`at_least`, `within`: squared distances as balls, no absolute epsilon); inside is an
+//! exact crossing count of the float point (not on ∂P, odd; the winding number has
+//! the crossing count's parity).
+//!
+//! Then, with reach = D + r rounded up (strictly above D + r):
+//! - **Prefilter** (replacing the sliced boxes for these obstacles): every coordinate
+//!   of a point of σ lies between s's and e's, and e's within ρ ≤ 2ρ of ẽ's; when the
+//!   box of s and ẽ grown by 2ρ (rounded outward) and P's vertex box are more than
+//!   reach apart along x or y (the gap rounded down), every t is farther than reach:
+//!   Clear.
+//! - **Clear**: s is outside P (exact) and every edge of P is at least reach + 2ρ from
+//!   σ̃ (the segments do not meet, exact orientations, and the four end-to-segment
+//!   distances are certified, as the offset certificate's `segments_at_least`; a box
+//!   gap rounded down, or both ends of the edge certainly on one side of σ̃'s line and
+//!   at least that far from it ((ẽ − s) × (a − s) of one certain sign and squared at
+//!   least th²·|ẽ − s|², as balls), may settle an edge first: the distance to a line
+//!   is affine along an edge on one side of it). Every point of σ is then at least
+//!   reach + 2ρ − √2ρ ≥ reach from ∂P, and σ, connected and starting outside P, never
+//!   enters it: dist(y(t), P) ≥ reach > D + r for every t (`round_up` lands at least
+//!   `ball::ETA`/2 above the exact sum), so near_{D+r} never holds at
+//!   the sample, which is the Clear certificate above.
+//! - **Conflict, r ≤ D**: with near = D − r rounded down (≥ 0): some t* where ỹ is
+//!   within near − 2ρ_y of an edge (certified, near − 2ρ_y certainly > 0), so
+//!   dist(y(t*), P) ≤ near ≤ D − r; or ỹ inside P (exact) and at least 2ρ_y from every
+//!   edge, so y(t*) is inside P too (dist 0). Either is the r ≤ D Conflict certificate.
+//!   The candidate t* is σ̃'s float nearest approach to ∂P (ends against edges,
+//!   vertices against σ̃, crossings), then the deepest of a few float points of σ̃ inside P.
+//! - **Conflict, r > D**: with deep = r − D rounded up (strictly above): ỹ inside P and
+//!   at least deep + 2ρ_y from every edge, so y(t*) is inside P and at least deep > r − D
+//!   from ∂P: the r > D Conflict certificate. Candidates: the deepest of 7 evenly spaced
+//!   float points in each stretch of σ̃ between its float crossings of ∂P.
+//! - Otherwise the scans decide, except those that certainly cannot: the Clear scan
+//!   (all pieces of near_{reach} fail) when some y(t*) is certified within reach of P
+//!   as above (near_{reach} then holds at t*, and the scan is certified), the near_{D−r}
+//!   scan when s is outside P and every edge is at least fl↑(near + 2ρ) from σ̃
+//!   (so every point of σ is farther than near from P: near_{near} never holds). A
+//!   skipped scan could only have returned Unknown, so the fast path never loses a
+//!   decision, and every decision it makes is certified.
+//!
 //! # Refinement
 //! The range starts as the fewest equal cells (a power of two, at most 256) whose r
 //! is at most D (r_z at most H): coarser cells could be decided only far from every
@@ -89,6 +144,7 @@
 //! says whether the total came under `unknown_max`.
 
 mod cell;
+mod rigid;
 
 use core::fmt;
 use std::string::String;

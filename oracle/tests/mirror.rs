@@ -42,7 +42,7 @@ const KERNEL_PARAM: &str = "k";
 
 /// Engine modules with no oracle counterpart, each for its reason. Each must exist in
 /// the engine and not in the oracle (a stale entry fails the test).
-const ENGINE_ONLY_MODULES: [(&str, &str); 8] = [
+const ENGINE_ONLY_MODULES: [(&str, &str); 9] = [
     (
         "offset::raw",
         "the f64 construction region (strips and circumscribed fans); the oracle checks a \
@@ -62,6 +62,11 @@ const ENGINE_ONLY_MODULES: [(&str, &str); 8] = [
         "bands::cell",
         "the f64 certificate of a cell between samples and its refinement; the oracle \
          decides single velocities exactly (bands::conflict)",
+    ),
+    (
+        "bands::rigid",
+        "the f64 fast path for translating obstacles, certified on balls; the oracle decides \
+         single velocities exactly for every motion (bands::conflict)",
     ),
     (
         "detect::roots",

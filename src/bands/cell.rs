@@ -5,6 +5,7 @@
 use std::boxed::Box;
 use std::vec::Vec;
 
+use super::rigid::Rigid;
 use super::{Band, BandKind, Bands, Traffic, Tri, MAX_CELLS};
 use crate::ball::{round_down, round_up};
 use crate::intervals::{Class, Heights, Pieces, Relation, Scan, Separation, Workspace};
@@ -166,6 +167,9 @@ pub(super) struct Tester<'a> {
     family: Family,
     /// Each obstacle's swept boxes over the [`SLICES`] slices of [0, T].
     boxes: Vec<[Box2; SLICES]>,
+    /// Each obstacle's common vertex velocity when it translates rigidly without a
+    /// slab (the parent module's fast path), else `None`.
+    rigid: Vec<Option<Vect2>>,
     ws: Box<Workspace>,
     /// Cell tests so far.
     cells: usize,
@@ -186,10 +190,19 @@ impl<'a> Tester<'a> {
                 slices
             })
             .collect();
+        let rigid = traffic
+            .obstacles
+            .iter()
+            .map(|o| {
+                let v = o.vels[0];
+                (o.slab.is_none() && o.vels.iter().all(|&w| w == v)).then_some(v)
+            })
+            .collect();
         Tester {
             traffic,
             family,
             boxes,
+            rigid,
             ws: Box::new(Workspace::new()),
             cells: 0,
         }
@@ -308,20 +321,35 @@ impl<'a> Tester<'a> {
         let Separation { d, h } = self.traffic.sep;
         // Clear: near_{D+r} (and H + r_z) is empty at the sample.
         let reach = round_up(d + pr.r);
-        if self.apart(i, pr.v, reach) {
+        // The fast path for a rigidly translating obstacle (its own box test replaces
+        // the sliced prefilter), then the scans it left able to decide.
+        let (mut scan_clear, mut scan_conflict) = (true, true);
+        let tr = self.traffic;
+        let rigid =
+            self.rigid[i].and_then(|vel| Rigid::new(tr.obstacles[i].p, vel, tr.s, pr.v, tr.t));
+        if let Some(g) = rigid {
+            let near = (pr.r <= d).then(|| round_down(d - pr.r).max(0.0));
+            let deep = round_up(pr.r - d);
+            let judged = g.judge(reach, near, deep);
+            if judged.tri != Tri::Unsure {
+                return judged.tri;
+            }
+            (scan_clear, scan_conflict) = (judged.scan_clear, judged.scan_conflict);
+        } else if self.apart(i, pr.v, reach) {
             return Tri::No;
         }
         let grown = round_up(h + pr.rz);
         let z = self.heights(i, pr, grown, false);
         let mut all = AllFail { all: true };
-        let ran = self.scan(
-            i,
-            pr,
-            z,
-            Relation::Near,
-            Separation { d: reach, h: 0.0 },
-            &mut all,
-        );
+        let ran = scan_clear
+            && self.scan(
+                i,
+                pr,
+                z,
+                Relation::Near,
+                Separation { d: reach, h: 0.0 },
+                &mut all,
+            );
         if ran && all.all {
             return Tri::No;
         }
@@ -332,7 +360,9 @@ impl<'a> Tester<'a> {
             -round_up(pr.rz - h)
         };
         let z = self.heights(i, pr, grow, true);
-        let found = if pr.r <= d {
+        let found = if !scan_conflict {
+            false
+        } else if pr.r <= d {
             let near = Separation {
                 d: round_down(d - pr.r).max(0.0),
                 h: 0.0,

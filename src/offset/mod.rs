@@ -104,6 +104,9 @@ mod arrange;
 mod certify;
 mod raw;
 
+pub(crate) use certify::{at_least, segments_at_least, within};
+pub(crate) use raw::winding_number;
+
 use core::fmt;
 use std::vec::Vec;
 

@@ -667,6 +667,17 @@ fn wayout_hunts_pass_merge_exactly_and_catch_their_canaries() {
         assert_eq!(whole[key], merged[key], "{key}");
     }
     assert!(dirs[4].join(file).exists());
+    wayout_refusals_and_the_bands_canary(&dirs[1], &dirs[4], &dirs[5], &dirs[6]);
+}
+
+/// The sampled-bands canary is caught; a way-out report beside a moving one is
+/// refused; a canary of the other hunt is refused (exit 2).
+fn wayout_refusals_and_the_bands_canary(
+    shard: &std::path::Path,
+    merged: &std::path::Path,
+    bands: &std::path::Path,
+    moving: &std::path::Path,
+) {
     let (code, out, err) = assure(
         &[
             "--paper",
@@ -679,16 +690,16 @@ fn wayout_hunts_pass_merge_exactly_and_catch_their_canaries() {
             "1",
             "--quiet",
         ],
-        &dirs[5],
+        bands,
     );
     assert_eq!(code, 1, "{out}{err}");
     assert!(
         out.lines().any(|l| l.starts_with("kept wrong_clear ")),
         "{out}"
     );
-    let (code, _, _) = assure(&["--paper", "moving", "--cases", "4", "--quiet"], &dirs[6]);
+    let (code, _, _) = assure(&["--paper", "moving", "--cases", "4", "--quiet"], moving);
     assert_eq!(code, 0);
-    let (code, _, err) = merge(&[&dirs[1], &dirs[6]], &[], &dirs[4]);
+    let (code, _, err) = merge(&[shard, moving], &[], merged);
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("way-out hunts"), "{err}");
     let (code, _, err) = assure(
@@ -700,7 +711,7 @@ fn wayout_hunts_pass_merge_exactly_and_catch_their_canaries() {
             "--cases",
             "2",
         ],
-        &dirs[6],
+        moving,
     );
     assert_eq!(code, 2, "{err}");
 }

@@ -266,7 +266,30 @@ pub fn band_case<S: Source>(src: &mut S) -> Drawn {
         polygons,
         sep: Separation { d, h },
     };
-    let (param, range, unknown_max, pname) = match src.below(10) {
+    let (param, range, unknown_max, pname) = band_param(src, speed, three_d);
+    let aimed = ["thin", "tangent", "plain", "plain"][aim];
+    Drawn {
+        mode: format!(
+            "bands/{pname}/{}/{aimed}",
+            if three_d { "3d" } else { "2d" }
+        ),
+        case: WayoutCase::Bands {
+            case,
+            param,
+            range,
+            unknown_max,
+        },
+    }
+}
+
+/// The parameter a band case varies (courses 7 in 10, speeds 2 in 10, vertical speeds
+/// 1 in 10 in 3D), its range, the unknown total asked for, and its name.
+fn band_param<S: Source>(
+    src: &mut S,
+    speed: f64,
+    three_d: bool,
+) -> (Param, (f64, f64), f64, &'static str) {
+    match src.below(10) {
         0..=6 => (
             Param::Course { speed },
             (0.0, TAU),
@@ -295,19 +318,6 @@ pub fn band_case<S: Source>(src: &mut S) -> Drawn {
             0.1f64.to_radians(),
             "course",
         ),
-    };
-    let aimed = ["thin", "tangent", "plain", "plain"][aim];
-    Drawn {
-        mode: format!(
-            "bands/{pname}/{}/{aimed}",
-            if three_d { "3d" } else { "2d" }
-        ),
-        case: WayoutCase::Bands {
-            case,
-            param,
-            range,
-            unknown_max,
-        },
     }
 }
 

@@ -73,6 +73,8 @@ pub struct AssureArgs {
     /// is `pipeline` (the default) or `sampled` (the canary), and `--contract` and `--aim`
     /// are refused (paper A's). With `moving` (flights against static and keyframed areas:
     /// docs/assurance.md, "Moving features"), `--canary fixes-only` judges the canary.
+    /// With `wayout` (bands, recovery points, offsets: docs/assurance.md, "The way
+    /// out"), `--canary sampled-bands` or `bisector-offset` judges a canary.
     #[arg(long, value_enum, default_value_t = PaperArg::A)]
     pub paper: PaperArg,
     /// Hunt the certified intervals (inside, near_D, breach_D: docs/cases.md) and keep-in

@@ -11,8 +11,8 @@
 //!   [`MAX_DRAWS`] per case, aimed values first.
 //! - Recovery (the `recovery` contract, §II.G's distance): the point exactly meets its
 //!   condition (`recovery_breaks_condition`), min_lo ≤ m ≤ |x − s| ≤ dist_hi
-//!   (`recovery_min_outside`), "clear" exactly when s meets it
-//!   (`recovery_clear_wrong`), impossible exactly when nothing meets it
+//!   (`recovery_min_outside`), "clear" only when s meets it (a certified flag:
+//!   `recovery_clear_wrong`), impossible exactly when nothing meets it
 //!   (`recovery_impossible_wrong`, `recovery_point_where_none`).
 //! - Offsets (the `offset` contract, §II's polygon): the oracle's exact verdict on the
 //!   rings (`offset_rings_bad`), on P ⊕ disc(D) ⊆ Q (`offset_misses_buffer`) and on
@@ -75,7 +75,7 @@ pub enum WayoutClass {
     RecoveryBreaksCondition,
     /// The exact minimum outside [min_lo, dist_hi], or |x − s| above dist_hi.
     RecoveryMinOutside,
-    /// "s is clear" said wrongly, or not said when s is.
+    /// "s is clear" said where s does not meet the condition.
     RecoveryClearWrong,
     /// "Impossible" where a point meets the condition.
     RecoveryImpossibleWrong,
@@ -150,7 +150,7 @@ impl HuntClass for WayoutClass {
             WayoutClass::BandsMalformed => "bands not tiling their range in order",
             WayoutClass::RecoveryBreaksCondition => "a recovery point breaks its condition",
             WayoutClass::RecoveryMinOutside => "the exact minimum outside [min_lo, dist_hi]",
-            WayoutClass::RecoveryClearWrong => "\"s is clear\" wrong either way",
+            WayoutClass::RecoveryClearWrong => "\"s is clear\" where s is not",
             WayoutClass::RecoveryImpossibleWrong => "\"impossible\" where a point is feasible",
             WayoutClass::RecoveryPointWhereNone => "a point where none is feasible",
             WayoutClass::OffsetRingsBad => "rings not simple, oriented, nested, disjoint",
@@ -512,7 +512,7 @@ fn sampled(
     out: bool,
 ) -> Option<WayoutClass> {
     let x = sample(buffer, result, SAMPLE_GRID).ok()??;
-    let xq = polyguard_oracle::offset::exact_point(x)?;
+    let xq = polyguard_oracle::offset::exact_point(x).ok()?;
     let inside = polyguard_oracle::offset::locate(&regions_of(result), &xq).ok()?;
     Some(match (out, inside) {
         (true, false) => WayoutClass::OffsetMissesBuffer,

@@ -593,3 +593,125 @@ fn moving_hunts_pass_merge_exactly_and_catch_their_canary() {
     let (code, _, err) = assure(&["--canary", "fixes-only", "--cases", "5"], &dirs[5]);
     assert_eq!(code, 2, "{err}");
 }
+
+/// The way-out hunt: a small run passes (seed 1's first 8 cases: bands, a recovery, an
+/// inset); two shards of a canary run merge into exactly the unsharded run's counts and
+/// worst cases; each canary is caught (exit 1) with its class kept as a regression line;
+/// a way-out report beside a moving one is refused; a canary of the other hunt is
+/// refused (exit 2).
+#[test]
+fn wayout_hunts_pass_merge_exactly_and_catch_their_canaries() {
+    let dirs: Vec<PathBuf> = [
+        "wo-real",
+        "wo-0",
+        "wo-1",
+        "wo-all",
+        "wo-merged",
+        "wo-bands",
+        "wo-mv",
+    ]
+    .iter()
+    .map(|n| out_dir(n))
+    .collect();
+    let (code, out, err) = assure(
+        &[
+            "--paper", "wayout", "--cases", "8", "--seed", "1", "--quiet",
+        ],
+        &dirs[0],
+    );
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(out.starts_with("PASS: 8 cases"), "{out}");
+    let offsets = [
+        "--paper",
+        "wayout",
+        "--canary",
+        "bisector-offset",
+        "--cases",
+        "6",
+        "--seed",
+        "1",
+        "--quiet",
+    ];
+    for (i, d) in dirs[1..3].iter().enumerate() {
+        let shard = format!("{i}/2");
+        let (code, out, err) = assure(&[&offsets[..], &["--shard", &shard]].concat(), d);
+        assert!(code == 0 || code == 1, "{out}{err}");
+    }
+    let (code, out, err) = assure(&offsets, &dirs[3]);
+    assert_eq!(code, 1, "{out}{err}");
+    let kept = out
+        .lines()
+        .find(|l| l.starts_with("kept offset_misses_buffer "))
+        .unwrap_or_else(|| panic!("{out}"));
+    let file = kept.rsplit(' ').next().unwrap_or_default();
+    let line = std::fs::read_to_string(dirs[3].join(file)).expect("the regression line");
+    let case: serde_json::Value = serde_json::from_str(line.trim()).expect("one JSON line");
+    assert_eq!(case["meta"]["class"], "offset_misses_buffer");
+    assert_eq!(case["kind"], "offset");
+    let (code, out, err) = merge(&[&dirs[1], &dirs[2]], &[], &dirs[4]);
+    assert_eq!(code, 1, "{out}{err}");
+    let read = |d: &PathBuf| -> serde_json::Value {
+        let text = std::fs::read_to_string(d.join("report.json")).expect("report.json");
+        serde_json::from_str(&text).expect("JSON")
+    };
+    let (whole, merged) = (read(&dirs[3]), read(&dirs[4]));
+    assert_eq!(whole["hunt"], "wayout");
+    for key in [
+        "cases",
+        "failed_cases",
+        "classes",
+        "modes",
+        "mode_cases",
+        "kept",
+    ] {
+        assert_eq!(whole[key], merged[key], "{key}");
+    }
+    assert!(dirs[4].join(file).exists());
+    wayout_refusals_and_the_bands_canary(&dirs[1], &dirs[4], &dirs[5], &dirs[6]);
+}
+
+/// The sampled-bands canary is caught; a way-out report beside a moving one is
+/// refused; a canary of the other hunt is refused (exit 2).
+fn wayout_refusals_and_the_bands_canary(
+    shard: &std::path::Path,
+    merged: &std::path::Path,
+    bands: &std::path::Path,
+    moving: &std::path::Path,
+) {
+    let (code, out, err) = assure(
+        &[
+            "--paper",
+            "wayout",
+            "--canary",
+            "sampled-bands",
+            "--cases",
+            "10",
+            "--seed",
+            "1",
+            "--quiet",
+        ],
+        bands,
+    );
+    assert_eq!(code, 1, "{out}{err}");
+    assert!(
+        out.lines().any(|l| l.starts_with("kept wrong_clear ")),
+        "{out}"
+    );
+    let (code, _, _) = assure(&["--paper", "moving", "--cases", "4", "--quiet"], moving);
+    assert_eq!(code, 0);
+    let (code, _, err) = merge(&[shard, moving], &[], merged);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("way-out hunts"), "{err}");
+    let (code, _, err) = assure(
+        &[
+            "--paper",
+            "wayout",
+            "--canary",
+            "fixes-only",
+            "--cases",
+            "2",
+        ],
+        moving,
+    );
+    assert_eq!(code, 2, "{err}");
+}

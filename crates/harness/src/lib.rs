@@ -21,7 +21,10 @@
 //!   [`wayout::bands`]: values drawn in each band against the exact conflict of their
 //!   velocities); [`canary_offset`]: a bisector expansion it must catch;
 //!   [`wayout::case`] and [`wayout::answer`]: a case line read for `bands`, `recover`
-//!   and `offset`, and answered as docs/way-out.md says.
+//!   and `offset`, and answered as docs/way-out.md says; [`wayout::gen`],
+//!   [`wayout::judge`]: the hunt of all three (`assure --paper wayout`).
+//! - [`hunt`]: a report shape hunts share (classes per case and mode, costs, the worst
+//!   case of each failing class); shards merge exactly.
 #![deny(missing_docs)]
 
 pub mod answer;
@@ -30,6 +33,7 @@ pub mod canary_offset;
 pub mod case;
 pub mod classify;
 pub mod gen;
+pub mod hunt;
 pub mod intervals;
 pub mod minimise;
 pub mod moving;

@@ -73,6 +73,8 @@ pub struct AssureArgs {
     /// is `pipeline` (the default) or `sampled` (the canary), and `--contract` and `--aim`
     /// are refused (paper A's). With `moving` (flights against static and keyframed areas:
     /// docs/assurance.md, "Moving features"), `--canary fixes-only` judges the canary.
+    /// With `wayout` (bands, recovery points, offsets: docs/assurance.md, "The way
+    /// out"), `--canary sampled-bands` or `bisector-offset` judges a canary.
     #[arg(long, value_enum, default_value_t = PaperArg::A)]
     pub paper: PaperArg,
     /// Hunt the certified intervals (inside, near_D, breach_D: docs/cases.md) and keep-in
@@ -83,16 +85,23 @@ pub struct AssureArgs {
     pub intervals: bool,
     /// A canary of `--paper moving`: `fixes-only` decides the relations at the fix
     /// times alone (class `moving_missed` on cells sweeping over the mover and legs
-    /// cutting a corner between fixes).
+    /// cutting a corner between fixes). Of `--paper wayout`: `sampled-bands`
+    /// (`wrong_clear`) or `bisector-offset` (`offset_misses_buffer`).
     #[arg(long, value_enum)]
     pub canary: Option<CanaryArg>,
 }
 
-/// `--canary` of `polyguard assure --paper moving`.
+/// `--canary` of `polyguard assure --paper moving` and `--paper wayout`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum CanaryArg {
-    /// The relations decided at the fix times alone.
+    /// The relations decided at the fix times alone (`--paper moving`).
     FixesOnly,
+    /// Course bands sampled every 10° and painted between samples without the margin
+    /// (`--paper wayout`: must report `wrong_clear`).
+    SampledBands,
+    /// Offsets by a PolyCARP-style bisector expansion (`--paper wayout`: must report
+    /// `offset_misses_buffer`).
+    BisectorOffset,
 }
 
 /// `--paper` of `polyguard assure`.
@@ -106,6 +115,9 @@ pub enum PaperArg {
     /// engine's certified spans against the exact truth (docs/assurance.md, "Moving
     /// features").
     Moving,
+    /// The way out: bands, recovery points, offsets and insets against the exact truth
+    /// (docs/assurance.md, "The way out").
+    Wayout,
 }
 
 /// `--aim path=1eA..1eB,buff=1eC..1eD,ends=E` → the narrowed scale space.
@@ -394,9 +406,12 @@ pub fn run(args: &AssureArgs) -> ExitCode {
     if args.paper == PaperArg::Moving {
         return run_moving(args);
     }
+    if args.paper == PaperArg::Wayout {
+        return run_wayout(args);
+    }
     if args.canary.is_some() {
         eprintln!(
-            "polyguard assure: --canary fixes-only is the moving hunt's canary: add --paper moving"
+            "polyguard assure: --canary is a canary of --paper moving or --paper wayout: add one"
         );
         return ExitCode::from(2);
     }
@@ -603,11 +618,45 @@ fn run_moving(args: &AssureArgs) -> ExitCode {
         engine: match args.canary {
             None => MovingEngine::Certified,
             Some(CanaryArg::FixesOnly) => MovingEngine::FixesOnly,
+            Some(other) => {
+                eprintln!("polyguard assure: --canary {other:?} is --paper wayout's; --paper moving's is fixes-only");
+                return ExitCode::from(2);
+            }
         },
         threads: threads(args),
         quiet: args.quiet,
     };
     super::assure_moving::run(&campaign, &args.out)
+}
+
+/// `assure --paper wayout`.
+fn run_wayout(args: &AssureArgs) -> ExitCode {
+    use polyguard_harness::wayout::judge::WayoutEngine;
+    if args.contract || args.aim.is_some() || args.intervals || args.engine != EngineArg::F64 {
+        eprintln!("polyguard assure: --paper wayout takes --cases, --seed, --shard, --threads, --out, --quiet and --canary sampled-bands|bisector-offset; drop --contract, --aim, --intervals and --engine");
+        return ExitCode::from(2);
+    }
+    let engine = match args.canary {
+        None => WayoutEngine::Certified,
+        Some(CanaryArg::SampledBands) => WayoutEngine::SampledBands,
+        Some(CanaryArg::BisectorOffset) => WayoutEngine::BisectorOffset,
+        Some(CanaryArg::FixesOnly) => {
+            eprintln!("polyguard assure: --canary fixes-only is --paper moving's; --paper wayout's are sampled-bands and bisector-offset");
+            return ExitCode::from(2);
+        }
+    };
+    let hunt = super::assure_wayout::WayoutHunt {
+        seed: args.seed,
+        engine,
+    };
+    let run = super::assure_common::HuntRun {
+        seed: args.seed,
+        shard: args.shard.unwrap_or((0, 1)),
+        cases: args.cases,
+        threads: threads(args),
+        quiet: args.quiet,
+    };
+    super::assure_wayout::run(&hunt, &run, &args.out)
 }
 
 /// `assure --paper b`.
@@ -729,10 +778,12 @@ enum Hunt {
     PaperB,
     Intervals,
     Moving,
+    Wayout,
 }
 
 /// The hunt of every report in `texts`: paper B's say so (`"paper": "b"`), interval
-/// and moving hunts too (`"hunt": "intervals"`, `"hunt": "moving"`); reports of different hunts are refused.
+/// moving and way-out hunts too (`"hunt": "intervals"`, `"moving"`, `"wayout"`); reports of
+/// different hunts are refused.
 fn hunt_of(texts: &[String]) -> Result<Hunt, String> {
     let member = |t: &str, key: &str| -> Option<String> {
         serde_json::from_str::<serde_json::Value>(t)
@@ -754,6 +805,19 @@ fn hunt_of(texts: &[String]) -> Result<Hunt, String> {
         .iter()
         .filter(|t| member(t, "hunt").as_deref() == Some("moving"))
         .count();
+    let wo = texts
+        .iter()
+        .filter(|t| member(t, "hunt").as_deref() == Some("wayout"))
+        .count();
+    if wo > 0 {
+        return if wo == n {
+            Ok(Hunt::Wayout)
+        } else {
+            Err(format!(
+                "{wo} of the {n} reports are way-out hunts and the rest are not: merge each hunt apart"
+            ))
+        };
+    }
     if mv > 0 {
         return if mv == n {
             Ok(Hunt::Moving)
@@ -792,6 +856,11 @@ fn merge(paths: &[PathBuf], out: &Path, partial: bool) -> ExitCode {
         Err(e) => return fail(e),
         Ok(Hunt::Intervals) => return super::assure_intervals::merge(paths, &texts, out, partial),
         Ok(Hunt::Moving) => return super::assure_moving::merge(paths, &texts, out, partial),
+        Ok(Hunt::Wayout) => {
+            return super::assure_common::merge_hunt::<polyguard_harness::wayout::judge::WayoutClass>(
+                paths, &texts, out, partial,
+            )
+        }
         Ok(Hunt::PaperB) => return super::assure_b::merge(paths, &texts, out, partial),
         Ok(Hunt::PaperA) => {}
     }

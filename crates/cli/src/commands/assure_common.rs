@@ -1,6 +1,9 @@
-//! What both papers' campaigns share (`polyguard assure`, `assure --paper b`): the
-//! progress shown on standard error while the cases run, and the report file.
+//! What the campaigns share (`polyguard assure`, `assure --paper b`, the other hunts):
+//! the progress shown on standard error while the cases run, the report file, and for
+//! a hunt reporting in the shared shape ([`polyguard_harness::hunt::HuntReport`]) the
+//! whole run over threads and shards ([`run_hunt`]) and its merge ([`merge_hunt`]).
 
+use std::collections::BTreeMap;
 use std::fs;
 use std::io::IsTerminal;
 use std::path::Path;
@@ -8,6 +11,8 @@ use std::process::ExitCode;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
+
+use polyguard_harness::hunt::{HuntClass, HuntReport, Judged, Kept};
 
 /// When standard error is not a terminal, a progress line is printed at least this often
 /// (and at every tenth of the cases).
@@ -163,6 +168,187 @@ pub fn write_report<T: serde::Serialize>(report: &T, out: &Path) -> Result<(), E
         eprintln!("polyguard assure: cannot write {}: {e}", path.display());
         ExitCode::from(2)
     })
+}
+
+/// A hunt in the shared report shape: how case k is drawn, judged and written.
+pub trait Hunt: Sync {
+    /// A drawn case.
+    type Case;
+    /// Its classes.
+    type Class: HuntClass + Send;
+    /// The hunt's name in reports (`"hunt"`).
+    fn name(&self) -> &'static str;
+    /// The engine's name in reports.
+    fn engine(&self) -> &'static str;
+    /// Case k of the campaign and its generator mode.
+    fn case(&self, k: u64) -> (Self::Case, String);
+    /// The judgement of a case.
+    fn judge(&self, case: &Self::Case) -> Judged<Self::Class>;
+    /// A case as its regression line (one JSON object), with `meta` merged in.
+    fn line(&self, case: &Self::Case, meta: serde_json::Value) -> String;
+}
+
+/// Where a run of a hunt goes: seed, shard i of N, size, threads, progress.
+pub struct HuntRun {
+    /// The seed.
+    pub seed: u64,
+    /// Shard i of N.
+    pub shard: (u64, u64),
+    /// The campaign's size (all shards).
+    pub cases: u64,
+    /// Worker threads.
+    pub threads: usize,
+    /// No progress lines.
+    pub quiet: bool,
+}
+
+/// Per failing class, the worst case kept so far and its regression line.
+type Worst<C> = BTreeMap<C, (Kept<C>, String)>;
+
+/// Runs a hunt's shard into `out` (report.json, summary.txt and, per failing class, the
+/// worst case as a regression line in counterexamples/CLASS-K.jsonl); exit 1 on a
+/// failure.
+pub fn run_hunt<H: Hunt>(hunt: &H, run: &HuntRun, out: &Path) -> ExitCode {
+    if let Err(e) = fs::create_dir_all(out.join("counterexamples")) {
+        eprintln!("polyguard assure: cannot create {}: {e}", out.display());
+        return ExitCode::from(2);
+    }
+    let (shard_i, shard_n) = run.shard;
+    let mine = polyguard_harness::report::shard_size(run.cases, shard_i, shard_n);
+    let progress = CampaignProgress::new(mine, run.quiet);
+    let start = Instant::now();
+    let next = AtomicU64::new(0);
+    let report: Mutex<HuntReport<H::Class>> =
+        Mutex::new(HuntReport::new(hunt.name(), run.seed, hunt.engine()));
+    // per failing class, the worst case's severity, index and regression line
+    let worst: Mutex<Worst<H::Class>> = Mutex::new(BTreeMap::new());
+    std::thread::scope(|scope| {
+        for _ in 0..run.threads.max(1) {
+            scope.spawn(|| {
+                let mut local = HuntReport::new(hunt.name(), run.seed, hunt.engine());
+                loop {
+                    let j = next.fetch_add(1, Ordering::Relaxed);
+                    if j >= mine {
+                        break;
+                    }
+                    let k = j * shard_n + shard_i;
+                    let (case, mode) = hunt.case(k);
+                    let v = hunt.judge(&case);
+                    local.add(&v, &mode);
+                    for &c in v.classes.iter().filter(|c| c.is_failure()) {
+                        let kept = Kept {
+                            index: k,
+                            class: c,
+                            mode: mode.clone(),
+                            severity: v.severity,
+                            case_file: format!("counterexamples/{}-{k}.jsonl", c.name()),
+                        };
+                        if let Ok(mut w) = worst.lock() {
+                            let better = w.get(&c).map_or(true, |(o, _)| kept.worse_than(o));
+                            if better {
+                                let meta = serde_json::json!({
+                                    "id": format!("{}-{k}", c.name()),
+                                    "hunt": hunt.name(),
+                                    "seed": run.seed,
+                                    "index": k,
+                                    "class": c.name(),
+                                    "classes": v.classes.iter().map(|c| c.name()).collect::<Vec<_>>(),
+                                    "mode": mode,
+                                    "severity": v.severity,
+                                    "engine": hunt.engine(),
+                                });
+                                w.insert(c, (kept, hunt.line(&case, meta)));
+                            }
+                        }
+                    }
+                    progress.inc(v.failed());
+                }
+                if let Ok(mut r) = report.lock() {
+                    r.absorb(&local);
+                }
+            });
+        }
+    });
+    progress.finish();
+    let mut report = report
+        .into_inner()
+        .unwrap_or_else(|_| HuntReport::new(hunt.name(), run.seed, hunt.engine()));
+    report.shards = vec![format!("{shard_i}/{shard_n}")];
+    report.campaign_cases = run.cases;
+    report.wall_seconds = start.elapsed().as_secs_f64();
+    report.kept.clear();
+    for (_, (kept, line)) in worst.into_inner().unwrap_or_default() {
+        match fs::write(out.join(&kept.case_file), line + "\n") {
+            Ok(()) => report.keep(kept),
+            Err(e) => eprintln!("polyguard assure: cannot write {}: {e}", kept.case_file),
+        }
+    }
+    finish_hunt(&report, out)
+}
+
+/// Writes report.json and summary.txt and prints the summary; exit 1 on a failure.
+pub fn finish_hunt<C: HuntClass>(report: &HuntReport<C>, out: &Path) -> ExitCode {
+    if let Err(code) = write_report(report, out) {
+        return code;
+    }
+    let mut text = report.summary();
+    if report.rejected > 0 {
+        text += &format!("{} generated cases were rejected\n", report.rejected);
+    }
+    for k in &report.kept {
+        text += &format!(
+            "kept {} ({}, worst: severity {:e}): {}\n",
+            k.class.name(),
+            k.mode,
+            k.severity,
+            k.case_file
+        );
+    }
+    text += &format!("report: {}\n", out.join("report.json").display());
+    let _ = fs::write(out.join("summary.txt"), &text);
+    print!("{text}");
+    if report.failures() > 0 || report.rejected > 0 {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    }
+}
+
+/// `assure merge` of reports in the shared shape: joins the shards (the worst case of
+/// each class over all of them) and copies the kept cases' files.
+pub fn merge_hunt<C: HuntClass>(
+    paths: &[std::path::PathBuf],
+    texts: &[String],
+    out: &Path,
+    partial: bool,
+) -> ExitCode {
+    let fail = |msg: String| {
+        eprintln!("polyguard assure merge: {msg}");
+        ExitCode::from(2)
+    };
+    let mut reports = Vec::with_capacity(texts.len());
+    for (p, t) in paths.iter().zip(texts) {
+        match HuntReport::<C>::from_json(t) {
+            Ok(r) => reports.push(r),
+            Err(e) => return fail(format!("{} is not a report of this hunt: {e}", p.display())),
+        }
+    }
+    let merged = match HuntReport::merge_campaign(&reports, partial) {
+        Ok(m) => m,
+        Err(e) => return fail(e),
+    };
+    if let Err(e) = fs::create_dir_all(out.join("counterexamples")) {
+        return fail(format!("cannot create {}: {e}", out.display()));
+    }
+    for (p, r) in paths.iter().zip(&reports) {
+        let dir = p.parent().unwrap_or_else(|| Path::new("."));
+        for k in r.kept.iter().filter(|k| merged.kept.contains(k)) {
+            if let Err(e) = fs::copy(dir.join(&k.case_file), out.join(&k.case_file)) {
+                return fail(format!("cannot copy {}: {e}", k.case_file));
+            }
+        }
+    }
+    finish_hunt(&merged, out)
 }
 
 #[cfg(test)]

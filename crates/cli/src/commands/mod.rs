@@ -4,6 +4,7 @@ pub mod assure_b;
 pub mod assure_common;
 pub mod assure_intervals;
 pub mod assure_moving;
+pub mod assure_wayout;
 pub mod bands;
 pub mod conflicts;
 pub mod detect;

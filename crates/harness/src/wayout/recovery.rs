@@ -156,7 +156,11 @@ fn scale(qy: &Query) -> f64 {
 
 /// Checks the engine's answer to the query against the oracle.
 pub fn check_engine(qy: &Query) -> Verdict {
-    let got = engine(qy);
+    check_answer(qy, engine(qy))
+}
+
+/// Checks an answer `got` of the engine to the query against the oracle.
+pub fn check_answer(qy: &Query, got: Result<Recovery, RecoveryError>) -> Verdict {
     let Some(ex) = exact(qy) else {
         return match got {
             Err(e) => Verdict::Refused(e),
@@ -290,7 +294,7 @@ pub fn draw_query<S: Source>(src: &mut S) -> Query {
 }
 
 /// The float margin of [`PolycarpReport::margin`] (uncertified, for reports).
-fn margin(qy: &Query, x: Vect2) -> f64 {
+pub fn margin(qy: &Query, x: Vect2) -> f64 {
     let n = qy.p.len();
     let to_boundary = (0..n)
         .map(|i| {

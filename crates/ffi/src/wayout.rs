@@ -512,12 +512,17 @@ fn recovery_failure(e: &RecoveryError) -> Failure {
     let rest = text
         .strip_prefix(&format!("{field}: "))
         .unwrap_or(text.as_str());
-    let c = match field {
+    Failure::new(code, format!("{}: {rest}", polygon_field(field)))
+}
+
+/// The C field of an engine field of `polyguard::recovery` or `polyguard::offset` (the
+/// polygon's `p` and `vels` are `pg_polygon`'s arrays; the others keep their names).
+fn polygon_field(engine: &str) -> &str {
+    match engine {
         "p" => "polygon.vertices",
         "vels" => "polygon.velocities",
         other => other,
-    };
-    Failure::new(code, format!("{c}: {rest}"))
+    }
 }
 
 /// The polygon's vertices and, unless NULL, velocities.
@@ -622,11 +627,6 @@ pub unsafe extern "C" fn pg_recovery(
 
 /// The status and message of an offset error, its field in C's names.
 fn offset_failure(e: &OffsetError) -> Failure {
-    let c = |field: &str| match field {
-        "p" => "polygon.vertices".to_string(),
-        "vels" => "polygon.velocities".to_string(),
-        other => other.to_string(),
-    };
     match e {
         OffsetError::Invalid { field, reason } => {
             let code = if *reason == "not finite" {
@@ -640,7 +640,7 @@ fn offset_failure(e: &OffsetError) -> Failure {
             } else {
                 PG_ERR_BAD_PARAMETER
             };
-            Failure::new(code, format!("{}: {reason}", c(field)))
+            Failure::new(code, format!("{}: {reason}", polygon_field(field)))
         }
         OffsetError::Polygon { fault } => {
             let code = match fault {

@@ -502,12 +502,7 @@ fn recovery_error(py: Python<'_>, e: &RecoveryError) -> PyErr {
     let rest = text
         .strip_prefix(&format!("{field}: "))
         .unwrap_or(text.as_str());
-    let f = match field {
-        "p" => "vertices",
-        "vels" => "velocities",
-        other => other,
-    };
-    crate::error(py, f, &format!("{f}: {rest}"))
+    polygon_error(py, field, rest)
 }
 
 /// The recovery point of `s` for the polygon `vertices` (counterclockwise; at time `t`
@@ -590,6 +585,12 @@ fn offset_error(py: Python<'_>, e: &OffsetError) -> PyErr {
         }
         OffsetError::Uncertified { .. } => ("p", e.to_string()),
     };
+    polygon_error(py, field, &rest)
+}
+
+/// `polyguard.Error` of a recovery or offset error's field and text, the engine's
+/// `p` and `vels` named as Python's `vertices` and `velocities`.
+fn polygon_error(py: Python<'_>, field: &str, rest: &str) -> PyErr {
     let f = match field {
         "p" => "vertices",
         "vels" => "velocities",

@@ -449,6 +449,123 @@ unsafe fn deref<'a, T>(ptr: *const T, field: &str) -> Result<&'a T, Failure> {
     unsafe { ptr.as_ref() }.ok_or_else(|| Failure::null(field))
 }
 
+/// The caller's struct an entry point writes its answer into, or the failure naming
+/// it (misaligned or NULL); checked before `guard` so the answer's default can be
+/// written first.
+///
+/// # Safety
+/// A non-NULL `ptr` must point to a writable `T`.
+unsafe fn out_of<'a, T>(ptr: *mut T, field: &str) -> Result<&'a mut T, Failure> {
+    if !ptr.is_aligned() {
+        return Err(Failure::misaligned(field));
+    }
+    // SAFETY: aligned, and the caller's promise.
+    unsafe { ptr.as_mut() }.ok_or_else(|| Failure::null(field))
+}
+
+/// A caller's output buffer of `cap` elements: NULL or misaligned is refused unless
+/// `cap` is 0.
+fn buffer_ok<T>(ptr: *mut T, cap: usize, field: &str) -> Result<(), Failure> {
+    if cap > 0 && ptr.is_null() {
+        return Err(Failure::null(field));
+    }
+    if cap > 0 && !ptr.is_aligned() {
+        return Err(Failure::misaligned(field));
+    }
+    Ok(())
+}
+
+/// The `PG_ERR_CAPACITY` failure of a buffer `field` with room for `cap` of the
+/// `found` answers (`what` names them): the first `cap` are written.
+fn capacity_failure(field: &str, what: &str, found: usize, cap: usize) -> Failure {
+    Failure::new(
+        PG_ERR_CAPACITY,
+        format!(
+            "{field}: {found} {what}, room for {cap}; the first {cap} are written, call again \
+             with cap >= {found}"
+        ),
+    )
+}
+
+/// The checked arrays of a `pg_polygons` (offsets from 0, never decreasing; each
+/// array of the length the offsets say).
+struct FlatPolygons<'a> {
+    /// `count + 1` offsets into `vertices`.
+    offsets: &'a [usize],
+    /// All vertices, polygon after polygon.
+    vertices: &'a [PgVec2],
+    /// As many velocities, or None (at rest).
+    velocities: Option<&'a [PgVec2]>,
+    /// `count` slabs, or None (2D).
+    slabs: Option<&'a [PgSlab]>,
+}
+
+/// Reads the flat arrays of `polys`, their fields named `{name}.offsets` and so on
+/// (the layout `pg_detect_batch` documents).
+///
+/// # Safety
+/// As `pg_detect_batch`'s `polygons`.
+unsafe fn flat_polygons<'a>(polys: &PgPolygons, name: &str) -> Result<FlatPolygons<'a>, Failure> {
+    let offsets_len = polys
+        .count
+        .checked_add(1)
+        .ok_or_else(|| Failure::new(PG_ERR_WRONG_LENGTH, format!("{name}.count: too large")))?;
+    // SAFETY (this function): the caller's promise of valid pointers and lengths.
+    let offsets = unsafe { slice_of(polys.offsets, offsets_len, &format!("{name}.offsets")) }?;
+    if offsets[0] != 0 {
+        return Err(Failure::new(
+            PG_ERR_WRONG_LENGTH,
+            format!("{name}.offsets[0]: {}, 0 expected", offsets[0]),
+        ));
+    }
+    if let Some(i) = (1..offsets.len()).find(|&i| offsets[i] < offsets[i - 1]) {
+        return Err(Failure::new(
+            PG_ERR_WRONG_LENGTH,
+            format!(
+                "{name}.offsets[{i}]: {} is less than offsets[{}] = {}",
+                offsets[i],
+                i - 1,
+                offsets[i - 1]
+            ),
+        ));
+    }
+    let total = offsets[polys.count];
+    let vertices = unsafe { slice_of(polys.vertices, total, &format!("{name}.vertices")) }?;
+    let velocities = if polys.velocities.is_null() {
+        None
+    } else {
+        Some(unsafe { slice_of(polys.velocities, total, &format!("{name}.velocities")) }?)
+    };
+    let slabs = if polys.slabs.is_null() {
+        None
+    } else {
+        Some(unsafe { slice_of(polys.slabs, polys.count, &format!("{name}.slabs")) }?)
+    };
+    Ok(FlatPolygons {
+        offsets,
+        vertices,
+        velocities,
+        slabs,
+    })
+}
+
+/// A polygon's vertex array and, unless NULL, its velocity array (`polygon->n` each).
+///
+/// # Safety
+/// As `pg_detect`'s `polygon`.
+unsafe fn polygon_slices<'a>(
+    polygon: &PgPolygon,
+) -> Result<(&'a [PgVec2], Option<&'a [PgVec2]>), Failure> {
+    // SAFETY (this function): the caller's promise about the polygon's arrays.
+    let vertices = unsafe { slice_of(polygon.vertices, polygon.n, "polygon.vertices") }?;
+    let velocities = if polygon.velocities.is_null() {
+        None
+    } else {
+        Some(unsafe { slice_of(polygon.velocities, polygon.n, "polygon.velocities") }?)
+    };
+    Ok((vertices, velocities))
+}
+
 /// The engine's vectors from C's (paper A §I's points and velocities).
 fn vects(v: &[PgVec2]) -> Vec<Vect2> {
     v.iter().map(|p| Vect2::new(p.x, p.y)).collect()
@@ -500,13 +617,7 @@ unsafe fn case_of(
     let p = params_of(params)?;
     let pt = point_of(point).map_err(|e| Failure::case(e, None))?;
     // SAFETY: the caller's promise about the polygon's arrays.
-    let vertices = unsafe { slice_of(polygon.vertices, polygon.n, "polygon.vertices") }?;
-    let velocities = if polygon.velocities.is_null() {
-        None
-    } else {
-        // SAFETY: as above.
-        Some(unsafe { slice_of(polygon.velocities, polygon.n, "polygon.velocities") }?)
-    };
+    let (vertices, velocities) = unsafe { polygon_slices(polygon) }?;
     let slab = (polygon.has_slab != 0).then_some(&polygon.slab);
     let poly = polygon_of(vertices, velocities, slab).map_err(|e| Failure::case(e, None))?;
     Case::new(params.lookahead, pt, poly, p).map_err(|e| Failure::case(e, None))
@@ -611,13 +722,10 @@ pub unsafe extern "C" fn pg_detect(
     polygon: *const PgPolygon,
     out: *mut PgDetection,
 ) -> c_int {
-    if !out.is_aligned() {
-        return guard(|| Err(Failure::misaligned("out")));
-    }
-    // SAFETY: aligned, and the caller's promise.
-    let out = match unsafe { out.as_mut() } {
-        Some(o) => o,
-        None => return guard(|| Err(Failure::null("out"))),
+    // SAFETY: the caller's promise.
+    let out = match unsafe { out_of(out, "out") } {
+        Ok(o) => o,
+        Err(f) => return guard(|| Err(f)),
     };
     *out = CONSERVATIVE_DETECTION;
     guard(|| {
@@ -650,13 +758,10 @@ pub unsafe extern "C" fn pg_detect_time(
     polygon: *const PgPolygon,
     out: *mut PgEntryTime,
 ) -> c_int {
-    if !out.is_aligned() {
-        return guard(|| Err(Failure::misaligned("out")));
-    }
-    // SAFETY: aligned, and the caller's promise.
-    let out = match unsafe { out.as_mut() } {
-        Some(o) => o,
-        None => return guard(|| Err(Failure::null("out"))),
+    // SAFETY: the caller's promise.
+    let out = match unsafe { out_of(out, "out") } {
+        Ok(o) => o,
+        Err(f) => return guard(|| Err(f)),
     };
     *out = PgEntryTime {
         kind: PG_ENTRY_POSSIBLE,
@@ -718,13 +823,10 @@ pub unsafe extern "C" fn pg_detect_batch(
     cap: usize,
     n_hits: *mut usize,
 ) -> c_int {
-    if !n_hits.is_aligned() {
-        return guard(|| Err(Failure::misaligned("n_hits")));
-    }
-    // SAFETY: aligned, and the caller's promise.
-    let n_hits = match unsafe { n_hits.as_mut() } {
-        Some(n) => n,
-        None => return guard(|| Err(Failure::null("n_hits"))),
+    // SAFETY: the caller's promise.
+    let n_hits = match unsafe { out_of(n_hits, "n_hits") } {
+        Ok(n) => n,
+        Err(f) => return guard(|| Err(f)),
     };
     *n_hits = 0;
     guard(|| {
@@ -732,46 +834,8 @@ pub unsafe extern "C" fn pg_detect_batch(
         let params = unsafe { deref(params, "params") }?;
         let polys = unsafe { deref(polygons, "polygons") }?;
         let points = unsafe { slice_of(points, n_points, "points") }?;
-        if cap > 0 && hits.is_null() {
-            return Err(Failure::null("hits"));
-        }
-        if cap > 0 && !hits.is_aligned() {
-            return Err(Failure::misaligned("hits"));
-        }
-        let offsets_len = polys
-            .count
-            .checked_add(1)
-            .ok_or_else(|| Failure::new(PG_ERR_WRONG_LENGTH, "polygons.count: too large".into()))?;
-        let offsets = unsafe { slice_of(polys.offsets, offsets_len, "polygons.offsets") }?;
-        if offsets[0] != 0 {
-            return Err(Failure::new(
-                PG_ERR_WRONG_LENGTH,
-                format!("polygons.offsets[0]: {}, 0 expected", offsets[0]),
-            ));
-        }
-        if let Some(i) = (1..offsets.len()).find(|&i| offsets[i] < offsets[i - 1]) {
-            return Err(Failure::new(
-                PG_ERR_WRONG_LENGTH,
-                format!(
-                    "polygons.offsets[{i}]: {} is less than offsets[{}] = {}",
-                    offsets[i],
-                    i - 1,
-                    offsets[i - 1]
-                ),
-            ));
-        }
-        let total = offsets[polys.count];
-        let vertices = unsafe { slice_of(polys.vertices, total, "polygons.vertices") }?;
-        let velocities = if polys.velocities.is_null() {
-            None
-        } else {
-            Some(unsafe { slice_of(polys.velocities, total, "polygons.velocities") }?)
-        };
-        let slabs = if polys.slabs.is_null() {
-            None
-        } else {
-            Some(unsafe { slice_of(polys.slabs, polys.count, "polygons.slabs") }?)
-        };
+        buffer_ok(hits, cap, "hits")?;
+        let flat = unsafe { flat_polygons(polys, "polygons") }?;
         let p = params_of(params)?;
         let pts = points
             .iter()
@@ -782,11 +846,11 @@ pub unsafe extern "C" fn pg_detect_batch(
             .collect::<Result<Vec<_>, _>>()?;
         let mut polygons = Vec::with_capacity(polys.count);
         for i in 0..polys.count {
-            let r = offsets[i]..offsets[i + 1];
+            let r = flat.offsets[i]..flat.offsets[i + 1];
             let poly = polygon_of(
-                &vertices[r.clone()],
-                velocities.map(|v| &v[r]),
-                slabs.map(|s| &s[i]),
+                &flat.vertices[r.clone()],
+                flat.velocities.map(|v| &v[r]),
+                flat.slabs.map(|s| &s[i]),
             )
             .map_err(|e| Failure::case(e, Some(("polygon.", format!("polygons[{i}].")))))?;
             polygons.push(poly);
@@ -807,14 +871,7 @@ pub unsafe extern "C" fn pg_detect_batch(
         }
         *n_hits = found.len();
         if found.len() > cap {
-            return Err(Failure::new(
-                PG_ERR_CAPACITY,
-                format!(
-                    "hits: {} hits, room for {cap}; the first {cap} are written, call again with cap >= {}",
-                    found.len(),
-                    found.len()
-                ),
-            ));
+            return Err(capacity_failure("hits", "hits", found.len(), cap));
         }
         Ok(())
     })
@@ -909,22 +966,14 @@ pub unsafe extern "C" fn pg_intervals(
     cap: usize,
     n_out: *mut usize,
 ) -> c_int {
-    if !n_out.is_aligned() {
-        return guard(|| Err(Failure::misaligned("n_out")));
-    }
-    // SAFETY: aligned, and the caller's promise.
-    let n_out = match unsafe { n_out.as_mut() } {
-        Some(n) => n,
-        None => return guard(|| Err(Failure::null("n_out"))),
+    // SAFETY: the caller's promise.
+    let n_out = match unsafe { out_of(n_out, "n_out") } {
+        Ok(n) => n,
+        Err(f) => return guard(|| Err(f)),
     };
     *n_out = 1;
     guard(|| {
-        if cap > 0 && out.is_null() {
-            return Err(Failure::null("out"));
-        }
-        if cap > 0 && !out.is_aligned() {
-            return Err(Failure::misaligned("out"));
-        }
+        buffer_ok(out, cap, "out")?;
         if cap > 0 {
             // SAFETY: non-NULL, aligned, room for cap ≥ 1 spans (the caller's promise).
             unsafe { out.write(POSSIBLE_ALWAYS) };
@@ -940,15 +989,7 @@ pub unsafe extern "C" fn pg_intervals(
         }
         *n_out = spans.len();
         if spans.len() > cap {
-            return Err(Failure::new(
-                PG_ERR_CAPACITY,
-                format!(
-                    "out: {} spans, room for {cap}; the first {cap} are written, call again \
-                     with cap >= {}",
-                    spans.len(),
-                    spans.len()
-                ),
-            ));
+            return Err(capacity_failure("out", "spans", spans.len(), cap));
         }
         Ok(())
     })
@@ -979,13 +1020,10 @@ pub unsafe extern "C" fn pg_detect_exit(
     sep: *const PgSeparation,
     out: *mut PgDetection,
 ) -> c_int {
-    if !out.is_aligned() {
-        return guard(|| Err(Failure::misaligned("out")));
-    }
-    // SAFETY: aligned, and the caller's promise.
-    let out = match unsafe { out.as_mut() } {
-        Some(o) => o,
-        None => return guard(|| Err(Failure::null("out"))),
+    // SAFETY: the caller's promise.
+    let out = match unsafe { out_of(out, "out") } {
+        Ok(o) => o,
+        Err(f) => return guard(|| Err(f)),
     };
     *out = CONSERVATIVE_DETECTION;
     guard(|| {

@@ -17,10 +17,10 @@ use polyguard::ring::RingFault;
 use polyguard::{Separation, Vect2};
 
 use crate::{
-    deref, guard, slice_of, vects, Failure, PgPoint, PgPolygon, PgPolygons, PgSeparation, PgSlab,
-    PgVec2, PG_ERR_BAD_PARAMETER, PG_ERR_CLOCKWISE, PG_ERR_DIMENSION_MISMATCH, PG_ERR_NOT_FINITE,
-    PG_ERR_NULL_POINTER, PG_ERR_SELF_INTERSECTING, PG_ERR_TOO_FEW_VERTICES, PG_ERR_WRONG_LENGTH,
-    PG_ERR_ZERO_AREA,
+    buffer_ok, capacity_failure, deref, flat_polygons, guard, out_of, polygon_slices, vects,
+    Failure, PgPoint, PgPolygon, PgPolygons, PgSeparation, PgVec2, PG_ERR_BAD_PARAMETER,
+    PG_ERR_CLOCKWISE, PG_ERR_DIMENSION_MISMATCH, PG_ERR_NOT_FINITE, PG_ERR_SELF_INTERSECTING,
+    PG_ERR_TOO_FEW_VERTICES, PG_ERR_WRONG_LENGTH, PG_ERR_ZERO_AREA,
 };
 
 /// The engine could not certify an answer (a near-degenerate input within rounding, or
@@ -198,53 +198,20 @@ struct Owned {
 unsafe fn obstacles_of(polygons: *const PgPolygons) -> Result<Owned, Failure> {
     // SAFETY (this function): the caller's promise of valid pointers and lengths.
     let polys = unsafe { deref(polygons, "obstacles") }?;
-    let offsets_len = polys
-        .count
-        .checked_add(1)
-        .ok_or_else(|| Failure::new(PG_ERR_WRONG_LENGTH, "obstacles.count: too large".into()))?;
-    let offsets = unsafe { slice_of(polys.offsets, offsets_len, "obstacles.offsets") }?;
-    if offsets[0] != 0 {
-        return Err(Failure::new(
-            PG_ERR_WRONG_LENGTH,
-            format!("obstacles.offsets[0]: {}, 0 expected", offsets[0]),
-        ));
-    }
-    if let Some(i) = (1..offsets.len()).find(|&i| offsets[i] < offsets[i - 1]) {
-        return Err(Failure::new(
-            PG_ERR_WRONG_LENGTH,
-            format!(
-                "obstacles.offsets[{i}]: {} is less than offsets[{}] = {}",
-                offsets[i],
-                i - 1,
-                offsets[i - 1]
-            ),
-        ));
-    }
-    let total = offsets[polys.count];
-    let vertices = unsafe { slice_of(polys.vertices, total, "obstacles.vertices") }?;
-    let velocities = if polys.velocities.is_null() {
-        None
-    } else {
-        Some(unsafe { slice_of(polys.velocities, total, "obstacles.velocities") }?)
-    };
-    let slabs: Option<&[PgSlab]> = if polys.slabs.is_null() {
-        None
-    } else {
-        Some(unsafe { slice_of(polys.slabs, polys.count, "obstacles.slabs") }?)
-    };
+    let flat = unsafe { flat_polygons(polys, "obstacles") }?;
     let mut owned = Owned {
         p: Vec::with_capacity(polys.count),
         vels: Vec::with_capacity(polys.count),
         slabs: Vec::with_capacity(polys.count),
     };
     for i in 0..polys.count {
-        let r = offsets[i]..offsets[i + 1];
-        owned.p.push(vects(&vertices[r.clone()]));
-        owned.vels.push(match velocities {
+        let r = flat.offsets[i]..flat.offsets[i + 1];
+        owned.p.push(vects(&flat.vertices[r.clone()]));
+        owned.vels.push(match flat.velocities {
             Some(v) => vects(&v[r]),
             None => vec![Vect2::new(0.0, 0.0); r.len()],
         });
-        owned.slabs.push(slabs.map(|s| Slab {
+        owned.slabs.push(flat.slabs.map(|s| Slab {
             bottom: s[i].bottom,
             top: s[i].top,
             vsp: s[i].vz,
@@ -299,13 +266,10 @@ unsafe fn bands_call(
     cap: usize,
     info: *mut PgBandsInfo,
 ) -> c_int {
-    if !info.is_aligned() {
-        return guard(|| Err(Failure::misaligned("info")));
-    }
-    // SAFETY: aligned, and the caller's promise.
-    let info = match unsafe { info.as_mut() } {
-        Some(i) => i,
-        None => return guard(|| Err(Failure::null("info"))),
+    // SAFETY: the caller's promise.
+    let info = match unsafe { out_of(info, "info") } {
+        Ok(i) => i,
+        Err(f) => return guard(|| Err(f)),
     };
     let (lo, hi) = family.range();
     let width = hi - lo;
@@ -319,12 +283,7 @@ unsafe fn bands_call(
         met: 0,
     };
     guard(|| {
-        if cap > 0 && out.is_null() {
-            return Err(Failure::null("out"));
-        }
-        if cap > 0 && !out.is_aligned() {
-            return Err(Failure::misaligned("out"));
-        }
+        buffer_ok(out, cap, "out")?;
         if cap > 0 {
             // SAFETY: non-NULL, aligned, room for cap ≥ 1 bands (the caller's promise).
             unsafe {
@@ -347,15 +306,7 @@ unsafe fn bands_call(
             met: c_int::from(answer.met),
         };
         if answer.bands.len() > cap {
-            return Err(Failure::new(
-                crate::PG_ERR_CAPACITY,
-                format!(
-                    "out: {} bands, room for {cap}; the first {cap} are written, call again \
-                     with cap >= {}",
-                    answer.bands.len(),
-                    answer.bands.len()
-                ),
-            ));
+            return Err(capacity_failure("out", "bands", answer.bands.len(), cap));
         }
         Ok(())
     })
@@ -561,12 +512,17 @@ fn recovery_failure(e: &RecoveryError) -> Failure {
     let rest = text
         .strip_prefix(&format!("{field}: "))
         .unwrap_or(text.as_str());
-    let c = match field {
+    Failure::new(code, format!("{}: {rest}", polygon_field(field)))
+}
+
+/// The C field of an engine field of `polyguard::recovery` or `polyguard::offset` (the
+/// polygon's `p` and `vels` are `pg_polygon`'s arrays; the others keep their names).
+fn polygon_field(engine: &str) -> &str {
+    match engine {
         "p" => "polygon.vertices",
         "vels" => "polygon.velocities",
         other => other,
-    };
-    Failure::new(code, format!("{c}: {rest}"))
+    }
 }
 
 /// The polygon's vertices and, unless NULL, velocities.
@@ -576,17 +532,10 @@ fn recovery_failure(e: &RecoveryError) -> Failure {
 unsafe fn polygon_arrays(
     polygon: *const PgPolygon,
 ) -> Result<(Vec<Vect2>, Option<Vec<Vect2>>), Failure> {
-    // SAFETY (this function): the caller's promise.
+    // SAFETY (both): the caller's promise.
     let polygon = unsafe { deref(polygon, "polygon") }?;
-    let vertices = unsafe { slice_of(polygon.vertices, polygon.n, "polygon.vertices") }?;
-    let velocities = if polygon.velocities.is_null() {
-        None
-    } else {
-        Some(vects(unsafe {
-            slice_of(polygon.velocities, polygon.n, "polygon.velocities")
-        }?))
-    };
-    Ok((vects(vertices), velocities))
+    let (vertices, velocities) = unsafe { polygon_slices(polygon) }?;
+    Ok((vects(vertices), velocities.map(vects)))
 }
 
 /// The recovery point of `s` for the polygon `polygon` at time `t` (its slab is not
@@ -618,13 +567,10 @@ pub unsafe extern "C" fn pg_recovery(
     fence: c_int,
     out: *mut PgRecoveryPoint,
 ) -> c_int {
-    if !out.is_aligned() {
-        return guard(|| Err(Failure::misaligned("out")));
-    }
-    // SAFETY: aligned, and the caller's promise.
-    let out = match unsafe { out.as_mut() } {
-        Some(o) => o,
-        None => return guard(|| Err(Failure::null("out"))),
+    // SAFETY: the caller's promise.
+    let out = match unsafe { out_of(out, "out") } {
+        Ok(o) => o,
+        Err(f) => return guard(|| Err(f)),
     };
     *out = PgRecoveryPoint {
         kind: PG_RECOVERY_NONE,
@@ -681,11 +627,6 @@ pub unsafe extern "C" fn pg_recovery(
 
 /// The status and message of an offset error, its field in C's names.
 fn offset_failure(e: &OffsetError) -> Failure {
-    let c = |field: &str| match field {
-        "p" => "polygon.vertices".to_string(),
-        "vels" => "polygon.velocities".to_string(),
-        other => other.to_string(),
-    };
     match e {
         OffsetError::Invalid { field, reason } => {
             let code = if *reason == "not finite" {
@@ -699,7 +640,7 @@ fn offset_failure(e: &OffsetError) -> Failure {
             } else {
                 PG_ERR_BAD_PARAMETER
             };
-            Failure::new(code, format!("{}: {reason}", c(field)))
+            Failure::new(code, format!("{}: {reason}", polygon_field(field)))
         }
         OffsetError::Polygon { fault } => {
             let code = match fault {
@@ -737,35 +678,15 @@ unsafe fn shape_call(
     vertex_cap: usize,
     info: *mut PgShapeInfo,
 ) -> c_int {
-    if !info.is_aligned() {
-        return guard(|| Err(Failure::misaligned("info")));
-    }
-    // SAFETY: aligned, and the caller's promise.
-    let info = match unsafe { info.as_mut() } {
-        Some(i) => i,
-        None => return guard(|| Err(Failure::null("info"))),
+    // SAFETY: the caller's promise.
+    let info = match unsafe { out_of(info, "info") } {
+        Ok(i) => i,
+        Err(f) => return guard(|| Err(f)),
     };
     *info = PgShapeInfo::default();
     guard(|| {
-        for (name, null, aligned, cap) in [
-            ("rings", rings.is_null(), rings.is_aligned(), ring_cap),
-            (
-                "vertices",
-                vertices.is_null(),
-                vertices.is_aligned(),
-                vertex_cap,
-            ),
-        ] {
-            if cap > 0 && null {
-                return Err(Failure::new(
-                    PG_ERR_NULL_POINTER,
-                    format!("{name}: NULL pointer"),
-                ));
-            }
-            if cap > 0 && !aligned {
-                return Err(Failure::misaligned(name));
-            }
-        }
+        buffer_ok(rings, ring_cap, "rings")?;
+        buffer_ok(vertices, vertex_cap, "vertices")?;
         // SAFETY: the caller's promise.
         let (p, vels) = unsafe { polygon_arrays(polygon) }?;
         let answer: Result<Offset, OffsetError> = match (&vels, inset) {

@@ -4,8 +4,6 @@
 //! their module docs), bit for bit; their buffer protocols and their errors naming the C
 //! field.
 
-use std::ffi::CStr;
-use std::os::raw::c_char;
 use std::ptr;
 
 use polyguard::bands::{self, BandKind, Height, Obstacle, Slab, Traffic};
@@ -14,22 +12,10 @@ use polyguard::recovery::{self, Recovery};
 use polyguard::{Separation, Vect2};
 use polyguard_ffi::*;
 
-/// This thread's last error message.
-fn message() -> String {
-    let mut buf = [0 as c_char; 512];
-    // SAFETY: buf holds 512 bytes.
-    let rc = unsafe { pg_last_error_message(buf.as_mut_ptr(), buf.len()) };
-    assert_eq!(rc, PG_OK);
-    // SAFETY: NUL-terminated by pg_last_error_message.
-    unsafe { CStr::from_ptr(buf.as_ptr()) }
-        .to_string_lossy()
-        .into_owned()
-}
+mod common;
+use common::{message, polygon, v};
 
-fn v(x: f64, y: f64) -> PgVec2 {
-    PgVec2 { x, y }
-}
-
+/// The engine's vectors of C's.
 fn vect(p: &[PgVec2]) -> Vec<Vect2> {
     p.iter().map(|q| Vect2::new(q.x, q.y)).collect()
 }
@@ -46,6 +32,7 @@ struct Scene {
     slabs: Vec<PgSlab>,
 }
 
+/// The scene's arrays.
 fn scene() -> Scene {
     Scene {
         vertices: vec![
@@ -83,6 +70,7 @@ fn scene() -> Scene {
 }
 
 impl Scene {
+    /// The scene as `pg_polygons` (with its slabs, 3D, or without, 2D).
     fn polygons(&self, slabs: bool) -> PgPolygons {
         PgPolygons {
             vertices: self.vertices.as_ptr(),
@@ -119,6 +107,7 @@ impl Scene {
     }
 }
 
+/// `PG_BAND_*` of a band kind.
 fn kind(k: BandKind) -> i32 {
     match k {
         BandKind::Clear => PG_BAND_CLEAR,
@@ -144,6 +133,32 @@ fn c_bands(b: &bands::Bands) -> (Vec<PgBand>, PgBandsInfo) {
             met: i32::from(b.met),
         },
     )
+}
+
+/// `pg_course_bands` at lookahead 10 into all of `out` (cap `out.len()`).
+fn course_into(
+    point: &PgPoint,
+    polys: &PgPolygons,
+    sep: &PgSeparation,
+    speed: f64,
+    unknown_max: f64,
+    out: &mut [PgBand],
+    info: &mut PgBandsInfo,
+) -> i32 {
+    // SAFETY: valid pointers, `out` holds `out.len()` bands.
+    unsafe {
+        pg_course_bands(
+            point,
+            polys,
+            10.0,
+            sep,
+            speed,
+            unknown_max,
+            out.as_mut_ptr(),
+            out.len(),
+            info,
+        )
+    }
 }
 
 /// Course, speed and vertical speed bands equal the engine's, in 2D and 3D.
@@ -178,20 +193,7 @@ fn bands_equal_the_engines() {
         let um = 0.01;
         let mut out = vec![PgBand::default(); 256];
         let mut info = PgBandsInfo::default();
-        // SAFETY: valid pointers, `out` holds 256 bands.
-        let rc = unsafe {
-            pg_course_bands(
-                &point,
-                &polys,
-                10.0,
-                &sep,
-                1.0,
-                um,
-                out.as_mut_ptr(),
-                256,
-                &mut info,
-            )
-        };
+        let rc = course_into(&point, &polys, &sep, 1.0, um, &mut out, &mut info);
         assert_eq!(rc, PG_OK, "{}", message());
         let (want, want_info) = c_bands(&bands::course_bands(&traffic, 1.0, um).unwrap());
         assert_eq!(info, want_info);
@@ -256,38 +258,12 @@ fn a_small_band_buffer_is_a_capacity_error() {
     let sep = PgSeparation { d: 0.5, h: 0.0 };
     let mut full = vec![PgBand::default(); 256];
     let mut info = PgBandsInfo::default();
-    // SAFETY: valid pointers.
-    let rc = unsafe {
-        pg_course_bands(
-            &point,
-            &polys,
-            10.0,
-            &sep,
-            1.0,
-            0.01,
-            full.as_mut_ptr(),
-            256,
-            &mut info,
-        )
-    };
+    let rc = course_into(&point, &polys, &sep, 1.0, 0.01, &mut full, &mut info);
     assert_eq!(rc, PG_OK);
     let n = info.count;
     assert!(n >= 3);
     let mut small = vec![PgBand::default(); 2];
-    // SAFETY: `small` holds 2 bands.
-    let rc = unsafe {
-        pg_course_bands(
-            &point,
-            &polys,
-            10.0,
-            &sep,
-            1.0,
-            0.01,
-            small.as_mut_ptr(),
-            2,
-            &mut info,
-        )
-    };
+    let rc = course_into(&point, &polys, &sep, 1.0, 0.01, &mut small, &mut info);
     assert_eq!(rc, PG_ERR_CAPACITY);
     assert_eq!(info.count, n);
     assert_eq!(&small[..], &full[..2]);
@@ -320,21 +296,7 @@ fn band_errors_name_the_field() {
     let mut out = [PgBand::default(); 4];
     let mut info = PgBandsInfo::default();
     let call = |sc: &Scene, speed: f64, slabs: bool, out: &mut [PgBand], info: &mut PgBandsInfo| {
-        let polys = sc.polygons(slabs);
-        // SAFETY: valid pointers, `out` holds 4 bands.
-        unsafe {
-            pg_course_bands(
-                &point,
-                &polys,
-                10.0,
-                &sep,
-                speed,
-                0.01,
-                out.as_mut_ptr(),
-                4,
-                info,
-            )
-        }
+        course_into(&point, &sc.polygons(slabs), &sep, speed, 0.01, out, info)
     };
     assert_eq!(
         call(&sc, -1.0, false, &mut out, &mut info),
@@ -381,6 +343,7 @@ fn band_errors_name_the_field() {
     );
 }
 
+/// The square [0, 2]², counterclockwise.
 const SQUARE: [PgVec2; 4] = [
     PgVec2 { x: 0.0, y: 0.0 },
     PgVec2 { x: 2.0, y: 0.0 },
@@ -388,16 +351,7 @@ const SQUARE: [PgVec2; 4] = [
     PgVec2 { x: 0.0, y: 2.0 },
 ];
 
-fn polygon(vertices: &[PgVec2], velocities: Option<&[PgVec2]>) -> PgPolygon {
-    PgPolygon {
-        vertices: vertices.as_ptr(),
-        velocities: velocities.map_or(ptr::null(), <[PgVec2]>::as_ptr),
-        n: vertices.len(),
-        has_slab: 0,
-        slab: PgSlab::default(),
-    }
-}
-
+/// `pg_recovery`'s status and answer.
 fn recover(poly: &PgPolygon, t: f64, s: PgVec2, sep: f64, fence: i32) -> (i32, PgRecoveryPoint) {
     let mut out = PgRecoveryPoint::default();
     // SAFETY: valid pointers.
@@ -567,6 +521,33 @@ fn offsets_equal_the_engines() {
     );
 }
 
+/// `pg_offset` (or `pg_inset`) at t = 0 into all of `rings` and `vertices`.
+fn shape_into(
+    poly: &PgPolygon,
+    d: f64,
+    eps: f64,
+    inset: bool,
+    rings: &mut [PgRing],
+    vertices: &mut [PgVec2],
+    info: &mut PgShapeInfo,
+) -> i32 {
+    let f = if inset { pg_inset } else { pg_offset };
+    // SAFETY: valid pointers, buffers of the sizes given.
+    unsafe {
+        f(
+            poly,
+            0.0,
+            d,
+            eps,
+            rings.as_mut_ptr(),
+            rings.len(),
+            vertices.as_mut_ptr(),
+            vertices.len(),
+            info,
+        )
+    }
+}
+
 /// An empty inset is an answer; a buffer too small writes nothing but the sizes; bad
 /// input names the field.
 #[test]
@@ -580,71 +561,43 @@ fn shape_buffers_and_errors() {
     let mut rings = [PgRing::default(); 1];
     let mut vertices = [PgVec2::default(); 4];
     let mut info = PgShapeInfo::default();
-    // SAFETY: buffers of the sizes given.
-    let rc = unsafe {
-        pg_offset(
-            &poly,
-            0.0,
-            0.5,
-            0.01,
-            rings.as_mut_ptr(),
-            1,
-            vertices.as_mut_ptr(),
-            4,
-            &mut info,
-        )
-    };
+    let rc = shape_into(
+        &poly,
+        0.5,
+        0.01,
+        false,
+        &mut rings,
+        &mut vertices,
+        &mut info,
+    );
     assert_eq!(rc, PG_ERR_CAPACITY);
     assert!(info.vertices > 4 && info.rings == 1);
     assert_eq!(vertices, [PgVec2::default(); 4], "nothing written");
 
-    // SAFETY: as above.
-    let rc = unsafe {
-        pg_offset(
-            &poly,
-            0.0,
-            -1.0,
-            0.01,
-            rings.as_mut_ptr(),
-            1,
-            vertices.as_mut_ptr(),
-            4,
-            &mut info,
-        )
-    };
+    let rc = shape_into(
+        &poly,
+        -1.0,
+        0.01,
+        false,
+        &mut rings,
+        &mut vertices,
+        &mut info,
+    );
     assert_eq!(rc, PG_ERR_BAD_PARAMETER);
     assert!(message().starts_with("d:"), "{}", message());
-    // SAFETY: as above.
-    let rc = unsafe {
-        pg_offset(
-            &poly,
-            0.0,
-            0.5,
-            0.0,
-            rings.as_mut_ptr(),
-            1,
-            vertices.as_mut_ptr(),
-            4,
-            &mut info,
-        )
-    };
+    let rc = shape_into(&poly, 0.5, 0.0, false, &mut rings, &mut vertices, &mut info);
     assert_eq!(rc, PG_ERR_BAD_PARAMETER);
     assert!(message().starts_with("eps:"), "{}", message());
     let cw = [SQUARE[3], SQUARE[2], SQUARE[1], SQUARE[0]];
-    // SAFETY: as above.
-    let rc = unsafe {
-        pg_inset(
-            &polygon(&cw, None),
-            0.0,
-            0.5,
-            0.01,
-            rings.as_mut_ptr(),
-            1,
-            vertices.as_mut_ptr(),
-            4,
-            &mut info,
-        )
-    };
+    let rc = shape_into(
+        &polygon(&cw, None),
+        0.5,
+        0.01,
+        true,
+        &mut rings,
+        &mut vertices,
+        &mut info,
+    );
     assert_eq!(rc, PG_ERR_CLOCKWISE);
     assert!(
         message().starts_with("polygon.vertices: clockwise"),

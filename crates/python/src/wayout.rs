@@ -232,19 +232,50 @@ enum Family {
     Vertical { min: f64, max: f64 },
 }
 
-/// The engine's bands for the point among the obstacles, without the GIL.
-#[allow(clippy::too_many_arguments)]
-fn bands_of(
-    py: Python<'_>,
-    point: &PointState,
-    obstacles: &[Owned],
+/// The arguments every band call shares: the point, the obstacles, the lookahead and
+/// the separation (D, and H in 3D).
+struct Encounter {
+    point: PointState,
+    obstacles: Vec<Owned>,
     lookahead: f64,
     sep: f64,
     sep_v: f64,
+}
+
+/// Reads the shared band arguments in the order the errors name them: `pos`, `vel`,
+/// `obstacles`, `lookahead`, `sep`, `sep_v` (0 when absent).
+fn encounter_of(
+    py: Python<'_>,
+    pos: &Bound<'_, PyAny>,
+    vel: &Bound<'_, PyAny>,
+    obstacles: &Bound<'_, PyAny>,
+    lookahead: &Bound<'_, PyAny>,
+    sep: &Bound<'_, PyAny>,
+    sep_v: Option<&Bound<'_, PyAny>>,
+) -> PyResult<Encounter> {
+    Ok(Encounter {
+        point: point_of(py, pos, vel)?,
+        obstacles: obstacles_of(py, obstacles)?,
+        lookahead: arg(py, lookahead, "lookahead")?,
+        sep: arg(py, sep, "sep")?,
+        sep_v: sep_v.map_or(Ok(0.0), |x| arg(py, x, "sep_v"))?,
+    })
+}
+
+/// The engine's bands for the point among the obstacles, without the GIL
+/// (`polyguard::bands`), as the answer dict of `bands_dict`; an error names
+/// `unknown_max` as the caller's `um_name`.
+fn bands_answer<'py>(
+    py: Python<'py>,
+    e: &Encounter,
     family: Family,
     unknown_max: f64,
-) -> Result<Bands, BandsError> {
-    let list: Vec<Obstacle> = obstacles
+    um_name: &str,
+    scale: impl Fn(f64) -> f64,
+    total_key: &str,
+) -> PyResult<Bound<'py, PyDict>> {
+    let list: Vec<Obstacle> = e
+        .obstacles
         .iter()
         .map(|o| Obstacle {
             p: &o.p,
@@ -253,22 +284,41 @@ fn bands_of(
         })
         .collect();
     let traffic = Traffic {
-        t: lookahead,
-        s: point.s,
-        height: point.height,
+        t: e.lookahead,
+        s: e.point.s,
+        height: e.point.height,
         obstacles: &list,
-        sep: Separation { d: sep, h: sep_v },
+        sep: Separation {
+            d: e.sep,
+            h: e.sep_v,
+        },
     };
-    let v = point.v;
-    py.detach(|| match family {
-        Family::Course { speed } => bands::course_bands(&traffic, speed, unknown_max),
-        Family::Speed { course, min, max } => {
-            bands::speed_bands(&traffic, course, min, max, unknown_max)
-        }
-        Family::Vertical { min, max } => {
-            bands::vertical_speed_bands(&traffic, v, min, max, unknown_max)
-        }
-    })
+    let v = e.point.v;
+    let b = py
+        .detach(|| match family {
+            Family::Course { speed } => bands::course_bands(&traffic, speed, unknown_max),
+            Family::Speed { course, min, max } => {
+                bands::speed_bands(&traffic, course, min, max, unknown_max)
+            }
+            Family::Vertical { min, max } => {
+                bands::vertical_speed_bands(&traffic, v, min, max, unknown_max)
+            }
+        })
+        .map_err(|err| bands_error(py, &err, um_name))?;
+    bands_dict(py, &b, scale, total_key)
+}
+
+/// The `unknown_max` argument, or `default_unknown_max` of the range when absent.
+fn unknown_max_of(
+    py: Python<'_>,
+    unknown_max: Option<&Bound<'_, PyAny>>,
+    min: f64,
+    max: f64,
+) -> PyResult<f64> {
+    match unknown_max {
+        Some(x) => arg(py, x, "unknown_max"),
+        None => Ok(default_unknown_max(min, max)),
+    }
 }
 
 /// A number argument, or `polyguard.Error` naming it.
@@ -317,28 +367,21 @@ pub fn course_bands<'py>(
     speed: Option<&Bound<'py, PyAny>>,
     unknown_max_deg: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let point = point_of(py, pos, vel)?;
-    let obstacles = obstacles_of(py, obstacles)?;
-    let lookahead = arg(py, lookahead, "lookahead")?;
-    let sep = arg(py, sep, "sep")?;
-    let sep_v = sep_v.map_or(Ok(0.0), |x| arg(py, x, "sep_v"))?;
+    let e = encounter_of(py, pos, vel, obstacles, lookahead, sep, sep_v)?;
     let speed = match speed {
         Some(x) => arg(py, x, "speed")?,
-        None => point.v.x.hypot(point.v.y),
+        None => e.point.v.x.hypot(e.point.v.y),
     };
     let um = unknown_max_deg.map_or(Ok(0.1), |x| arg(py, x, "unknown_max_deg"))?;
-    let b = bands_of(
+    bands_answer(
         py,
-        &point,
-        &obstacles,
-        lookahead,
-        sep,
-        sep_v,
+        &e,
         Family::Course { speed },
         um.to_radians(),
+        "unknown_max_deg",
+        f64::to_degrees,
+        "unknown_total_deg",
     )
-    .map_err(|e| bands_error(py, &e, "unknown_max_deg"))?;
-    bands_dict(py, &b, f64::to_degrees, "unknown_total_deg")
 }
 
 /// Speed bands over [`min`, `max`] at the fixed `course_deg` (default: the current
@@ -363,36 +406,26 @@ pub fn speed_bands<'py>(
     course_deg: Option<&Bound<'py, PyAny>>,
     unknown_max: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let point = point_of(py, pos, vel)?;
-    let obstacles = obstacles_of(py, obstacles)?;
-    let lookahead = arg(py, lookahead, "lookahead")?;
-    let sep = arg(py, sep, "sep")?;
-    let sep_v = sep_v.map_or(Ok(0.0), |x| arg(py, x, "sep_v"))?;
+    let e = encounter_of(py, pos, vel, obstacles, lookahead, sep, sep_v)?;
     let (min, max) = (arg(py, min, "min")?, arg(py, max, "max")?);
     let course = match course_deg {
         Some(x) => arg(py, x, "course_deg")?,
-        None => course_deg_of(point.v),
+        None => course_deg_of(e.point.v),
     };
-    let um = match unknown_max {
-        Some(x) => arg(py, x, "unknown_max")?,
-        None => default_unknown_max(min, max),
-    };
-    let b = bands_of(
+    let um = unknown_max_of(py, unknown_max, min, max)?;
+    bands_answer(
         py,
-        &point,
-        &obstacles,
-        lookahead,
-        sep,
-        sep_v,
+        &e,
         Family::Speed {
             course: course.to_radians(),
             min,
             max,
         },
         um,
+        "unknown_max",
+        |x| x,
+        "unknown_total",
     )
-    .map_err(|e| bands_error(py, &e, "unknown_max"))?;
-    bands_dict(py, &b, |x| x, "unknown_total")
 }
 
 /// (max − min)/1000, or 1 for an empty or invalid range (the engine then names the bad
@@ -425,35 +458,25 @@ pub fn vertical_speed_bands<'py>(
     max: &Bound<'py, PyAny>,
     unknown_max: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let point = point_of(py, pos, vel)?;
-    let obstacles = obstacles_of(py, obstacles)?;
-    let lookahead = arg(py, lookahead, "lookahead")?;
-    let sep = arg(py, sep, "sep")?;
-    let sep_v = arg(py, sep_v, "sep_v")?;
+    let e = encounter_of(py, pos, vel, obstacles, lookahead, sep, Some(sep_v))?;
     let (min, max) = (arg(py, min, "min")?, arg(py, max, "max")?);
-    let um = match unknown_max {
-        Some(x) => arg(py, x, "unknown_max")?,
-        None => default_unknown_max(min, max),
-    };
-    if point.height.is_none() {
+    let um = unknown_max_of(py, unknown_max, min, max)?;
+    if e.point.height.is_none() {
         return Err(crate::error(
             py,
             "pos",
             "pos: vertical speed bands need the point's height ([x, y, z])",
         ));
     }
-    let b = bands_of(
+    bands_answer(
         py,
-        &point,
-        &obstacles,
-        lookahead,
-        sep,
-        sep_v,
+        &e,
         Family::Vertical { min, max },
         um,
+        "unknown_max",
+        |x| x,
+        "unknown_total",
     )
-    .map_err(|e| bands_error(py, &e, "unknown_max"))?;
-    bands_dict(py, &b, |x| x, "unknown_total")
 }
 
 /// A polygon's vertices and optional velocities from Python.
@@ -479,12 +502,7 @@ fn recovery_error(py: Python<'_>, e: &RecoveryError) -> PyErr {
     let rest = text
         .strip_prefix(&format!("{field}: "))
         .unwrap_or(text.as_str());
-    let f = match field {
-        "p" => "vertices",
-        "vels" => "velocities",
-        other => other,
-    };
-    crate::error(py, f, &format!("{f}: {rest}"))
+    polygon_error(py, field, rest)
 }
 
 /// The recovery point of `s` for the polygon `vertices` (counterclockwise; at time `t`
@@ -567,6 +585,12 @@ fn offset_error(py: Python<'_>, e: &OffsetError) -> PyErr {
         }
         OffsetError::Uncertified { .. } => ("p", e.to_string()),
     };
+    polygon_error(py, field, &rest)
+}
+
+/// `polyguard.Error` of a recovery or offset error's field and text, the engine's
+/// `p` and `vels` named as Python's `vertices` and `velocities`.
+fn polygon_error(py: Python<'_>, field: &str, rest: &str) -> PyErr {
     let f = match field {
         "p" => "vertices",
         "vels" => "velocities",

@@ -83,7 +83,7 @@
 //! σ from s to e = s + T·(w − V), y(t) = s + (t/T)·(e − s); P(0)'s vertices are the
 //! exact input floats.
 //!
-//! **Rounding of σ.** e is computed with [`ball::Ball`](crate::ball::Ball) arithmetic
+//! **Rounding of σ.** e is computed with `ball::Ball` arithmetic
 //! per coordinate (w − V, times T, plus s): the float ẽ has each coordinate within ρ of
 //! e's (the larger of the two balls' radii), so |e − ẽ| ≤ √2·ρ, and the float segment
 //! σ̃ = [s, ẽ] satisfies |y(t) − ỹ(t)| = (t/T)·|e − ẽ| ≤ √2·ρ ≤ 2ρ for ỹ(t) = s +

@@ -378,18 +378,23 @@ pub fn offset_svg(o: &OffsetPicture) -> String {
         hi = Vect2::new(hi.x.max(q.x), hi.y.max(q.y));
     }
     let half = ((hi.x - lo.x).max(hi.y - lo.y) / 2.0).max(f64::MIN_POSITIVE);
+    let k = (MAP.2 / 2.0 - 10.0) / (half * 1.05);
+    // The map is as tall as the drawing needs (a wide polygon leaves no blank band).
+    let map_h = ((hi.y - lo.y) * 1.05 * k + 20.0).clamp(MAP.2 / 3.0, MAP.2);
     let m = Map {
         s: Vect2::new((lo.x + hi.x) / 2.0, (lo.y + hi.y) / 2.0),
-        k: (MAP.2 / 2.0 - 10.0) / (half * 1.05),
+        k,
         cx: MAP.0 + MAP.2 / 2.0,
-        cy: MAP.1 + MAP.2 / 2.0,
+        cy: MAP.1 + map_h / 2.0,
     };
+    let legend_y = MAP.1 + map_h + 30.0;
+    let height = legend_y + 3.0 * 19.0 + 20.0;
     let mut out = String::new();
     let _ = writeln!(
         out,
-        r##"<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{H}" viewBox="0 0 {W} {H}">"##
+        r##"<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{height:.0}" viewBox="0 0 {W} {height:.0}">"##
     );
-    let _ = writeln!(out, r##"<rect width="{W}" height="{H}" fill="white"/>"##);
+    let _ = writeln!(out, r##"<rect width="{W}" height="{height:.0}" fill="white"/>"##);
     let _ = writeln!(
         out,
         r##"<text x="{}" y="40" font-size="18" text-anchor="middle" font-family="sans-serif">{}</text>"##,
@@ -426,7 +431,7 @@ pub fn offset_svg(o: &OffsetPicture) -> String {
             r##"<circle cx="{x:.2}" cy="{y:.2}" r="2.5" fill="{CONFLICT}"/>"##
         );
     }
-    let y = MAP.1 + MAP.2 + 30.0;
+    let y = legend_y;
     let what = if o.inset { "inset" } else { "offset" };
     let mut lines = vec![format!(
         "filled: P; blue: the certified {what} by D = {}",

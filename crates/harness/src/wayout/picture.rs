@@ -394,7 +394,10 @@ pub fn offset_svg(o: &OffsetPicture) -> String {
         out,
         r##"<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{height:.0}" viewBox="0 0 {W} {height:.0}">"##
     );
-    let _ = writeln!(out, r##"<rect width="{W}" height="{height:.0}" fill="white"/>"##);
+    let _ = writeln!(
+        out,
+        r##"<rect width="{W}" height="{height:.0}" fill="white"/>"##
+    );
     let _ = writeln!(
         out,
         r##"<text x="{}" y="40" font-size="18" text-anchor="middle" font-family="sans-serif">{}</text>"##,

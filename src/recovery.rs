@@ -340,12 +340,23 @@ impl<'a> Shape<'a> {
         if !sh.q.iter().all(|b| b.is_finite()) {
             return bad("p");
         }
-        // Twice the signed area about s: Σ qᵢ × qᵢ₊₁ > 0, certified.
-        let mut area = Ball::exact(0.0);
-        for i in 0..sh.n() {
-            area = area.add(sh.q[i].cross(sh.q[sh.next(i)]));
-        }
-        if crate::ball::positive(area) != Tri::Yes {
+        // Counterclockwise: at rest, the exact orientation of the ring (`ring::winding`,
+        // the turn at its lexicographically least vertex, as the case format checks it);
+        // moving, twice the signed area about the first vertex, Σ (qᵢ − q₀) × (qᵢ₊₁ − q₀)
+        // > 0, certified on balls (about the first vertex rather than about s, so that a
+        // small polygon far from s is not lost in the rounding of |p − s|).
+        let ccw = match vels {
+            None => crate::ring::winding(p) == Ok(crate::ring::Winding::Counterclockwise),
+            Some(_) => {
+                let mut area = Ball::exact(0.0);
+                let q0 = sh.q[0];
+                for i in 1..sh.n() - 1 {
+                    area = area.add(sh.q[i].sub(q0).cross(sh.q[i + 1].sub(q0)));
+                }
+                crate::ball::positive(area) == Tri::Yes
+            }
+        };
+        if !ccw {
             return Err(RecoveryError::NotCounterclockwise);
         }
         Ok(sh)

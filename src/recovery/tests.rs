@@ -338,3 +338,26 @@ fn far_from_the_origin_and_small_separations() {
     check(&square(), &[], 0.0, v(2.5, 1.0), 0.5, true);
     check(&square(), &[], 0.0, v(1.5, 1.0), 0.5, false);
 }
+
+/// A 16 × 16 square 1.1·10¹¹ from s (the regression corpus's `slab-end-rounds-up`,
+/// tests/regressions/crafted.jsonl): its orientation is exact in f64, but twice its area
+/// about s (about 512) is lost in products near 10²² of the coordinates relative to s,
+/// which refused it as not counterclockwise. At rest and moving, it is answered: s is
+/// already clear.
+#[test]
+fn a_small_polygon_far_from_s_is_counterclockwise() {
+    let p = vec![
+        v(109_951_162_778.6, -8.0),
+        v(109_951_162_794.6, -8.0),
+        v(109_951_162_794.6, 8.0),
+        v(109_951_162_778.6, 8.0),
+    ];
+    let s = v(0.0, 0.0);
+    for r in [
+        recovery_out(&p, s, 0.5),
+        recovery_out_at(&p, &[v(0.0, 0.0); 4], 1.0, s, 0.5),
+        recovery_out_at(&p, &[v(1.0, 0.5); 4], 2.0, s, 0.5),
+    ] {
+        assert!(matches!(r, Ok(Recovery::Point { clear: true, .. })), "{r:?}");
+    }
+}

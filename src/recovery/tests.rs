@@ -358,6 +358,9 @@ fn a_small_polygon_far_from_s_is_counterclockwise() {
         recovery_out_at(&p, &[v(0.0, 0.0); 4], 1.0, s, 0.5),
         recovery_out_at(&p, &[v(1.0, 0.5); 4], 2.0, s, 0.5),
     ] {
-        assert!(matches!(r, Ok(Recovery::Point { clear: true, .. })), "{r:?}");
+        assert!(
+            matches!(r, Ok(Recovery::Point { clear: true, .. })),
+            "{r:?}"
+        );
     }
 }

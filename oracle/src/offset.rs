@@ -25,12 +25,18 @@
 //!   filled; for the inset, a piece of I_L missed), which the boundary cannot show:
 //!   [`Buffer::inside_truth`], [`Buffer::inside_limit`] and [`locate`] decide it point by
 //!   point for sampling tests.
+//!
+//! The point–segment tests and orientations behind these decisions first run in
+//! rigorous intervals ([`crate::kernel::interval`]) and fall back to rationals only when
+//! an enclosure cannot settle them, so every decision stays exact (`tests/offset.rs`
+//! checks the filtered and the exact-only forms against each other).
 
 use core::cmp::Ordering;
 
 use crate::convert::Input;
 use crate::error::OracleError;
 use crate::field::{Arith, ExactField, Q, V2};
+use crate::kernel::interval::{enclose, enclose2, Abstain, Iv};
 use crate::qfield::{quad_roots, Alg};
 use crate::ring::{check_simple, orient, segments_meet, winding, Winding};
 
@@ -159,37 +165,80 @@ pub fn point_segment_sq(x: &V2<Q>, a: &V2<Q>, b: &V2<Q>) -> Q {
 /// dist(x, [a, b])² ≤ r2, exactly, without a division: the line's case compares
 /// |w|²·|e|² − (w·e)² with r2·|e|².
 fn point_segment_within(x: &V2<Q>, a: &V2<Q>, b: &V2<Q>, r2: &Q) -> bool {
+    segment_near(x, a, b, r2, false, true)
+}
+
+/// dist(x, [a, b])² < r2 (`strict`) or ≤ r2, exactly: first in intervals (when
+/// `filter`), by the rationals of [`point_segment_within`] when an enclosure holds the
+/// tie.
+pub fn segment_near(x: &V2<Q>, a: &V2<Q>, b: &V2<Q>, r2: &Q, strict: bool, filter: bool) -> bool {
+    if filter {
+        if let Ok(v) = segment_near_iv(x, a, b, r2, strict) {
+            return v;
+        }
+    }
+    let cmp = |l: Q, r: &Q| if strict { l < *r } else { l <= *r };
     let (w, e) = (x.minus(a), b.minus(a));
     let (t, ee) = (w.dot(&e), e.sq());
     if !t.is_pos() {
-        w.sq() <= *r2
+        cmp(w.sq(), r2)
     } else if t >= ee {
-        x.minus(b).sq() <= *r2
+        cmp(x.minus(b).sq(), r2)
     } else {
-        w.sq() * &ee - &t * &t <= r2 * &ee
+        cmp(w.sq() * &ee - &t * &t, &(r2 * &ee))
     }
+}
+
+/// [`segment_near`] in rigorous intervals, the same branches; `Err` when one cannot
+/// be told.
+fn segment_near_iv(x: &V2<Q>, a: &V2<Q>, b: &V2<Q>, r2: &Q, strict: bool) -> Result<bool, Abstain> {
+    let (xi, ai, bi, r2i) = (enclose2(x), enclose2(a), enclose2(b), enclose(r2));
+    let cmp = |l: Iv, r: Iv| if strict { l.lt(r) } else { l.le(r) };
+    let (w, e) = (xi.minus(&ai), bi.minus(&ai));
+    let (t, ee) = (w.dot(&e), e.sq());
+    if t.sign()? != Ordering::Greater {
+        cmp(w.sq(), r2i)
+    } else if t.sub(ee).sign()? != Ordering::Less {
+        cmp(xi.minus(&bi).sq(), r2i)
+    } else {
+        cmp(w.sq().mul(ee).sub(t.sq()), r2i.mul(ee))
+    }
+}
+
+/// orient(a, b, c), read off an enclosure of the cross product when it excludes 0,
+/// else exactly.
+fn orient_f(a: &V2<Q>, b: &V2<Q>, c: &V2<Q>) -> i8 {
+    let (ai, bi, ci) = (enclose2(a), enclose2(b), enclose2(c));
+    match bi.minus(&ai).cross(&ci.minus(&ai)).sign() {
+        Ok(Ordering::Greater) => 1,
+        Ok(Ordering::Less) => -1,
+        _ => orient(a, b, c),
+    }
+}
+
+/// The closed segments meet: a proper crossing told by filtered orientations, every
+/// other case by [`segments_meet`].
+fn segments_meet_f(a: &V2<Q>, b: &V2<Q>, c: &V2<Q>, d: &V2<Q>) -> bool {
+    let (o1, o2) = (orient_f(a, b, c), orient_f(a, b, d));
+    let (o3, o4) = (orient_f(c, d, a), orient_f(c, d, b));
+    if o1 * o2 > 0 || o3 * o4 > 0 {
+        return false;
+    }
+    if o1 * o2 < 0 && o3 * o4 < 0 {
+        return true;
+    }
+    segments_meet(a, b, c, d)
 }
 
 /// The closed segments are at distance < r (r2 = r²): they meet, or an end of one is
 /// closer than r to the other (the least distance of two disjoint segments is attained
 /// at an end of one of them).
 fn segments_closer(a: &V2<Q>, b: &V2<Q>, c: &V2<Q>, d: &V2<Q>, r2: &Q) -> bool {
-    let closer = |x: &V2<Q>, p: &V2<Q>, q: &V2<Q>| {
-        let (w, e) = (x.minus(p), q.minus(p));
-        let (t, ee) = (w.dot(&e), e.sq());
-        if !t.is_pos() {
-            w.sq() < *r2
-        } else if t >= ee {
-            x.minus(q).sq() < *r2
-        } else {
-            w.sq() * &ee - &t * &t < r2 * &ee
-        }
-    };
-    segments_meet(a, b, c, d)
-        || closer(a, c, d)
-        || closer(b, c, d)
-        || closer(c, a, b)
-        || closer(d, a, b)
+    segments_meet_f(a, b, c, d)
+        || segment_near(a, c, d, r2, true, true)
+        || segment_near(b, c, d, r2, true, true)
+        || segment_near(c, a, b, r2, true, true)
+        || segment_near(d, a, b, r2, true, true)
 }
 
 /// The winding number of a ring about x and whether x is on it (exact).
@@ -198,7 +247,7 @@ fn winding_about(ring: &[V2<Q>], x: &V2<Q>) -> (i32, bool) {
     let (mut w, mut on) = (0, false);
     for i in 0..n {
         let (a, b) = (&ring[i], &ring[(i + 1) % n]);
-        let o = orient(a, b, x);
+        let o = orient_f(a, b, x);
         if o == 0 && !x.minus(a).dot(&x.minus(b)).is_pos() {
             on = true;
         }
@@ -339,11 +388,8 @@ impl Buffer {
     fn inside_at(&self, x: &V2<Q>, r: &Q) -> bool {
         let r2 = r * r;
         let near = |strict: bool| {
-            self.edges().any(|(a, b)| {
-                let within = point_segment_within(x, a, b, &r2);
-                // dist < r: within r and not exactly at r (dist² ≤ r² but not ≥ r²).
-                within && (!strict || !point_segment_sq(x, a, b).ge(&r2))
-            })
+            self.edges()
+                .any(|(a, b)| segment_near(x, a, b, &r2, strict, true))
         };
         match self.side {
             Side::Out => self.in_p(x) || near(false),

@@ -17,12 +17,24 @@
 //! Every feasible candidate is at distance ≥ m from s, and the minimiser is one of them, so
 //! m is the least of their distances: [`ExactMin`] holds their squared distances and
 //! compares m with a rational exactly, without choosing among them.
+//!
+//! # The interval front
+//! The exact decisions are the same with or without an interval filter in front of them
+//! ([`recovery_with`]'s `filter`, on in the named functions):
+//! - every tower sign is first read off a rigorous enclosure ([`Tower`]);
+//! - feasibility first encloses the candidate and tests each edge's gap in intervals,
+//!   deciding exactly only the edges whose enclosure holds 0;
+//! - candidates are tested in the order of the lower ends of their enclosed squared
+//!   distances, and once a feasible one is known to be at most U, those whose lower end
+//!   exceeds U are dropped untested: each is farther than that feasible one, so it is not
+//!   the minimum, and [`ExactMin::cmp_rational`] answers the same without it.
 
 use core::cmp::Ordering;
 
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 
+use crate::kernel::interval::{enclose, Iv};
 use crate::tower::{sign_q, Elem, Tower};
 
 /// The exact minimum distance m, as the least of finitely many tower numbers.
@@ -73,22 +85,26 @@ enum Side {
 pub type Point = [BigRational; 2];
 type Pt = Point;
 
-/// The exact inputs: vertices (at time t), s, D.
+/// The exact inputs: vertices (at time t), s, D; and whether the interval front runs.
 struct Scene {
     v: Vec<Pt>,
     s: Pt,
     d: BigRational,
+    filter: bool,
 }
+
+/// A candidate point, in its own tower.
+type Cand = (Tower, [Elem; 2]);
 
 /// The exact minimum for the out condition (module doc); `None` for D < 0 or fewer than
 /// 3 vertices.
 pub fn recovery_out(p: &[Point], s: &Point, d: &BigRational) -> Option<ExactRecovery> {
-    Some(scene(p, None, s, d)?.solve(Side::Out))
+    recovery_with(p, None, s, d, false, true)
 }
 
 /// The exact minimum for the in condition (module doc), or `Impossible`.
 pub fn recovery_in(p: &[Point], s: &Point, d: &BigRational) -> Option<ExactRecovery> {
-    Some(scene(p, None, s, d)?.solve(Side::In))
+    recovery_with(p, None, s, d, true, true)
 }
 
 /// [`recovery_out`] for the exact polygon (p_i + t·V_i) at time t.
@@ -99,7 +115,7 @@ pub fn recovery_out_at(
     s: &Point,
     d: &BigRational,
 ) -> Option<ExactRecovery> {
-    Some(scene(p, Some((vels, t)), s, d)?.solve(Side::Out))
+    recovery_with(p, Some((vels, t)), s, d, false, true)
 }
 
 /// [`recovery_in`] for the exact polygon (p_i + t·V_i) at time t.
@@ -110,7 +126,23 @@ pub fn recovery_in_at(
     s: &Point,
     d: &BigRational,
 ) -> Option<ExactRecovery> {
-    Some(scene(p, Some((vels, t)), s, d)?.solve(Side::In))
+    recovery_with(p, Some((vels, t)), s, d, true, true)
+}
+
+/// The general form (module doc): the polygon at rest or at time t (`vels`), the in
+/// condition when `keep_in`, the interval front when `filter` (the answer is the same
+/// either way; without it every decision is the exact analysis alone).
+pub fn recovery_with(
+    p: &[Point],
+    vels: Option<(&[Point], &BigRational)>,
+    s: &Point,
+    d: &BigRational,
+    keep_in: bool,
+    filter: bool,
+) -> Option<ExactRecovery> {
+    let mut sc = scene(p, vels, s, d)?;
+    sc.filter = filter;
+    Some(sc.solve(if keep_in { Side::In } else { Side::Out }))
 }
 
 /// Does x satisfy the out condition dist(x, P(t)) ≥ D exactly? (`vels` empty: static.)
@@ -151,7 +183,7 @@ fn satisfies(
     let Some(sc) = scene(p, mv, x, d) else {
         return false;
     };
-    let tw = Tower::new();
+    let tw = sc.tower();
     let x = [Elem::rat(sc.s[0].clone()), Elem::rat(sc.s[1].clone())];
     sc.feasible(side, &tw, &x)
 }
@@ -183,7 +215,32 @@ fn scene(
         v,
         s: s.clone(),
         d: d.clone(),
+        filter: true,
     })
+}
+
+/// The sign of edge (a, e)'s gap dist²(x, segment) − D² (in the form
+/// [`Scene::feasible`] computes exactly) from enclosures of x and D², when they settle
+/// it and the branch it is computed by; `None` when an enclosure holds 0.
+fn edge_gap_sign(x: &[Iv; 2], a: &Pt, e: &Pt, big_e: &BigRational, d2: Iv) -> Option<Ordering> {
+    let (ex, ey, ee) = (enclose(&e[0]), enclose(&e[1]), enclose(big_e));
+    let dx = x[0].sub(enclose(&a[0]));
+    let dy = x[1].sub(enclose(&a[1]));
+    let t = dx.mul(ex).add(dy.mul(ey));
+    let gap = match t.sign().ok()? {
+        Ordering::Less | Ordering::Equal => dx.sq().add(dy.sq()).sub(d2),
+        Ordering::Greater => match t.sub(ee).sign().ok()? {
+            Ordering::Greater | Ordering::Equal => {
+                let (bx, by) = (dx.sub(ex), dy.sub(ey));
+                bx.sq().add(by.sq()).sub(d2)
+            }
+            Ordering::Less => {
+                let cr = dy.mul(ex).sub(dx.mul(ey));
+                cr.sq().sub(d2.mul(ee))
+            }
+        },
+    };
+    gap.sign().ok()
 }
 
 fn sub(a: &Pt, b: &Pt) -> Pt {
@@ -212,9 +269,19 @@ impl Scene {
     fn feasible(&self, side: Side, tw: &Tower, x: &[Elem; 2]) -> bool {
         let d2 = &self.d * &self.d;
         let mut on_boundary = false;
+        let front = self
+            .filter
+            .then(|| ([tw.enclose(&x[0]), tw.enclose(&x[1])], enclose(&d2)));
         for i in 0..self.n() {
             let (a, e) = self.edge(i);
             let big_e = dot(&e, &e);
+            if let Some((xi, d2i)) = &front {
+                match edge_gap_sign(xi, &a, &e, &big_e, *d2i) {
+                    Some(Ordering::Less) => return false,
+                    Some(Ordering::Greater) => continue,
+                    _ => {}
+                }
+            }
             let dx = tw.sub(&x[0], &tw.rat(&a[0]));
             let dy = tw.sub(&x[1], &tw.rat(&a[1]));
             let t = tw.add(&dx.scale(&e[0]), &dy.scale(&e[1]));
@@ -262,19 +329,27 @@ impl Scene {
         odd
     }
 
-    /// Keeps the candidate x when feasible, with its squared distance to s.
-    fn keep(&self, side: Side, tw: Tower, x: [Elem; 2], out: &mut Vec<(Tower, Elem)>) {
-        if self.feasible(side, &tw, &x) {
-            let dx = tw.sub(&x[0], &tw.rat(&self.s[0]));
-            let dy = tw.sub(&x[1], &tw.rat(&self.s[1]));
-            let d2 = tw.add(&tw.sq(&dx), &tw.sq(&dy));
-            out.push((tw, d2));
+    /// A tower for a new candidate, filtered as the scene is.
+    fn tower(&self) -> Tower {
+        if self.filter {
+            Tower::new()
+        } else {
+            Tower::unfiltered()
         }
     }
 
-    /// The exact minimum over the feasible candidates (module doc).
+    /// |x − s|², in x's tower.
+    fn dist2(&self, tw: &Tower, x: &[Elem; 2]) -> Elem {
+        let dx = tw.sub(&x[0], &tw.rat(&self.s[0]));
+        let dy = tw.sub(&x[1], &tw.rat(&self.s[1]));
+        tw.add(&tw.sq(&dx), &tw.sq(&dy))
+    }
+
+    /// The exact minimum over the feasible candidates (module doc): every candidate
+    /// without the filter; with it, in the order of their enclosed distances, the ones
+    /// farther than a feasible one dropped untested.
     fn solve(&self, side: Side) -> ExactRecovery {
-        let tw0 = Tower::new();
+        let tw0 = self.tower();
         let s = [Elem::rat(self.s[0].clone()), Elem::rat(self.s[1].clone())];
         if self.feasible(side, &tw0, &s) {
             return ExactRecovery::Min(ExactMin {
@@ -288,17 +363,46 @@ impl Scene {
             -BigRational::one()
         };
         let sd = &sig * &self.d;
-        let mut out = Vec::new();
+        let mut all = Vec::new();
         let n = self.n();
         for i in 0..n {
-            self.projection(side, &sd, i, &mut out);
-            self.circle_nearest(side, i, &mut out);
+            self.projection(&sd, i, &mut all);
+            self.circle_nearest(i, &mut all);
             for j in 0..n {
                 if j > i {
-                    self.line_line(side, &sd, i, j, &mut out);
-                    self.circle_circle(side, i, j, &mut out);
+                    self.line_line(&sd, i, j, &mut all);
+                    self.circle_circle(i, j, &mut all);
                 }
-                self.line_circle(side, &sd, i, j, &mut out);
+                self.line_circle(&sd, i, j, &mut all);
+            }
+        }
+        let (s0, s1) = (enclose(&self.s[0]), enclose(&self.s[1]));
+        let mut ranked: Vec<(Iv, Tower, [Elem; 2])> = all
+            .into_iter()
+            .map(|(tw, x)| {
+                let iv = if self.filter {
+                    let dx = tw.enclose(&x[0]).sub(s0);
+                    let dy = tw.enclose(&x[1]).sub(s1);
+                    dx.sq().add(dy.sq())
+                } else {
+                    Iv::ENTIRE
+                };
+                (iv, tw, x)
+            })
+            .collect();
+        ranked.sort_by(|a, b| a.0.lo.total_cmp(&b.0.lo));
+        let mut out = Vec::new();
+        let mut bound = Iv::ENTIRE;
+        for (iv, tw, x) in ranked {
+            if iv.lo > bound.hi {
+                break;
+            }
+            if self.feasible(side, &tw, &x) {
+                if iv.hi < bound.hi {
+                    bound = iv;
+                }
+                let d2 = self.dist2(&tw, &x);
+                out.push((tw, d2));
             }
         }
         if out.is_empty() {
@@ -324,7 +428,7 @@ impl Scene {
         if big_e.is_zero() {
             return None;
         }
-        let mut tw = Tower::new();
+        let mut tw = self.tower();
         let root = tw.adjoin(&Elem::rat(big_e.clone()))?;
         let k = sd / &big_e;
         let p0 = [
@@ -335,7 +439,7 @@ impl Scene {
     }
 
     /// The clamped projection of s on shifted edge i (the parameter along e is rational).
-    fn projection(&self, side: Side, sd: &BigRational, i: usize, out: &mut Vec<(Tower, Elem)>) {
+    fn projection(&self, sd: &BigRational, i: usize, out: &mut Vec<Cand>) {
         let Some((tw, p0, e, big_e)) = self.shifted_start(sd, i) else {
             return;
         };
@@ -345,17 +449,17 @@ impl Scene {
             tw.add(&p0[0], &tw.rat(&(&tau * &e[0]))),
             tw.add(&p0[1], &tw.rat(&(&tau * &e[1]))),
         ];
-        self.keep(side, tw, x, out);
+        out.push((tw, x));
     }
 
     /// The point of the circle about vertex i on the ray from it through s.
-    fn circle_nearest(&self, side: Side, i: usize, out: &mut Vec<(Tower, Elem)>) {
+    fn circle_nearest(&self, i: usize, out: &mut Vec<Cand>) {
         let w = sub(&self.s, &self.v[i]);
         let l2 = dot(&w, &w);
         if l2.is_zero() {
             return;
         }
-        let mut tw = Tower::new();
+        let mut tw = self.tower();
         let Some(root) = tw.adjoin(&Elem::rat(l2.clone())) else {
             return;
         };
@@ -364,18 +468,11 @@ impl Scene {
             tw.add(&tw.rat(&self.v[i][0]), &root.scale(&(&k * &w[0]))),
             tw.add(&tw.rat(&self.v[i][1]), &root.scale(&(&k * &w[1]))),
         ];
-        self.keep(side, tw, x, out);
+        out.push((tw, x));
     }
 
     /// Where shifted edges i and j meet: N_i·x = N_i·a_i + σD√E_i, likewise j (Cramer).
-    fn line_line(
-        &self,
-        side: Side,
-        sd: &BigRational,
-        i: usize,
-        j: usize,
-        out: &mut Vec<(Tower, Elem)>,
-    ) {
+    fn line_line(&self, sd: &BigRational, i: usize, j: usize, out: &mut Vec<Cand>) {
         let (ai, ei) = self.edge(i);
         let (aj, ej) = self.edge(j);
         let ni = [ei[1].clone(), -&ei[0]];
@@ -384,7 +481,7 @@ impl Scene {
         if det.is_zero() {
             return;
         }
-        let mut tw = Tower::new();
+        let mut tw = self.tower();
         let (Some(ri), Some(rj)) = (
             tw.adjoin(&Elem::rat(dot(&ei, &ei))),
             tw.adjoin(&Elem::rat(dot(&ej, &ej))),
@@ -396,19 +493,12 @@ impl Scene {
         let inv = BigRational::one() / det;
         let x = tw.sub(&ci.scale(&nj[1]), &cj.scale(&ni[1])).scale(&inv);
         let y = tw.sub(&cj.scale(&ni[0]), &ci.scale(&nj[0])).scale(&inv);
-        self.keep(side, tw, [x, y], out);
+        out.push((tw, [x, y]));
     }
 
     /// Where shifted edge i (p0 + τe) meets the circle about vertex j:
     /// E τ² + 2Bτ + C = 0, B = e·(p0 − v_j), C = |p0 − v_j|² − D².
-    fn line_circle(
-        &self,
-        side: Side,
-        sd: &BigRational,
-        i: usize,
-        j: usize,
-        out: &mut Vec<(Tower, Elem)>,
-    ) {
+    fn line_circle(&self, sd: &BigRational, i: usize, j: usize, out: &mut Vec<Cand>) {
         let Some((mut tw, p0, e, big_e)) = self.shifted_start(sd, i) else {
             return;
         };
@@ -430,13 +520,13 @@ impl Scene {
                 tw.add(&p0[0], &tau.scale(&e[0])),
                 tw.add(&p0[1], &tau.scale(&e[1])),
             ];
-            self.keep(side, tw.clone(), x, out);
+            out.push((tw.clone(), x));
         }
     }
 
     /// Where the circles about vertices i and j meet: m ± (v_j − v_i)⊥·h,
     /// h² = (D² − L/4)/L, L = |v_j − v_i|².
-    fn circle_circle(&self, side: Side, i: usize, j: usize, out: &mut Vec<(Tower, Elem)>) {
+    fn circle_circle(&self, i: usize, j: usize, out: &mut Vec<Cand>) {
         let w = sub(&self.v[j], &self.v[i]);
         let l = dot(&w, &w);
         if l.is_zero() {
@@ -444,7 +534,7 @@ impl Scene {
         }
         let quarter = BigRational::new(1.into(), 4.into());
         let h2 = (&self.d * &self.d - &l * &quarter) / &l;
-        let mut tw = Tower::new();
+        let mut tw = self.tower();
         let Some(h) = tw.adjoin(&Elem::rat(h2)) else {
             return;
         };
@@ -458,7 +548,7 @@ impl Scene {
                 tw.add(&tw.rat(&m[0]), &h.scale(&(&sgn * &w[1]))),
                 tw.add(&tw.rat(&m[1]), &h.scale(&(-&sgn * &w[0]))),
             ];
-            self.keep(side, tw.clone(), x, out);
+            out.push((tw.clone(), x));
         }
     }
 }

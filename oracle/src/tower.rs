@@ -12,16 +12,35 @@
 //! w (each of level k − 1) stand for u + w·√b_{k−1}. The sign of u + w·√b: if u and w
 //! (w·√b read as 0 when b = 0) have the same sign or one is 0, that sign; otherwise the
 //! sign of the larger in magnitude, told by the sign of u² − w²·b (a level k − 1 number).
+//!
+//! In front of that analysis stands an interval filter (the house pattern of
+//! [`crate::kernel::interval`]): each root keeps a rigorous enclosure of √b_k, an element
+//! is enclosed level by level as enclose(u) + enclose(w)·enclose(√b), and a sign is read
+//! off the enclosure when it excludes 0. Only when it does not does the exact analysis
+//! run, so every sign is still exact; [`Tower::unfiltered`] turns the filter off, and the
+//! tests check that both give the same signs.
 
 use core::cmp::Ordering;
 
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 
+use crate::kernel::interval::{enclose, Iv};
+
 /// A tower of square roots: the radicands b_0 … b_{K−1} (b_k of level k, ≥ 0).
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug)]
 pub struct Tower {
     rads: Vec<Elem>,
+    /// Rigorous enclosures of √b_0 … √b_{K−1}.
+    roots: Vec<Iv>,
+    /// Signs are first read off enclosures (module doc).
+    filter: bool,
+}
+
+impl Default for Tower {
+    fn default() -> Tower {
+        Tower::new()
+    }
 }
 
 /// An element of a tower, as 2^k rational coefficients (k its level).
@@ -53,9 +72,47 @@ impl Elem {
 }
 
 impl Tower {
-    /// The empty tower: the rationals.
+    /// The empty tower: the rationals, with the interval filter in front of every sign.
     pub fn new() -> Tower {
-        Tower { rads: Vec::new() }
+        Tower {
+            rads: Vec::new(),
+            roots: Vec::new(),
+            filter: true,
+        }
+    }
+
+    /// The empty tower without the interval filter: every sign by the exact analysis
+    /// alone (the reference the filter is tested against).
+    pub fn unfiltered() -> Tower {
+        Tower {
+            filter: false,
+            ..Tower::new()
+        }
+    }
+
+    /// Whether signs are first read off enclosures.
+    pub fn filtered(&self) -> bool {
+        self.filter
+    }
+
+    /// A rigorous enclosure of a: enclose(u) + enclose(w)·enclose(√b) level by level
+    /// (the ends of each operation rounded outward).
+    pub fn enclose(&self, a: &Elem) -> Iv {
+        let a = self.top(a);
+        self.enclose_at(a.level(), &a.0)
+    }
+
+    fn enclose_at(&self, k: usize, a: &[BigRational]) -> Iv {
+        if k == 0 {
+            return enclose(&a[0]);
+        }
+        let h = 1 << (k - 1);
+        let (u, w) = a.split_at(h);
+        let wi = self.enclose_at(k - 1, w);
+        if wi == Iv::ZERO {
+            return self.enclose_at(k - 1, u);
+        }
+        self.enclose_at(k - 1, u).add(wi.mul(self.roots[k - 1]))
     }
 
     /// The number of roots adjoined.
@@ -70,6 +127,7 @@ impl Tower {
         if self.sign(&b) == Ordering::Less {
             return None;
         }
+        self.roots.push(self.enclose(&b).sqrt());
         self.rads.push(b);
         let mut c = vec![BigRational::zero(); 1 << (k + 1)];
         c[1 << k] = BigRational::from_integer(1.into());
@@ -128,6 +186,11 @@ impl Tower {
     /// The exact sign of a.
     pub fn sign(&self, a: &Elem) -> Ordering {
         let a = self.top(a);
+        if self.filter {
+            if let Ok(o) = self.enclose_at(a.level(), &a.0).sign() {
+                return o;
+            }
+        }
         self.sign_at(a.level(), &a.0)
     }
 

@@ -80,3 +80,54 @@ fn offset_arguments_name_their_field() {
     let moved = offset_at(&SQUARE, &[[1.0, 0.0]; 4], 2.0, 1.0, 0.1).expect("valid");
     assert_eq!(moved.p[0], exact_point([2.0, 0.0]).expect("finite"));
 }
+
+/// The interval front of the point–segment test decides as the rationals do, at ties
+/// too: points exactly at distance r from a segment (3-4-5 offsets from its ends and
+/// its line), just inside and just outside, and random points, strict and not.
+#[test]
+fn segment_near_filtered_matches_exact_at_ties_and_elsewhere() {
+    use polyguard_oracle::offset::segment_near;
+    use polyguard_oracle::Q;
+    let mut seed = 0x5851_f42d_4c95_7f2du64;
+    let mut next = move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let p = |x: f64, y: f64| exact_point([x, y]).expect("finite");
+    let (a, b) = (p(1.0, 1.0), p(9.0, 1.0));
+    let r2 = Q::from_integer(25.into());
+    let mut xs = vec![
+        p(-2.0, 5.0),
+        p(12.0, 5.0),
+        p(5.0, 6.0),
+        p(5.0, -4.0),
+        p(1.0, 1.0),
+    ];
+    for x in [p(-2.0, 5.0), p(5.0, 6.0)] {
+        for dy in [1e-12, -1e-12] {
+            xs.push(V::new(
+                x.x.clone(),
+                &x.y + Q::from_float(dy).expect("finite"),
+            ));
+        }
+    }
+    for _ in 0..2000 {
+        xs.push(p(20.0 * next() - 5.0, 14.0 * next() - 6.0));
+    }
+    let mut ties = 0;
+    for x in &xs {
+        for strict in [false, true] {
+            let fast = segment_near(x, &a, &b, &r2, strict, true);
+            let slow = segment_near(x, &a, &b, &r2, strict, false);
+            assert_eq!(fast, slow, "x = {x:?} strict {strict}");
+        }
+        if segment_near(x, &a, &b, &r2, false, false) != segment_near(x, &a, &b, &r2, true, false) {
+            ties += 1;
+        }
+    }
+    assert_eq!(ties, 4, "the four points at distance exactly 5");
+}
+
+type V = polyguard_oracle::V2<polyguard_oracle::Q>;

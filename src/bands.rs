@@ -144,6 +144,7 @@
 //! says whether the total came under `unknown_max`.
 
 mod cell;
+pub mod refine;
 mod rigid;
 
 use core::fmt;

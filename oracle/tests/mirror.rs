@@ -42,7 +42,7 @@ const KERNEL_PARAM: &str = "k";
 
 /// Engine modules with no oracle counterpart, each for its reason. Each must exist in
 /// the engine and not in the oracle (a stale entry fails the test).
-const ENGINE_ONLY_MODULES: [(&str, &str); 9] = [
+const ENGINE_ONLY_MODULES: [(&str, &str); 10] = [
     (
         "offset::raw",
         "the f64 construction region (strips and circumscribed fans); the oracle checks a \
@@ -60,8 +60,13 @@ const ENGINE_ONLY_MODULES: [(&str, &str); 9] = [
     ),
     (
         "bands::cell",
-        "the f64 certificate of a cell between samples and its refinement; the oracle \
-         decides single velocities exactly (bands::conflict)",
+        "the f64 certificate of a cell between samples; the oracle decides single \
+         velocities exactly (bands::conflict)",
+    ),
+    (
+        "bands::refine",
+        "the halving of cells into bands, for any cell certificate; the oracle decides \
+         single velocities and has no cells to refine",
     ),
     (
         "bands::rigid",

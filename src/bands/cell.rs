@@ -1,12 +1,13 @@
-//! One cell's certificate and the refinement of cells into bands (the parent module's
-//! "certificate between samples", "prefilter and early exit" and "refinement"; paper
-//! A §II–§III's motion through the scan of `crate::intervals`).
+//! One cell's certificate (the parent module's "certificate between samples" and
+//! "prefilter and early exit"; paper A §II–§III's motion through the scan of
+//! `crate::intervals`), refined into bands by [`super::refine`].
 
 use std::boxed::Box;
 use std::vec::Vec;
 
+use super::refine::{refine, CellTest};
 use super::rigid::Rigid;
-use super::{Band, BandKind, Bands, Traffic, Tri, MAX_CELLS};
+use super::{BandKind, Bands, Traffic, Tri};
 use crate::ball::{round_down, round_up};
 use crate::intervals::{Class, Heights, Pieces, Relation, Scan, Separation, Workspace};
 use crate::vect2::Vect2;
@@ -53,13 +54,6 @@ fn slice_ends(t: f64) -> [f64; SLICES + 1] {
     }
     ends
 }
-
-/// A refinement pass that leaves more than this fraction of the Unknown total has
-/// stalled.
-const STALL: f64 = 0.9;
-
-/// After this many stalled passes in a row the refinement stops (`met` is false).
-const STALLS: usize = 4;
 
 /// The most cells a band answer starts with (see [`Tester::first_cells`]).
 const FIRST_CELLS_MAX: usize = 256;
@@ -152,15 +146,6 @@ impl Pieces for Find {
     }
 }
 
-/// A cell of the refinement: its range, its verdict, and (Unknown) the obstacles it
-/// left open.
-struct Cell {
-    lo: f64,
-    hi: f64,
-    kind: BandKind,
-    open: Vec<u32>,
-}
-
 /// The certificate's machinery for one traffic situation and one parameter family.
 pub(super) struct Tester<'a> {
     traffic: &'a Traffic<'a>,
@@ -171,8 +156,6 @@ pub(super) struct Tester<'a> {
     /// slab (the parent module's fast path), else `None`.
     rigid: Vec<Option<Vect2>>,
     ws: Box<Workspace>,
-    /// Cell tests so far.
-    cells: usize,
 }
 
 impl<'a> Tester<'a> {
@@ -204,7 +187,6 @@ impl<'a> Tester<'a> {
             boxes,
             rigid,
             ws: Box::new(Workspace::new()),
-            cells: 0,
         }
     }
 
@@ -419,21 +401,14 @@ impl<'a> Tester<'a> {
         }
     }
 
-    /// Tests the cell [lo, hi] against the obstacles `open` (the parent's open ones).
-    fn test(&mut self, lo: f64, hi: f64, open: &[u32]) -> Cell {
-        self.cells += 1;
+    /// Tests the cell [lo, hi] against the obstacles `open` (the parent's open ones):
+    /// Conflict when one is, Clear when all are, else Unknown with the ones left open.
+    fn test_cell(&mut self, lo: f64, hi: f64, open: &[u32]) -> (BandKind, Vec<u32>) {
         let pr = self.probe(lo, hi);
         let mut left = Vec::new();
         for &i in open {
             match self.verdict(i as usize, &pr) {
-                Tri::Yes => {
-                    return Cell {
-                        lo,
-                        hi,
-                        kind: BandKind::Conflict,
-                        open: Vec::new(),
-                    }
-                }
+                Tri::Yes => return (BandKind::Conflict, Vec::new()),
                 Tri::No => {}
                 Tri::Unsure => left.push(i),
             }
@@ -443,36 +418,7 @@ impl<'a> Tester<'a> {
         } else {
             BandKind::Unknown
         };
-        Cell {
-            lo,
-            hi,
-            kind,
-            open: left,
-        }
-    }
-
-    /// Settles [lo, hi] (open obstacles `open`), halving Unknown cells wider than
-    /// `w_min`, pushing the leaves in order.
-    fn settle(&mut self, lo: f64, hi: f64, open: &[u32], w_min: f64, out: &mut Vec<Cell>) {
-        let cell = self.test(lo, hi, open);
-        self.split(cell, w_min, out);
-    }
-
-    /// Halves an Unknown cell wider than `w_min` (while its midpoint is strictly inside
-    /// and the budget lasts), else keeps it.
-    fn split(&mut self, cell: Cell, w_min: f64, out: &mut Vec<Cell>) {
-        let m = cell.lo + (cell.hi - cell.lo) * 0.5;
-        let can = cell.kind == BandKind::Unknown
-            && cell.hi - cell.lo > w_min
-            && cell.lo < m
-            && m < cell.hi
-            && self.cells + 2 <= MAX_CELLS;
-        if can {
-            self.settle(cell.lo, m, &cell.open, w_min, out);
-            self.settle(m, cell.hi, &cell.open, w_min, out);
-        } else {
-            out.push(cell);
-        }
+        (kind, left)
     }
 
     /// How many equal cells to start with: the fewest (a power of two, at most
@@ -494,80 +440,19 @@ impl<'a> Tester<'a> {
 
     /// The band answer over [lo, hi] (parent module's refinement).
     pub(super) fn bands(mut self, lo: f64, hi: f64, unknown_max: f64) -> Bands {
-        let all: Vec<u32> = (0..self.traffic.obstacles.len() as u32).collect();
-        let mut cells = Vec::new();
         let n = self.first_cells(lo, hi);
-        // Level by level: the first cells as they are, then every Unknown cell halved
-        // once per pass.
-        let mut w_min = (hi - lo) / n as f64;
-        let mut a = lo;
-        for k in 1..=n {
-            let b = if k == n {
-                hi
-            } else {
-                lo + (hi - lo) * (k as f64 / n as f64)
-            };
-            self.settle(a, b, &all, f64::INFINITY, &mut cells);
-            a = b;
-        }
-        let mut stalls = 0;
-        loop {
-            let unknown = unknown_width(&cells);
-            if unknown <= unknown_max {
-                break;
-            }
-            w_min *= 0.5;
-            let before = self.cells;
-            let mut next = Vec::with_capacity(cells.len());
-            for cell in cells {
-                self.split(cell, w_min, &mut next);
-            }
-            cells = next;
-            let split = self.cells > before;
-            if split {
-                // Halving every Unknown cell roughly halves a sliver around a boundary;
-                // an Unknown stretch that does not shrink is one the certificate cannot
-                // decide at any width.
-                if unknown_width(&cells) > STALL * unknown {
-                    stalls += 1;
-                } else {
-                    stalls = 0;
-                }
-            }
-            let stuck = !split && w_min < unknown_max * f64::EPSILON;
-            if stuck || stalls >= STALLS || self.cells + 2 > MAX_CELLS {
-                break;
-            }
-        }
-        merge(cells, unknown_max)
+        refine(&mut self, lo, hi, n, unknown_max)
     }
 }
 
-/// The total width of the Unknown cells.
-fn unknown_width(cells: &[Cell]) -> f64 {
-    cells
-        .iter()
-        .filter(|c| c.kind == BandKind::Unknown)
-        .fold(0.0, |u, c| u + (c.hi - c.lo))
-}
+impl CellTest for Tester<'_> {
+    type Open = Vec<u32>;
 
-/// Adjacent cells of one kind merged into bands, with the Unknown total.
-fn merge(cells: Vec<Cell>, unknown_max: f64) -> Bands {
-    let unknown_total = unknown_width(&cells);
-    let mut bands: Vec<Band> = Vec::new();
-    for c in cells {
-        match bands.last_mut() {
-            Some(b) if b.kind == c.kind => b.hi = c.hi,
-            _ => bands.push(Band {
-                lo: c.lo,
-                hi: c.hi,
-                kind: c.kind,
-            }),
-        }
+    fn everything(&self) -> Vec<u32> {
+        (0..self.traffic.obstacles.len() as u32).collect()
     }
-    Bands {
-        bands,
-        unknown_total,
-        met: unknown_total <= unknown_max,
+
+    fn test(&mut self, lo: f64, hi: f64, open: &Vec<u32>) -> (BandKind, Vec<u32>) {
+        self.test_cell(lo, hi, open)
     }
 }

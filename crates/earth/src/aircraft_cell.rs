@@ -255,6 +255,11 @@ pub enum EarthErrorKind {
     ZeroArea,
     /// The ring is too extreme for the exact checks.
     NotCheckable,
+    /// Certified on the sphere model only (course bands: `crate::bands`).
+    SphereOnly {
+        /// What is asked.
+        what: &'static str,
+    },
     /// The projected cell stops being a simple polygon during the lookahead.
     NotSimpleAt {
         /// The start of the piece where it fails (hours).
@@ -274,7 +279,7 @@ pub struct EarthError {
 
 impl EarthError {
     /// An error of `kind` about `field`.
-    fn new(field: impl Into<String>, kind: EarthErrorKind) -> Self {
+    pub(crate) fn new(field: impl Into<String>, kind: EarthErrorKind) -> Self {
         EarthError {
             field: field.into(),
             kind,
@@ -287,6 +292,10 @@ impl fmt::Display for EarthError {
         write!(f, "{}: ", self.field)?;
         match &self.kind {
             EarthErrorKind::NotFinite => write!(f, "not a finite number"),
+            EarthErrorKind::SphereOnly { what } => write!(
+                f,
+                "{what} are certified on the sphere model only (--geodesy sphere)"
+            ),
             EarthErrorKind::NotPositive { value } => write!(f, "{value} is not > 0"),
             EarthErrorKind::Negative { value } => write!(f, "{value} is negative"),
             EarthErrorKind::OutOfRange { value, range } => write!(f, "{value} is outside {range}"),
@@ -549,14 +558,28 @@ fn norm(a: Merc) -> f64 {
 }
 
 /// One piece's paper-A case and its buffer.
-struct Piece {
-    case: Option<Case>,
-    buff_merc: f64,
+pub(crate) struct Piece {
+    pub(crate) case: Option<Case>,
+    pub(crate) buff_merc: f64,
     effective_nm: f64,
 }
 
+/// What a piece's buffer is for.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Role {
+    /// Detection (module doc): grown, so that the stand-in's "no" is certain.
+    Alarm(Buffer),
+    /// A certain approach within `target_nm` (> 0): shrunk, so that the stand-in point
+    /// certainly within the buffer of the stand-in cell puts the aircraft within
+    /// `target_nm` of the cell (crate::bands, "Conflict on the Earth").
+    Certain {
+        /// The distance to certify, nautical miles.
+        target_nm: f64,
+    },
+}
+
 /// The encounter laid out on the unwrapped Mercator plane.
-struct Layout {
+pub(crate) struct Layout {
     geo: Geodesy,
     radii: Radii,
     buff_nm: f64,
@@ -580,7 +603,7 @@ impl Layout {
 
     /// Paper A §II.H's case for the piece `[ta, tb]` (module doc); the case is `None`
     /// when the stand-in cell is not a simple polygon (the caller falls back or fails).
-    fn piece(&self, ta: f64, tb: f64, buffer: Buffer, mid_shape: bool) -> Piece {
+    pub(crate) fn piece(&self, ta: f64, tb: f64, role: Role, mid_shape: bool) -> Piece {
         let geo = self.geo;
         let h = tb - ta;
         // The point: the aircraft's projected ends and their interpolation.
@@ -638,19 +661,32 @@ impl Layout {
                 Geodesy::Sphere => 0.0,
                 Geodesy::Wgs84 => WGS84_MODEL_RAD,
             };
-        let buff_merc = match buffer {
-            Buffer::Certified => {
-                (self.buff_nm / (phi_b.cos() * self.radii.scale) + dev_air + cell_dev + rounding)
-                    * BOUND_SAFETY
-            }
-            Buffer::Unscaled => self.buff_nm / self.radii.scale,
-        };
-        // nm per Mercator radian at the lowest |latitude| of the aircraft in the piece
+        // the lowest |latitude| of the aircraft in the piece (a rhumb line's latitude is
+        // monotone in t)
         let lo = if pa.lat.signum() != pb.lat.signum() {
             0.0
         } else {
             pa.lat.abs().min(pb.lat.abs())
         };
+        let buff_merc = match role {
+            Role::Alarm(Buffer::Certified) => {
+                (self.buff_nm / (phi_b.cos() * self.radii.scale) + dev_air + cell_dev + rounding)
+                    * BOUND_SAFETY
+            }
+            Role::Alarm(Buffer::Unscaled) => self.buff_nm / self.radii.scale,
+            Role::Certain { target_nm } => {
+                crate::bands::certain_buffer(self.geo, target_nm, lo)
+                    - (dev_air + cell_dev + rounding) * BOUND_SAFETY
+            }
+        };
+        if buff_merc.is_nan() || buff_merc <= 0.0 {
+            return Piece {
+                case: None,
+                buff_merc: 0.0,
+                effective_nm: 0.0,
+            };
+        }
+        // nm per Mercator radian at the lowest |latitude| of the aircraft in the piece
         let effective_nm = buff_merc * self.radii.scale * lo.cos();
         // The engine covers [0, h'] with h' ≥ the exact t_b − t_a (h is within 2⁻⁵³ of it).
         let lookahead = h * (1.0 + 4.0 * f64::EPSILON);
@@ -685,14 +721,7 @@ pub fn detect_earth(case: &EarthCase, geo: Geodesy) -> Result<EarthAnswer, Earth
 /// Paper A §II.H (`detect_same_2D`) on the Earth through paper B §V's Mercator, with the
 /// buffer grown so that "no" is certain (module doc).
 pub fn detect_earth_with(case: &EarthCase, opts: Options) -> Result<EarthAnswer, EarthError> {
-    validate(case)?;
-    let geo = opts.geodesy;
-    let (layout, order, reversed) = lay_out(case, geo)?;
-    let air_end = within_reach(case, &layout, &order)?;
-    let n = match opts.pieces {
-        Pieces::Fixed(n) => n.max(1),
-        Pieces::Auto => auto_pieces(&layout, air_end, case.lookahead_h),
-    };
+    let (layout, n, reversed) = prepare(case, opts.geodesy, opts.pieces)?;
     let mut answer = EarthAnswer {
         detected: false,
         kind: Kind::Exact,
@@ -705,6 +734,34 @@ pub fn detect_earth_with(case: &EarthCase, opts: Options) -> Result<EarthAnswer,
     };
     decide_pieces(&layout, case.lookahead_h, opts.buffer, &mut answer)?;
     Ok(answer)
+}
+
+/// A case checked against the format's rules and limits and laid out (module doc), with
+/// its number of pieces and whether the ring was reversed.
+pub(crate) fn prepare(
+    case: &EarthCase,
+    geo: Geodesy,
+    pieces: Pieces,
+) -> Result<(Layout, usize, bool), EarthError> {
+    validate(case)?;
+    let (layout, order, reversed) = lay_out(case, geo)?;
+    let air_end = within_reach(case, &layout, &order)?;
+    let n = match pieces {
+        Pieces::Fixed(n) => n.max(1),
+        Pieces::Auto => auto_pieces(&layout, air_end, case.lookahead_h),
+    };
+    Ok((layout, n, reversed))
+}
+
+/// The ends of piece `j` of `n` of `[0, t_end]` (float times; the last ends at t_end).
+pub(crate) fn piece_ends(t_end: f64, j: usize, n: usize) -> (f64, f64) {
+    let ta = t_end * j as f64 / n as f64;
+    let tb = if j + 1 == n {
+        t_end
+    } else {
+        t_end * (j + 1) as f64 / n as f64
+    };
+    (ta, tb)
 }
 
 /// The module doc's layout: the movers on one branch of longitude around the aircraft's
@@ -828,15 +885,10 @@ fn decide_pieces(
 ) -> Result<(), EarthError> {
     let n = answer.pieces;
     for j in 0..n {
-        let ta = t_end * j as f64 / n as f64;
-        let tb = if j + 1 == n {
-            t_end
-        } else {
-            t_end * (j + 1) as f64 / n as f64
-        };
-        let mut piece = layout.piece(ta, tb, buffer, true);
+        let (ta, tb) = piece_ends(t_end, j, n);
+        let mut piece = layout.piece(ta, tb, Role::Alarm(buffer), true);
         if piece.case.is_none() {
-            piece = layout.piece(ta, tb, buffer, false);
+            piece = layout.piece(ta, tb, Role::Alarm(buffer), false);
         }
         let Some(pcase) = piece.case else {
             return Err(EarthError::new(

@@ -27,6 +27,7 @@
 
 pub mod aircraft_cell;
 pub mod analysis;
+pub mod bands;
 pub mod conflict;
 pub mod generate;
 pub mod geodesy;

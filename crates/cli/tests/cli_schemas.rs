@@ -1135,3 +1135,46 @@ fn the_way_out_answers_validate() {
     }
     println!("way-out answers: {} lines validate", answers.len());
 }
+
+/// Every answer line of `bands --earth` on its example (with and without speed bands)
+/// and on bad lines validates against bands-earth-answer.schema.json; the schema
+/// rejects a plane `bands` answer, and an Earth answer whose band ends lost their unit
+/// or whose kind is misspelt (the canaries).
+#[test]
+fn the_earth_bands_answers_validate() {
+    let v = schema("bands-earth-answer.schema.json");
+    let example = read(&root().join("examples/earth-bands.jsonl"));
+    let input = format!("{example}not json\n{{\"id\":\"x\",\"buff_nm\":5}}\n");
+    let (out, code) = polyguard(&["bands", "--earth", "-"], input.as_bytes());
+    assert_eq!(code, 1, "the bad lines give exit 1\n{out}");
+    let mut answers = Vec::new();
+    for line in out.lines() {
+        let value = parse("bands --earth", line);
+        assert_valid(&v, "bands --earth", &value);
+        if value.get("error").is_none() {
+            answers.push(value);
+        }
+    }
+    assert_eq!(answers.len(), example.lines().count());
+    assert!(answers.iter().any(|a| a.get("speed").is_some()));
+    let a = &answers[0];
+    let unitless =
+        serde_json::from_str::<Value>(&a.to_string().replace("\"from_deg\"", "\"from\""))
+            .expect("JSON");
+    assert_invalid(&v, "course bands without their unit", &unitless);
+    let misspelt = serde_json::from_str::<Value>(&a.to_string().replacen(
+        "\"kind\":\"clear\"",
+        "\"kind\":\"free\"",
+        1,
+    ))
+    .expect("JSON");
+    assert_invalid(&v, "a kind that is not one", &misspelt);
+    let plane = read(&root().join(WAYOUT_EXAMPLES[0]));
+    let (out, _) = polyguard(&["bands", "-"], plane.as_bytes());
+    let first = out.lines().next().expect("a plane answer");
+    assert_invalid(&v, "a plane bands answer", &parse("bands", first));
+    println!(
+        "bands-earth-answer.schema.json: {} answers validate",
+        answers.len()
+    );
+}

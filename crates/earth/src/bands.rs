@@ -54,9 +54,12 @@
 //! Mercator segment of length m the latitude changes by at most k·m (dφ/dψ = cos φ on the
 //! sphere, at most 1/(1 − e²) on WGS84). So two points whose images are at most m apart,
 //! one at |latitude| ≥ φ_lo, are at most N_max·cos(max(0, φ_lo − k·m))·m apart on the
-//! Earth (the length of the rhumb line between them). For a target B the buffer is
-//! m = B / (N_max·cos(max(0, φ_lo − k·m₀))) with m₀ = B / (N_max cos φ_lo) ≥ m (so the
-//! cosine at m is at most the one used): then N_max·cos(max(0, φ_lo − k·m))·m ≤ B.
+//! Earth (the length of the rhumb line between them). For a target B, with
+//! m₀ = B / (N_max cos φ_lo): the buffer is m = B / (N_max·cos(max(0, φ_lo − k₂·m₀))),
+//! k₂ = k·cos(max(0, φ_lo − k·m₀)) (along a segment of length m ≤ m₀ the latitude stays
+//! above φ_lo − k·m₀, where dφ/dψ ≤ k₂; m ≤ m₀ because the cosine used is at least
+//! cos φ_lo). Then the latitude lost along the segment is at most k₂·m ≤ k₂·m₀ and
+//! N_max·cos(max(0, φ_lo − k₂·m))·m ≤ B.
 //! φ_lo is the lowest |latitude| of the aircraft in the piece. The stand-in point and
 //! cell lie within the deviation and rounding terms of the true images (module doc of
 //! [`crate::aircraft_cell`]); those are subtracted, and the rest divided by
@@ -140,7 +143,10 @@ pub(crate) fn certain_buffer(geo: Geodesy, target_nm: f64, lat_lo: f64) -> f64 {
         }
     };
     let m0 = target_nm / (n_max * lat_lo.cos()) * BOUND_SAFETY;
-    let low = (lat_lo - k * m0).max(0.0);
+    // along the segment |φ| ≥ φ_lo − k·m₀, so dφ/dψ ≤ k·cos(φ_lo − k·m₀): a second,
+    // tighter bound on the latitude lost
+    let k2 = k * (lat_lo - k * m0).max(0.0).cos() * BOUND_SAFETY;
+    let low = (lat_lo - k2 * m0).max(0.0);
     target_nm / (n_max * low.cos()) / BOUND_SAFETY / BOUND_SAFETY
 }
 

@@ -36,7 +36,7 @@ pub struct LineError {
 }
 
 impl LineError {
-    fn new(field: impl Into<String>, what: impl std::fmt::Display) -> Self {
+    pub(crate) fn new(field: impl Into<String>, what: impl std::fmt::Display) -> Self {
         let field = field.into();
         LineError {
             message: format!("{field}: {what}"),
@@ -45,13 +45,23 @@ impl LineError {
     }
 }
 
-const TOP_KEYS: [&str; 6] = ["id", "lookahead_h", "buff_nm", "aircraft", "cell", "meta"];
+/// The top-level fields; `bands` is read by `polyguard bands --earth` (crate
+/// `commands::bands_earth`) and ignored here.
+const TOP_KEYS: [&str; 7] = [
+    "id",
+    "lookahead_h",
+    "buff_nm",
+    "aircraft",
+    "cell",
+    "bands",
+    "meta",
+];
 const AIRCRAFT_KEYS: [&str; 3] = ["pos", "course_deg", "speed_kn"];
 const CELL_KEYS: [&str; 3] = ["vertices", "course_deg", "speed_kn"];
 
 /// The first key of `obj` not in `known`, as an error naming its path and the nearest
 /// known name (as the case format does: docs/cases.md).
-fn only_known(
+pub(crate) fn only_known(
     obj: &Map<String, Value>,
     known: &[&'static str],
     prefix: &str,
@@ -70,19 +80,23 @@ fn only_known(
     }
 }
 
-fn get<'a>(obj: &'a Map<String, Value>, key: &str, field: &str) -> Result<&'a Value, LineError> {
+pub(crate) fn get<'a>(
+    obj: &'a Map<String, Value>,
+    key: &str,
+    field: &str,
+) -> Result<&'a Value, LineError> {
     match obj.get(key) {
         None | Some(Value::Null) => Err(LineError::new(field, "missing")),
         Some(v) => Ok(v),
     }
 }
 
-fn number(v: &Value, field: &str) -> Result<f64, LineError> {
+pub(crate) fn number(v: &Value, field: &str) -> Result<f64, LineError> {
     v.as_f64()
         .ok_or_else(|| LineError::new(field, "must be a number"))
 }
 
-fn object<'a>(v: &'a Value, field: &str) -> Result<&'a Map<String, Value>, LineError> {
+pub(crate) fn object<'a>(v: &'a Value, field: &str) -> Result<&'a Map<String, Value>, LineError> {
     v.as_object()
         .ok_or_else(|| LineError::new(field, "must be an object"))
 }
@@ -149,13 +163,12 @@ pub fn encounter_from_object(obj: &Map<String, Value>) -> Result<EarthCase, Line
     })
 }
 
-/// Answers one line: the fields after `id`, or the error. The id is the line's `id`, or
-/// the line number when it has none or cannot be read.
-pub fn answer_line(
+/// One line read as a JSON object (a leading BOM and the line end dropped), with its
+/// id: the line's `id`, or the line number when it has none or cannot be read.
+pub(crate) fn object_line(
     text: &str,
     line_no: usize,
-    geo: Geodesy,
-) -> (Value, Result<Map<String, Value>, LineError>) {
+) -> Result<(Value, Map<String, Value>), (Value, LineError)> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let text = text.trim_end_matches(['\n', '\r']);
     let value = match serde_json::from_str::<Strict>(text) {
@@ -166,27 +179,46 @@ pub fn answer_line(
                 Some(i) => format!("{} at column {}", &msg[..i], e.column()),
                 None => msg,
             };
-            return (
+            return Err((
                 Value::from(line_no),
-                Err(LineError::new("line", format!("not a JSON object: {msg}"))),
-            );
+                LineError::new("line", format!("not a JSON object: {msg}")),
+            ));
         }
     };
     let Value::Object(obj) = value else {
-        return (
+        return Err((
             Value::from(line_no),
-            Err(LineError::new("line", "the line is JSON but not an object")),
-        );
+            LineError::new("line", "the line is JSON but not an object"),
+        ));
     };
     let id = obj
         .get("id")
         .cloned()
         .unwrap_or_else(|| Value::from(line_no));
+    Ok((id, obj))
+}
+
+/// An engine error as a line error (its field and message).
+pub(crate) fn earth_error(e: polyguard_earth::paper_a::EarthError) -> LineError {
+    LineError {
+        message: e.to_string(),
+        field: e.field.clone(),
+    }
+}
+
+/// Answers one line: the fields after `id`, or the error. The id is the line's `id`, or
+/// the line number when it has none or cannot be read.
+pub fn answer_line(
+    text: &str,
+    line_no: usize,
+    geo: Geodesy,
+) -> (Value, Result<Map<String, Value>, LineError>) {
+    let (id, obj) = match object_line(text, line_no) {
+        Ok(x) => x,
+        Err((id, e)) => return (id, Err(e)),
+    };
     let result = encounter_from_object(&obj).and_then(|case| {
-        let a = detect_earth(&case, geo).map_err(|e| LineError {
-            message: e.to_string(),
-            field: e.field.clone(),
-        })?;
+        let a = detect_earth(&case, geo).map_err(earth_error)?;
         let mut out = Map::new();
         out.insert("detected".into(), a.detected.into());
         out.insert("kind".into(), a.kind.name().into());
@@ -203,7 +235,18 @@ pub fn answer_line(
 }
 
 /// Streams encounters from `reader` to `out`; returns the number of lines that failed.
-pub fn process<R: BufRead, W: Write>(mut reader: R, out: &mut W, geo: Geodesy) -> io::Result<u64> {
+pub fn process<R: BufRead, W: Write>(reader: R, out: &mut W, geo: Geodesy) -> io::Result<u64> {
+    process_with(reader, out, |t, n| answer_line(t, n, geo))
+}
+
+/// Streams lines from `reader` to `out`, each answered by `answer` (its id, and its
+/// fields or its error); blank lines are skipped. Returns the number of lines that
+/// failed.
+pub(crate) fn process_with<R: BufRead, W: Write>(
+    mut reader: R,
+    out: &mut W,
+    mut answer: impl FnMut(&str, usize) -> (Value, Result<Map<String, Value>, LineError>),
+) -> io::Result<u64> {
     let mut buf = Vec::new();
     let (mut line_no, mut failed) = (0usize, 0u64);
     loop {
@@ -214,7 +257,7 @@ pub fn process<R: BufRead, W: Write>(mut reader: R, out: &mut W, geo: Geodesy) -
         line_no += 1;
         let (id, result) = match std::str::from_utf8(&buf) {
             Ok(t) if t.trim().is_empty() => continue,
-            Ok(t) => answer_line(t, line_no, geo),
+            Ok(t) => answer(t, line_no),
             Err(_) => (
                 Value::from(line_no),
                 Err(LineError::new("line", "not UTF-8")),
@@ -239,19 +282,30 @@ pub fn process<R: BufRead, W: Write>(mut reader: R, out: &mut W, geo: Geodesy) -
 /// Runs `polyguard detect-earth`: one answer line per non-blank input line, in order;
 /// exit 0, 1 when some line could not be answered, 2 when the input cannot be read.
 pub fn run(args: &DetectEarthArgs) -> ExitCode {
-    let name = args
-        .file
+    let geo: Geodesy = args.geodesy.into();
+    run_lines("detect-earth", &args.file, |t, n| answer_line(t, n, geo))
+}
+
+/// Runs a command that answers the encounter file `file` (standard input when absent or
+/// "-") line by line with `answer`: exit 0, 1 when some line could not be answered, 2
+/// when the input cannot be read.
+pub(crate) fn run_lines(
+    cmd: &str,
+    file: &Option<PathBuf>,
+    answer: impl FnMut(&str, usize) -> (Value, Result<Map<String, Value>, LineError>),
+) -> ExitCode {
+    let name = file
         .as_ref()
         .map_or_else(|| "standard input".into(), |p| p.display().to_string());
-    let reader: Box<dyn BufRead> = match &args.file {
+    let reader: Box<dyn BufRead> = match file {
         Some(p) if p.is_dir() => {
-            eprintln!("polyguard detect-earth: cannot read {name}: is a directory");
+            eprintln!("polyguard {cmd}: cannot read {name}: is a directory");
             return ExitCode::from(2);
         }
         Some(p) if p.as_os_str() != "-" => match File::open(p) {
             Ok(f) => Box::new(BufReader::new(f)),
             Err(e) => {
-                eprintln!("polyguard detect-earth: cannot read {name}: {e}");
+                eprintln!("polyguard {cmd}: cannot read {name}: {e}");
                 return ExitCode::from(2);
             }
         },
@@ -259,14 +313,14 @@ pub fn run(args: &DetectEarthArgs) -> ExitCode {
     };
     let stdout = io::stdout();
     let mut out = BufWriter::new(stdout.lock());
-    match process(reader, &mut out, args.geodesy.into()).and_then(|f| out.flush().map(|()| f)) {
+    match process_with(reader, &mut out, answer).and_then(|f| out.flush().map(|()| f)) {
         Ok(0) => ExitCode::SUCCESS,
         Ok(failed) => {
-            eprintln!("polyguard detect-earth: {failed} line(s) could not be answered");
+            eprintln!("polyguard {cmd}: {failed} line(s) could not be answered");
             ExitCode::from(1)
         }
         Err(e) => {
-            eprintln!("polyguard detect-earth: reading {name}: {e}");
+            eprintln!("polyguard {cmd}: reading {name}: {e}");
             ExitCode::from(2)
         }
     }

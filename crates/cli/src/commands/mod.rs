@@ -6,6 +6,7 @@ pub mod assure_intervals;
 pub mod assure_moving;
 pub mod assure_wayout;
 pub mod bands;
+pub mod bands_earth;
 pub mod conflicts;
 pub mod detect;
 pub mod detect_batch;

@@ -255,6 +255,12 @@ pub enum EarthErrorKind {
     ZeroArea,
     /// The ring is too extreme for the exact checks.
     NotCheckable,
+    /// Course bands (`crate::bands`): some course reaches beyond [`MAX_LAT_DEG`] within
+    /// the lookahead (|latitude| + speed·T/R).
+    CoursesReach {
+        /// That latitude, degrees.
+        lat_deg: f64,
+    },
     /// Certified on the sphere model only (course bands: `crate::bands`).
     SphereOnly {
         /// What is asked.
@@ -292,6 +298,11 @@ impl fmt::Display for EarthError {
         write!(f, "{}: ", self.field)?;
         match &self.kind {
             EarthErrorKind::NotFinite => write!(f, "not a finite number"),
+            EarthErrorKind::CoursesReach { lat_deg } => write!(
+                f,
+                "a course of the bands reaches latitude {lat_deg:.4}° within the lookahead \
+                 (|latitude| + speed·T/R), beyond the format's ±{MAX_LAT_DEG}°"
+            ),
             EarthErrorKind::SphereOnly { what } => write!(
                 f,
                 "{what} are certified on the sphere model only (--geodesy sphere)"

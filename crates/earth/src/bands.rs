@@ -358,7 +358,7 @@ pub fn course_bands(
     {
         return Err(EarthError::new(
             "lookahead_h",
-            EarthErrorKind::LeavesLatitudeLimit { lat_deg: reach },
+            EarthErrorKind::CoursesReach { lat_deg: reach },
         ));
     }
     let mut cells = EarthCells {

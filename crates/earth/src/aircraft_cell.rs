@@ -580,6 +580,13 @@ pub(crate) struct Piece {
 pub(crate) enum Role {
     /// Detection (module doc): grown, so that the stand-in's "no" is certain.
     Alarm(Buffer),
+    /// The certified grown buffer of detection for another BUFF (`buff_nm`, > 0): a
+    /// piece whose stand-in never comes within it keeps the aircraft `buff_nm` from the
+    /// cell (crate::bands, a radius growing with time).
+    Grown {
+        /// The BUFF of this piece, nautical miles.
+        buff_nm: f64,
+    },
     /// A certain approach within `target_nm` (> 0): shrunk, so that the stand-in point
     /// certainly within the buffer of the stand-in cell puts the aircraft within
     /// `target_nm` of the cell (crate::bands, "Conflict on the Earth").
@@ -609,7 +616,12 @@ impl Layout {
     /// `Φ_b`: the largest latitude a path shorter than BUFF from the aircraft reaches
     /// while the aircraft is between latitudes `a` and `b`.
     fn buffer_lat(&self, a: LonLat, b: LonLat) -> f64 {
-        a.lat.abs().max(b.lat.abs()) + self.buff_nm / self.radii.lat
+        self.buffer_lat_of(a, b, self.buff_nm)
+    }
+
+    /// `Φ_b` for a BUFF of `buff_nm`.
+    fn buffer_lat_of(&self, a: LonLat, b: LonLat, buff_nm: f64) -> f64 {
+        a.lat.abs().max(b.lat.abs()) + buff_nm / self.radii.lat
     }
 
     /// Paper A §II.H's case for the piece `[ta, tb]` (module doc); the case is `None`
@@ -666,7 +678,11 @@ impl Layout {
             c = c.max(p[0].abs()).max(p[1].abs());
             verts.push(Vect2::new(p[0], p[1]));
         }
-        let phi_b = self.buffer_lat(pa, pb);
+        let buff_nm = match role {
+            Role::Grown { buff_nm } => buff_nm,
+            _ => self.buff_nm,
+        };
+        let phi_b = self.buffer_lat_of(pa, pb, buff_nm);
         let rounding = 4.0 * position_slack(c)
             + match geo {
                 Geodesy::Sphere => 0.0,
@@ -680,8 +696,8 @@ impl Layout {
             pa.lat.abs().min(pb.lat.abs())
         };
         let buff_merc = match role {
-            Role::Alarm(Buffer::Certified) => {
-                (self.buff_nm / (phi_b.cos() * self.radii.scale) + dev_air + cell_dev + rounding)
+            Role::Alarm(Buffer::Certified) | Role::Grown { .. } => {
+                (buff_nm / (phi_b.cos() * self.radii.scale) + dev_air + cell_dev + rounding)
                     * BOUND_SAFETY
             }
             Role::Alarm(Buffer::Unscaled) => self.buff_nm / self.radii.scale,

@@ -35,17 +35,19 @@
 //!   longer than |Δθ|·κ(1 + a)·L: r = δ·κ(1 + a)·L ([`course_spread_nm`]).
 //!   Φ must stay below 85° (the format's limit): beyond, the lookahead's reach is refused.
 //!
-//! Then:
-//! - **Clear**: [`crate::aircraft_cell::detect_earth`] at the sample with BUFF + r
-//!   has no window of loss of separation. Its windows are certified (every time at
-//!   which the aircraft is within BUFF + r lies in one: the near spans of each piece's
-//!   grown stand-in, which decide the distance itself, without paper A's detection
-//!   margin), so the sample's aircraft never comes within BUFF + r of the cell, and by
-//!   the triangle inequality (both distances are metrics, and a distance to a set is
-//!   1-Lipschitz) no value of the cell comes within BUFF.
-//! - **Conflict**, when r < BUFF: [`certain_within`] at the sample with BUFF − r finds a
-//!   time at which the sample's aircraft is certainly within BUFF − r of the cell; every
-//!   value of the cell is then within BUFF.
+//! Both bounds grow with t: r(t) is the same with T replaced by t (L = σ·t), and on the
+//! pieces [t_a, t_b] of detection ([`crate::aircraft_cell`]'s stand-ins, four times as
+//! many) every time of a piece is within r(t_b). Then:
+//! - **Clear**: every piece's grown stand-in for BUFF + r(t_b) (detection's certified
+//!   buffer) has no span of near. Its near spans are certified (every time at which the
+//!   aircraft is within BUFF + r(t_b) lies in one; they decide the distance itself,
+//!   without paper A's detection margin), so the sample's aircraft is never within
+//!   BUFF + r(t) of the cell, and by the triangle inequality (both distances are
+//!   metrics, and a distance to a set is 1-Lipschitz) no value of the cell comes within
+//!   BUFF.
+//! - **Conflict**: in some piece with r(t_b) < BUFF, the shrunk stand-in below (target
+//!   BUFF − r(t_b)) has a certain span of near: at that time the sample's aircraft is
+//!   within BUFF − r(t_b) of the cell, so every value of the cell is within BUFF.
 //!
 //! # Conflict on the Earth: a certain approach
 //! [`certain_within`] uses the pieces of [`crate::aircraft_cell`] with a shrunk buffer.
@@ -86,7 +88,7 @@ use polyguard::bands::{BandKind, Bands};
 use polyguard::{Relation, Separation};
 
 use crate::aircraft_cell::{
-    self, piece_ends, prepare, EarthCase, EarthError, EarthErrorKind, Motion, Options, Pieces, Role,
+    self, piece_ends, prepare, EarthCase, EarthError, EarthErrorKind, Motion, Pieces, Role,
 };
 use crate::geodesy::{Geodesy, METRES_PER_NM, WGS84_A_M, WGS84_F};
 use crate::sphere::{BOUND_SAFETY, EARTH_RADIUS_NM};
@@ -154,22 +156,34 @@ pub(crate) fn certain_buffer(geo: Geodesy, target_nm: f64, lat_lo: f64) -> f64 {
 /// (hours, rounded) at which it is, or `None` when no piece certifies one (module doc,
 /// "Conflict on the Earth"). The same errors as [`aircraft_cell::detect_earth`].
 pub fn certain_within(case: &EarthCase, geo: Geodesy) -> Result<Option<f64>, EarthError> {
-    certain_within_pieces(case, geo, 1)
+    let buff = case.buff_nm;
+    certain_within_by(case, geo, 1, |_| buff)
 }
 
-/// [`certain_within`] with `factor` times the automatic number of pieces (at most
-/// [`aircraft_cell::MAX_PIECES`]): the deviation terms shrink with the square of the
+/// The number of pieces: `factor` times detection's automatic number (at most
+/// [`aircraft_cell::MAX_PIECES`]); the deviation terms shrink with the square of the
 /// pieces' length.
-fn certain_within_pieces(
+fn pieces_of(auto: usize, factor: usize) -> usize {
+    (auto * factor).min(aircraft_cell::MAX_PIECES)
+}
+
+/// [`certain_within`] with `factor` times the automatic pieces and, in the piece ending
+/// at t_b, the target `target(t_b)` nm in place of BUFF (a piece whose target is not > 0
+/// certifies nothing).
+fn certain_within_by(
     case: &EarthCase,
     geo: Geodesy,
     factor: usize,
+    target: impl Fn(f64) -> f64,
 ) -> Result<Option<f64>, EarthError> {
     let (layout, auto, _) = prepare(case, geo, Pieces::Auto)?;
-    let n = (auto * factor).min(aircraft_cell::MAX_PIECES);
-    let target_nm = case.buff_nm;
+    let n = pieces_of(auto, factor);
     for j in 0..n {
         let (ta, tb) = piece_ends(case.lookahead_h, j, n);
+        let target_nm = target(tb);
+        if target_nm.is_nan() || target_nm <= 0.0 {
+            continue;
+        }
         // the piece's exact length is within 2⁻⁵³ of tb − ta: a time below h·(1 − 2⁻⁵¹)
         // lies within it
         let h_in = (tb - ta) * (1.0 - 4.0 * f64::EPSILON);
@@ -190,6 +204,34 @@ fn certain_within_pieces(
         }
     }
     Ok(None)
+}
+
+/// Does the aircraft certainly stay farther than `buff(t_b)` nm from the cell in each
+/// piece (ending at t_b) of `factor` times the automatic pieces? The grown stand-ins of
+/// detection ([`Role::Grown`]) have no span of near: their near spans are certified
+/// (every time within the buffer lies in one), so none means never within. `case`
+/// carries the largest buffer, for the format's limits.
+fn clear_by(case: &EarthCase, geo: Geodesy, factor: usize, buff: impl Fn(f64) -> f64) -> bool {
+    let Ok((layout, auto, _)) = prepare(case, geo, Pieces::Auto) else {
+        return false;
+    };
+    let n = pieces_of(auto, factor);
+    (0..n).all(|j| {
+        let (ta, tb) = piece_ends(case.lookahead_h, j, n);
+        let role = Role::Grown { buff_nm: buff(tb) };
+        let mut piece = layout.piece(ta, tb, role, true);
+        if piece.case.is_none() {
+            piece = layout.piece(ta, tb, role, false);
+        }
+        let Some(pcase) = piece.case else {
+            return false;
+        };
+        let sep = Separation {
+            d: piece.buff_merc,
+            h: 0.0,
+        };
+        api::intervals(&pcase, Relation::Near, sep).is_empty()
+    })
 }
 
 /// The verdict on the case's own course and speed: `Clear` when detection finds no
@@ -225,16 +267,21 @@ struct EarthCells<'a> {
 }
 
 impl EarthCells<'_> {
-    /// r of the cell [lo, hi] around its sample m (module doc), `None` when it cannot
-    /// be bounded.
+    /// r of the cell [lo, hi] around its sample m over [0, T] (module doc), `None` when
+    /// it cannot be bounded.
     fn spread(&self, lo: f64, hi: f64, m: f64) -> Option<f64> {
+        self.spread_until(lo, hi, m, self.case.lookahead_h)
+    }
+
+    /// r over [0, t] (the bounds grow with t).
+    fn spread_until(&self, lo: f64, hi: f64, m: f64, t: f64) -> Option<f64> {
         let d = (m - lo).max(hi - m);
         let delta = f64::from_bits(d.to_bits() + 1);
         match self.family {
-            Family::Speed => Some(delta * self.case.lookahead_h * BOUND_SAFETY),
+            Family::Speed => Some(delta * t * BOUND_SAFETY),
             Family::Course => course_spread_nm(
                 self.case.aircraft.speed_kn,
-                self.case.lookahead_h,
+                t,
                 self.case.aircraft_pos[1].to_radians(),
                 delta.to_radians() * BOUND_SAFETY + COURSE_RAD_SLACK,
             ),
@@ -286,28 +333,21 @@ impl CellTest for EarthCells<'_> {
         let Some(r) = self.spread(lo, hi, m) else {
             return (BandKind::Unknown, ());
         };
-        let grown = (self.case.buff_nm + r) * BOUND_SAFETY;
-        let sample = self.sample(m, grown);
-        let detect = prepare(&sample, self.geo, Pieces::Auto).and_then(|(_, auto, _)| {
-            let opts = Options {
-                geodesy: self.geo,
-                pieces: Pieces::Fixed((auto * PIECE_FACTOR).min(aircraft_cell::MAX_PIECES)),
-                ..Options::default()
-            };
-            aircraft_cell::detect_earth_with(&sample, opts)
-        });
-        if let Ok(a) = detect {
-            if a.separation_windows_h.is_empty() {
-                return (BandKind::Clear, ());
-            }
+        let buff = self.case.buff_nm;
+        // the radius at the end of each piece: every time of the piece is within it
+        let r_at = |tb: f64| self.spread_until(lo, hi, m, tb).unwrap_or(r);
+        let largest = self.sample(m, (buff + r) * BOUND_SAFETY);
+        if clear_by(&largest, self.geo, PIECE_FACTOR, |tb| {
+            (buff + r_at(tb)) * BOUND_SAFETY
+        }) {
+            return (BandKind::Clear, ());
         }
-        let shrunk = (self.case.buff_nm - r * BOUND_SAFETY) / BOUND_SAFETY;
-        if shrunk > 0.0 {
-            if let Ok(Some(_)) =
-                certain_within_pieces(&self.sample(m, shrunk), self.geo, PIECE_FACTOR)
-            {
-                return (BandKind::Conflict, ());
-            }
+        // pieces whose radius is below BUFF may certify an approach, however wide r
+        // is by T
+        let flown = self.sample(m, buff);
+        let target = |tb: f64| (buff - r_at(tb) * BOUND_SAFETY) / BOUND_SAFETY;
+        if let Ok(Some(_)) = certain_within_by(&flown, self.geo, PIECE_FACTOR, target) {
+            return (BandKind::Conflict, ());
         }
         (BandKind::Unknown, ())
     }

@@ -13,22 +13,8 @@ use core::cmp::Ordering;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 
-/// The exact value of a finite f64 (`None` for NaN and ±∞).
-pub fn f64_to_exact<F: ExactField>(x: f64) -> Option<F> {
-    if !x.is_finite() {
-        return None;
-    }
-    let bits = x.to_bits();
-    let neg = (bits >> 63) == 1;
-    let biased = ((bits >> 52) & 0x7ff) as i32;
-    let frac = bits & ((1u64 << 52) - 1);
-    let (mant, exp) = if biased == 0 {
-        (frac, -1074)
-    } else {
-        (frac | (1u64 << 52), biased - 1075)
-    };
-    Some(F::from_dyadic(neg, mant, exp))
-}
+/// The exact value of a finite f64 (the interval kernel's, where it is defined).
+pub use crate::kernel::interval::f64_to_exact;
 
 /// A number the oracle reads exactly: a finite binary float is the dyadic rational it
 /// denotes, text is "p/q", an integer or a decimal.

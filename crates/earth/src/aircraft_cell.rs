@@ -420,6 +420,29 @@ pub fn rhumb_deviation(geo: Geodesy, speed_kn: f64, course: f64, u_abs_max: f64,
     h * h / 8.0 * w * w * course.cos().abs() * sec * tan.abs() * BOUND_SAFETY
 }
 
+/// The shrunk buffer (Mercator radians, before the deviation and rounding terms) that
+/// certifies an approach within `target_nm` for an aircraft at |latitude| ≥ `lat_lo`
+/// (`crate::bands`, "Conflict on the Earth").
+pub(crate) fn certain_buffer(geo: Geodesy, target_nm: f64, lat_lo: f64) -> f64 {
+    let (n_max, k) = match geo {
+        Geodesy::Sphere => (EARTH_RADIUS_NM, 1.0),
+        Geodesy::Wgs84 => {
+            let a = WGS84_A_M / METRES_PER_NM;
+            let e2 = WGS84_F * (2.0 - WGS84_F);
+            (
+                a / (1.0 - e2).sqrt() * BOUND_SAFETY,
+                1.0 / (1.0 - e2) * BOUND_SAFETY,
+            )
+        }
+    };
+    let m0 = target_nm / (n_max * lat_lo.cos()) * BOUND_SAFETY;
+    // along the segment |φ| ≥ φ_lo − k·m₀, so dφ/dψ ≤ k·cos(φ_lo − k·m₀): a second,
+    // tighter bound on the latitude lost
+    let k2 = k * (lat_lo - k * m0).max(0.0).cos() * BOUND_SAFETY;
+    let low = (lat_lo - k2 * m0).max(0.0);
+    target_nm / (n_max * low.cos()) / BOUND_SAFETY / BOUND_SAFETY
+}
+
 /// `x`, when finite (docs/earth-cases.md).
 fn finite(field: &str, x: f64) -> Result<f64, EarthError> {
     if x.is_finite() {
@@ -624,6 +647,24 @@ impl Layout {
         a.lat.abs().max(b.lat.abs()) + buff_nm / self.radii.lat
     }
 
+    /// The stand-in's buffer for `role` (module doc; `crate::bands` for `Certain`), the
+    /// aircraft between `pa` and `pb`, at |latitude| ≥ `lo`, with `slack` the sum of the
+    /// deviation and rounding terms.
+    fn buffer(&self, role: Role, pa: LonLat, pb: LonLat, lo: f64, slack: f64) -> f64 {
+        let grown = |buff_nm: f64| {
+            let phi_b = self.buffer_lat_of(pa, pb, buff_nm);
+            (buff_nm / (phi_b.cos() * self.radii.scale) + slack) * BOUND_SAFETY
+        };
+        match role {
+            Role::Alarm(Buffer::Certified) => grown(self.buff_nm),
+            Role::Grown { buff_nm } => grown(buff_nm),
+            Role::Alarm(Buffer::Unscaled) => self.buff_nm / self.radii.scale,
+            Role::Certain { target_nm } => {
+                certain_buffer(self.geo, target_nm, lo) - slack * BOUND_SAFETY
+            }
+        }
+    }
+
     /// Paper A §II.H's case for the piece `[ta, tb]` (module doc); the case is `None`
     /// when the stand-in cell is not a simple polygon (the caller falls back or fails).
     pub(crate) fn piece(&self, ta: f64, tb: f64, role: Role, mid_shape: bool) -> Piece {
@@ -678,11 +719,6 @@ impl Layout {
             c = c.max(p[0].abs()).max(p[1].abs());
             verts.push(Vect2::new(p[0], p[1]));
         }
-        let buff_nm = match role {
-            Role::Grown { buff_nm } => buff_nm,
-            _ => self.buff_nm,
-        };
-        let phi_b = self.buffer_lat_of(pa, pb, buff_nm);
         let rounding = 4.0 * position_slack(c)
             + match geo {
                 Geodesy::Sphere => 0.0,
@@ -695,17 +731,7 @@ impl Layout {
         } else {
             pa.lat.abs().min(pb.lat.abs())
         };
-        let buff_merc = match role {
-            Role::Alarm(Buffer::Certified) | Role::Grown { .. } => {
-                (buff_nm / (phi_b.cos() * self.radii.scale) + dev_air + cell_dev + rounding)
-                    * BOUND_SAFETY
-            }
-            Role::Alarm(Buffer::Unscaled) => self.buff_nm / self.radii.scale,
-            Role::Certain { target_nm } => {
-                crate::bands::certain_buffer(self.geo, target_nm, lo)
-                    - (dev_air + cell_dev + rounding) * BOUND_SAFETY
-            }
-        };
+        let buff_merc = self.buffer(role, pa, pb, lo, dev_air + cell_dev + rounding);
         if buff_merc.is_nan() || buff_merc <= 0.0 {
             return Piece {
                 case: None,

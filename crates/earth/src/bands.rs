@@ -90,7 +90,7 @@ use polyguard::{Relation, Separation};
 use crate::aircraft_cell::{
     self, piece_ends, prepare, EarthCase, EarthError, EarthErrorKind, Motion, Pieces, Role,
 };
-use crate::geodesy::{Geodesy, METRES_PER_NM, WGS84_A_M, WGS84_F};
+use crate::geodesy::Geodesy;
 use crate::sphere::{BOUND_SAFETY, EARTH_RADIUS_NM};
 
 pub use polyguard::bands::{Band, BandKind as Kind};
@@ -127,29 +127,6 @@ pub fn course_spread_nm(
     let kappa = 1.0 + l / (r * phi.cos()) * BOUND_SAFETY;
     let a = l * phi.tan() / (2.0 * r) * BOUND_SAFETY;
     Some(half_width_rad * kappa * (1.0 + a) * l * BOUND_SAFETY)
-}
-
-/// The shrunk buffer (Mercator radians, before the deviation and rounding terms) that
-/// certifies an approach within `target_nm` for an aircraft at |latitude| ≥ `lat_lo`
-/// (module doc, "Conflict on the Earth").
-pub(crate) fn certain_buffer(geo: Geodesy, target_nm: f64, lat_lo: f64) -> f64 {
-    let (n_max, k) = match geo {
-        Geodesy::Sphere => (EARTH_RADIUS_NM, 1.0),
-        Geodesy::Wgs84 => {
-            let a = WGS84_A_M / METRES_PER_NM;
-            let e2 = WGS84_F * (2.0 - WGS84_F);
-            (
-                a / (1.0 - e2).sqrt() * BOUND_SAFETY,
-                1.0 / (1.0 - e2) * BOUND_SAFETY,
-            )
-        }
-    };
-    let m0 = target_nm / (n_max * lat_lo.cos()) * BOUND_SAFETY;
-    // along the segment |φ| ≥ φ_lo − k·m₀, so dφ/dψ ≤ k·cos(φ_lo − k·m₀): a second,
-    // tighter bound on the latitude lost
-    let k2 = k * (lat_lo - k * m0).max(0.0).cos() * BOUND_SAFETY;
-    let low = (lat_lo - k2 * m0).max(0.0);
-    target_nm / (n_max * low.cos()) / BOUND_SAFETY / BOUND_SAFETY
 }
 
 /// Is the aircraft certainly within BUFF of the cell at some time of `[0, T]`? A time

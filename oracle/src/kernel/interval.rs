@@ -20,7 +20,6 @@ use num_traits::ToPrimitive;
 
 use super::Kernel;
 use crate::algebraic::RealAlg;
-use crate::convert::f64_to_exact;
 use crate::field::{Arith, ExactField, V2};
 
 // Directed rounding by one-ulp steps.
@@ -92,6 +91,25 @@ fn mul_up(a: f64, b: f64) -> f64 {
     } else {
         next_up(a * b)
     }
+}
+
+/// The exact value of a finite f64 (`None` for NaN and ±∞): the dyadic rational its
+/// bits denote. The interval kernel makes its ends exact with it; [`crate::convert`],
+/// which reads the inputs, re-exports it.
+pub fn f64_to_exact<F: ExactField>(x: f64) -> Option<F> {
+    if !x.is_finite() {
+        return None;
+    }
+    let bits = x.to_bits();
+    let neg = (bits >> 63) == 1;
+    let biased = ((bits >> 52) & 0x7ff) as i32;
+    let frac = bits & ((1u64 << 52) - 1);
+    let (mant, exp) = if biased == 0 {
+        (frac, -1074)
+    } else {
+        (frac | (1u64 << 52), biased - 1075)
+    };
+    Some(F::from_dyadic(neg, mant, exp))
 }
 
 /// A closed interval [lo, hi] of floats enclosing one real number.
@@ -1436,7 +1454,7 @@ mod broad_phase_tests {
             t in 1e-6f64..1e9,
             k in 0u32..=16,
         ) {
-            let q = |x: f64| crate::convert::f64_to_exact::<Q>(x);
+            let q = |x: f64| f64_to_exact::<Q>(x);
             let q_ = |x: f64| q(x).expect("finite");
             let pos: Vec<V2<Q>> = p.iter().map(|&(x, y, _, _)| V2::new(q_(x), q_(y))).collect();
             let vel: Vec<V2<Q>> = p.iter().map(|&(_, _, u, v)| V2::new(q_(u), q_(v))).collect();

@@ -648,12 +648,15 @@ impl Layout {
     }
 
     /// The stand-in's buffer for `role` (module doc; `crate::bands` for `Certain`), the
-    /// aircraft between `pa` and `pb`, at |latitude| ≥ `lo`, with `slack` the sum of the
-    /// deviation and rounding terms.
-    fn buffer(&self, role: Role, pa: LonLat, pb: LonLat, lo: f64, slack: f64) -> f64 {
+    /// aircraft between `pa` and `pb`, at |latitude| ≥ `lo`, with `terms` the point's
+    /// deviation, the cell's and the rounding (added in that order).
+    fn buffer(&self, role: Role, pa: LonLat, pb: LonLat, lo: f64, terms: [f64; 3]) -> f64 {
+        let [dev_air, cell_dev, rounding] = terms;
+        let slack = dev_air + cell_dev + rounding;
         let grown = |buff_nm: f64| {
             let phi_b = self.buffer_lat_of(pa, pb, buff_nm);
-            (buff_nm / (phi_b.cos() * self.radii.scale) + slack) * BOUND_SAFETY
+            (buff_nm / (phi_b.cos() * self.radii.scale) + dev_air + cell_dev + rounding)
+                * BOUND_SAFETY
         };
         match role {
             Role::Alarm(Buffer::Certified) => grown(self.buff_nm),
@@ -731,7 +734,7 @@ impl Layout {
         } else {
             pa.lat.abs().min(pb.lat.abs())
         };
-        let buff_merc = self.buffer(role, pa, pb, lo, dev_air + cell_dev + rounding);
+        let buff_merc = self.buffer(role, pa, pb, lo, [dev_air, cell_dev, rounding]);
         if buff_merc.is_nan() || buff_merc <= 0.0 {
             return Piece {
                 case: None,

@@ -169,7 +169,7 @@ fn point_segment_within(x: &V2<Q>, a: &V2<Q>, b: &V2<Q>, r2: &Q) -> bool {
 }
 
 /// dist(x, [a, b])² < r2 (`strict`) or ≤ r2, exactly: first in intervals (when
-/// `filter`), by the rationals of [`point_segment_within`] when an enclosure holds the
+/// `filter`), by the rationals of `point_segment_within` when an enclosure holds the
 /// tie.
 pub fn segment_near(x: &V2<Q>, a: &V2<Q>, b: &V2<Q>, r2: &Q, strict: bool, filter: bool) -> bool {
     if filter {

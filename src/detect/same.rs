@@ -64,7 +64,9 @@ where
 /// definitely_outside of (p_i − s) + ta·(v_i − v), step 2 the same at tb, and step 3
 /// translates segments_close by s + ta·v_i: the relative path runs from ta·(v − v_i) to
 /// tb·(v − v_i), the edge from p_i − s to p_j − s + ta·(v_j − v_i). `stat` is
-/// [`statically_shaped`]`(vels)`, which the caller has at hand.
+/// [`statically_shaped`]`(vels)`, which the caller has at hand. Inlined, so that the
+/// window's exact ends from 0 fold into its ball arithmetic at detect_same_2D's call.
+#[inline(always)]
 pub(super) fn same_window<P, V>(
     ta: Ball,
     tb: Ball,

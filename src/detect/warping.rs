@@ -274,6 +274,23 @@ pub fn edge_detect_simp_tri(
     bb0: bool,
     f: f64,
 ) -> Tri {
+    simp_window(ta, tb, ww, vv, aa, bb, bb0, f)
+}
+
+/// Paper A §II.I edge_detect_simp over [ta, tb]: [`edge_detect_simp_tri`], inlined into
+/// the detectors' edge loops so that the window's ends, exact floats from 0 there, fold
+/// into its interval arithmetic.
+#[inline(always)]
+fn simp_window(
+    ta: Ball,
+    tb: Ball,
+    ww: BallV,
+    vv: BallV,
+    aa: BallV,
+    bb: BallV,
+    bb0: bool,
+    f: f64,
+) -> Tri {
     let (one_f, err) = exact::two_sum(1.0, f);
     let q = simp_quadratics(
         ww,
@@ -430,7 +447,7 @@ fn edge_detect_window(
     let vv = ui.add(uj).half().neg();
     let aa = BallV::diff(pj, pi).half();
     let bb = BallV::diff(vj, vi).half();
-    edge_detect_simp_tri(ta, tb, ww, vv, aa, bb, vi == vj, f)
+    simp_window(ta, tb, ww, vv, aa, bb, vi == vj, f)
 }
 
 /// Paper A §II.I detect_diff_2D: s not definitely outside P, or some moving edge met by
@@ -477,7 +494,8 @@ where
 }
 
 /// detect_diff_2D over the window [ta, tb] of the original motion (see
-/// [`same_window`](super::same::same_window)).
+/// [`same_window`](super::same::same_window)); inlined for the same reason.
+#[inline(always)]
 pub(super) fn diff_window<P, V>(
     ta: Ball,
     tb: Ball,

@@ -5,10 +5,12 @@
 // "Against PolyCARP").
 //
 // The groups call the same PolyCARP functions as pc_speed.cpp (see there). The method is
-// the same too, with warm-up passes that matter here: the JIT compiles the detectors
-// during the WARMUP untimed passes over every group, before any round is timed. One
-// line per group:
-//   GROUP n CASES NS_PER_CALL ANSWERS
+// the same too (the median round by the thread's CPU clock and by the wall clock), with
+// warm-up passes that matter here: the JIT compiles the detectors during the WARMUP
+// untimed passes over every group, before any round is timed. The thread's CPU clock
+// leaves out the collector's threads, the wall clock its pauses included. One line per
+// group:
+//   GROUP n CASES CPU_NS_PER_CALL WALL_NS_PER_CALL ANSWERS
 // Options: --rounds N (30), --repeat R (10), --warmup W (5).
 
 import gov.nasa.larcfm.ACCoRD.Polycarp3D;
@@ -22,9 +24,12 @@ import gov.nasa.larcfm.Util.Velocity;
 import java.io.BufferedReader;
 import java.io.FileReader;
 import java.io.IOException;
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Locale;
 
 public class PcSpeed {
   static final int SAME = 0, DIFF = 1, SLAB = 2;
@@ -68,6 +73,12 @@ public class PcSpeed {
     }
     sink += hits;
     return hits;
+  }
+
+  static double median(double[] x) {
+    double[] y = x.clone();
+    Arrays.sort(y);
+    return y[y.length / 2];
   }
 
   static void fail(String msg) {
@@ -162,6 +173,9 @@ public class PcSpeed {
       }
     }
     if (file == null) fail(usage);
+    ThreadMXBean threads = ManagementFactory.getThreadMXBean();
+    if (!threads.isCurrentThreadCpuTimeSupported()) fail("the thread CPU clock cannot be read");
+    threads.setThreadCpuTimeEnabled(true);
     List<Group> groups = readGroups(file);
     for (int w = 0; w < warmup; w++) {
       for (Group g : groups) pass(g, reps);
@@ -171,14 +185,18 @@ public class PcSpeed {
       StringBuilder answers = new StringBuilder();
       for (Case c : g.cases) answers.append(detect(g.kind, c) ? '1' : '0');
       double calls = (double) reps * g.cases.size();
-      double[] times = new double[rounds];
+      double[] cpu = new double[rounds], wall = new double[rounds];
       for (int r = 0; r < rounds; r++) {
+        long c0 = threads.getCurrentThreadCpuTime();
         long t0 = System.nanoTime();
         pass(g, reps);
-        times[r] = (System.nanoTime() - t0) / calls;
+        long t1 = System.nanoTime();
+        long c1 = threads.getCurrentThreadCpuTime();
+        cpu[r] = (c1 - c0) / calls;
+        wall[r] = (t1 - t0) / calls;
       }
-      Arrays.sort(times);
-      out.append(String.format("%s %d %d %.1f %s%n", g.name, g.n, g.cases.size(), times[rounds / 2], answers));
+      out.append(String.format(Locale.ROOT, "%s %d %d %.1f %.1f %s%n", g.name, g.n,
+          g.cases.size(), median(cpu), median(wall), answers));
     }
     System.out.print(out);
   }

@@ -398,7 +398,7 @@ pub fn definitely_outside_rel<R: RelPoly + ?Sized>(p: &R, buff: f64) -> Tri {
     // skip below is taken several vertices at a time ([`outside_masked`]): the same
     // comparisons, hence the same edges tested in full, in the same order.
     if let (Some(m), Some(f)) = (fixed, p.frame()) {
-        if n > 0 && f.verts.len() == n {
+        if n >= lanes::MIN_VERTICES && f.verts.len() == n {
             return lanes::with_kernel(Masked { p, f, m, buff });
         }
     }
@@ -477,8 +477,10 @@ impl Pass {
     /// Paper A §II.E steps 2–4 on edge i→j (ends a, b relative to the point): near_edge
     /// on P and, when an end is perturbed, on P*_BUFF, and the edge's crossing of the
     /// ray (§II.D). `false` when the point is certainly within BUFF of the edge (then
-    /// definitely_outside is certainly false).
-    #[inline(always)]
+    /// definitely_outside is certainly false). Out of line: it runs only on the edges
+    /// the skip leaves, and one copy serves the scalar and the masked loops (inlined in
+    /// both, its callees were left out of line instead).
+    #[inline(never)]
     fn edge<R: RelPoly + ?Sized>(
         &mut self,
         p: &R,

@@ -62,6 +62,12 @@ pub trait Kernel: Copy {
     ) -> (u64, u64);
 }
 
+/// The fewest vertices for which the masks pay: below, setting them up (the kernel's
+/// call, the chunk's bookkeeping) costs more than the per-edge tests they replace, and
+/// the loops test one edge at a time (measured: docs/performance.md, "SIMD across
+/// edges").
+pub const MIN_VERTICES: usize = 16;
+
 /// Vertices a margin mask holds (two bits each).
 pub const MARGIN_CHUNK: usize = 32;
 /// Vertices a side mask holds (one bit each).

@@ -98,7 +98,7 @@ where
     // From a window starting at 0 with every velocity v_0 and the vertices stored
     // contiguously, the sides are taken several vertices at a time ([`same_masked`]):
     // the same tests, hence the same edges tested in full, in the same order.
-    if stat && sides.from_zero {
+    if stat && sides.from_zero && n >= lanes::MIN_VERTICES {
         if let Some(verts) = p.as_slice().filter(|q| q.len() == n) {
             let masked = SameMasked {
                 ta,

@@ -578,7 +578,7 @@ fn even_bits(len: usize) -> u64 {
 /// [`lanes::MARGIN_CHUNK`] edges; the end of a chunk's last edge (vertex 0 after the
 /// last chunk) is computed afresh, not carried.
 #[inline(always)]
-fn outside_masked<R: RelPoly + ?Sized, K: Kernel>(
+pub(crate) fn outside_masked<R: RelPoly + ?Sized, K: Kernel>(
     p: &R,
     f: &Frame<'_>,
     m: f64,

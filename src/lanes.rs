@@ -293,3 +293,6 @@ mod avx {
         (pos, neg)
     }
 }
+
+#[cfg(test)]
+mod tests;

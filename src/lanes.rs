@@ -108,10 +108,10 @@ impl Kernel for Portable {
         hi: usize,
     ) -> (u64, u64) {
         let (mut pos, mut neg) = (0u64, 0u64);
-        for k in lo..hi {
-            let side = line.side(verts[k] - s);
-            pos |= ((side > 0) as u64) << (k - lo);
-            neg |= ((side < 0) as u64) << (k - lo);
+        for (k, &p) in verts[lo..hi].iter().enumerate() {
+            let side = line.side(p - s);
+            pos |= ((side > 0) as u64) << k;
+            neg |= ((side < 0) as u64) << k;
         }
         (pos, neg)
     }
@@ -285,8 +285,8 @@ mod avx {
             // −1 only where the side is not +1, as `PathLine::side` tests +1 first.
             neg |= (n & !p) << (4 * k);
         }
-        for k in 4 * quads..verts.len() {
-            let side = line.side(verts[k] - s);
+        for (k, &p) in verts.iter().enumerate().skip(4 * quads) {
+            let side = line.side(p - s);
             pos |= ((side > 0) as u64) << k;
             neg |= ((side < 0) as u64) << k;
         }

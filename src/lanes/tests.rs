@@ -149,10 +149,10 @@ fn kernel_bits(
     let line = PathLine::new(d, b);
     let hi = (lo + SIDE_CHUNK).min(n);
     let sides = Portable.side_bits(&line, &verts, s, lo, hi);
-    for k in lo..hi {
-        let side = line.side(verts[k] - s);
-        prop_assert_eq!((sides.0 >> (k - lo)) & 1 == 1, side > 0);
-        prop_assert_eq!((sides.1 >> (k - lo)) & 1 == 1, side < 0);
+    for (k, &p) in verts[lo..hi].iter().enumerate() {
+        let side = line.side(p - s);
+        prop_assert_eq!((sides.0 >> k) & 1 == 1, side > 0);
+        prop_assert_eq!((sides.1 >> k) & 1 == 1, side < 0);
     }
     #[cfg(target_arch = "x86_64")]
     if let Some(avx) = Avx::new() {

@@ -174,6 +174,12 @@ impl Kernel for Avx {
     }
 }
 
+/// A computation generic over the kernel (a closure cannot be generic).
+pub trait KernelFn<T> {
+    /// Runs with kernel `k`.
+    fn call<K: Kernel>(self, k: K) -> T;
+}
+
 /// Runs `f` with the fastest kernel this CPU has (see the module's documentation).
 #[inline(always)]
 pub fn with_kernel<T>(f: impl KernelFn<T>) -> T {
@@ -182,12 +188,6 @@ pub fn with_kernel<T>(f: impl KernelFn<T>) -> T {
         return f.call(k);
     }
     f.call(Portable)
-}
-
-/// A computation generic over the kernel (a closure cannot be generic).
-pub trait KernelFn<T> {
-    /// Runs with kernel `k`.
-    fn call<K: Kernel>(self, k: K) -> T;
 }
 
 #[cfg(target_arch = "x86_64")]
@@ -295,4 +295,4 @@ mod avx {
 }
 
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;

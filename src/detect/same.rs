@@ -358,6 +358,42 @@ mod tests {
     use crate::detect::detect_diff_2d;
     use crate::detect::tests::v;
 
+    mod masks {
+        //! detect_same_2D (§II.H) answers on masks ([`crate::lanes`]) as one edge at a
+        //! time.
+        use super::*;
+        use crate::lanes::tests::{case, check_cases, Case};
+        use proptest::prelude::*;
+
+        /// Vertices not stored as a slice: detect_same_2D runs its scalar loops.
+        struct NotSlice<'a>(&'a [Vect2]);
+
+        impl VertexSeq for NotSlice<'_> {
+            fn count(&self) -> usize {
+                self.0.len()
+            }
+            fn vertex(&self, i: usize) -> Vect2 {
+                self.0[i]
+            }
+        }
+
+        /// detect_same_2D (§II.H) on slices (masks from 16 vertices on) answers as on
+        /// vertices that are not a slice (one edge at a time).
+        #[test]
+        fn detect_same_on_masks_is_the_scalar_answer() {
+            check_cases(case(), detect_same);
+        }
+
+        fn detect_same((b, verts, s, v, v0, t): Case) -> Result<(), TestCaseError> {
+            let vels = vec![v0; verts.len()];
+            prop_assert_eq!(
+                detect_same_2d_tri(t, s, v, &verts[..], &vels[..], b),
+                detect_same_2d_tri(t, s, v, &NotSlice(&verts), &vels[..], b)
+            );
+            Ok(())
+        }
+    }
+
     #[test]
     fn detect_diff_and_same_agree_on_a_translating_square() {
         // A unit-speed square moving right; a point moving up through its path.

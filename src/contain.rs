@@ -6,6 +6,7 @@
 //! and every radius is on the scale of the encounter rather than of the coordinates.
 
 use crate::ball::{mx, BallV, Tri};
+use crate::lanes::{self, Frame, Kernel, KernelFn};
 use crate::polygon::VertexSeq;
 use crate::predicates::{self as pr, Terms};
 use crate::vect2::Vect2;
@@ -74,6 +75,13 @@ pub trait RelPoly {
     /// [`RelPoly::at`] at or above M (at or below −M) is certainly above BUFF (below
     /// −BUFF) exactly, strictly; `None` when the error is not bounded that way.
     fn skip_margin(&self, buff: f64) -> Option<f64>;
+    /// The vertices and the frame's translation, when [`RelPoly::at`] is fl(p_i − s)
+    /// (+ a shift common to all vertices) of contiguously stored vertices p_i: the skip
+    /// filter then tests several vertices at once ([`crate::lanes`]). `None` otherwise.
+    #[inline(always)]
+    fn frame(&self) -> Option<Frame<'_>> {
+        None
+    }
     /// The vertex after i, cyclically.
     #[inline(always)]
     fn next(&self, i: usize) -> usize {
@@ -136,6 +144,19 @@ impl<P: VertexSeq + ?Sized, V: VertexSeq + ?Sized> RelPoly for AtTime<'_, P, V> 
             self.p.vertex(i) - self.s
         } else {
             self.rel(i).v
+        }
+    }
+    /// At t = 0, P seen from s: fl(p_i − s), as [`RelPoly::at`] computes it.
+    #[inline(always)]
+    fn frame(&self) -> Option<Frame<'_>> {
+        if self.t.z == 0.0 && self.t.r == 0.0 {
+            Some(Frame {
+                verts: self.p.as_slice()?,
+                s: self.s,
+                shift: None,
+            })
+        } else {
+            None
         }
     }
     #[inline(always)]
@@ -203,6 +224,15 @@ impl<P: VertexSeq + ?Sized> RelPoly for Shifted<'_, P> {
     #[inline(always)]
     fn at(&self, i: usize) -> Vect2 {
         (self.p.vertex(i) - self.s) + self.shift.v
+    }
+    /// fl(fl(p_i − s) + sh̃), as [`RelPoly::at`] computes it.
+    #[inline(always)]
+    fn frame(&self) -> Option<Frame<'_>> {
+        Some(Frame {
+            verts: self.p.as_slice()?,
+            s: self.s,
+            shift: Some(self.shift.v),
+        })
     }
     /// x̃ = fl(fl(p − s) + sh̃): |x̃ − x| ≤ u|x̃|(1 + 2u) (the sum) + 2u|fl(p − s)| (the
     /// difference, |fl(p − s)| ≤ (|x̃| + |sh̃|)(1 + 2u)) + r_sh ≤ 5u|x̃| + C with
@@ -363,15 +393,21 @@ pub fn definitely_outside_rel<R: RelPoly + ?Sized>(p: &R, buff: f64) -> Tri {
         return Tri::Unsure;
     }
     let n = p.count();
-    let mut acc = Tri::Yes;
-    let mut odd = false;
-    let mut parity_known = true;
+    let fixed = p.skip_margin(buff);
+    // With a margin common to all vertices and the vertices stored contiguously, the
+    // skip below is taken several vertices at a time ([`outside_masked`]): the same
+    // comparisons, hence the same edges tested in full, in the same order.
+    if let (Some(m), Some(f)) = (fixed, p.frame()) {
+        if n >= lanes::MIN_VERTICES && f.verts.len() == n {
+            return lanes::with_kernel(Masked { p, f, m, buff });
+        }
+    }
     // Each vertex is carried to the next edge; vertex 0 is computed afresh for the last
     // edge rather than kept alive across the loop: at opt-level 3 LLVM 22 (rustc 1.95,
     // 1.97-nightly) once reloaded a vertex 0 kept in a vector register across a
     // vectorised loop from a 64-bit spill slot, its y read as 0 on the last edge
     // (tests/regressions/*.jsonl).
-    let fixed = p.skip_margin(buff);
+    //
     // Every vertex certainly above BUFF (the point below the polygon's bounding box):
     // no edge of P or of P*_BUFF (perturbing moves vertices sideways only) comes within
     // BUFF, and every edge whose ends straddle the ray's line crosses it above the
@@ -383,6 +419,7 @@ pub fn definitely_outside_rel<R: RelPoly + ?Sized>(p: &R, buff: f64) -> Tri {
             return Tri::Yes;
         }
     }
+    let mut pass = Pass::new();
     let mut bv = if n > 0 { p.at(0) } else { Vect2::ZERO };
     for i in 0..n {
         let j = p.next(i);
@@ -408,18 +445,63 @@ pub fn definitely_outside_rel<R: RelPoly + ?Sized>(p: &R, buff: f64) -> Tri {
         if fixed.is_none() && skip(crate::ball::up(buff + mx(a.r, b.r))) {
             continue;
         }
+        if !pass.edge(p, i, j, a, b, buff) {
+            return Tri::No;
+        }
+    }
+    pass.end()
+}
+
+/// Paper A §II.E definitely_outside's pass over the edges that the skip leaves (steps
+/// 2–4 on one edge at a time): what is known so far.
+struct Pass {
+    /// `Unsure` once a near_edge or a perturbation was undecided, else `Yes`.
+    acc: Tri,
+    /// The parity of the crossings counted so far.
+    odd: bool,
+    /// No crossing or perturbation was undecided.
+    parity_known: bool,
+}
+
+impl Pass {
+    /// Before the first edge.
+    #[inline(always)]
+    fn new() -> Pass {
+        Pass {
+            acc: Tri::Yes,
+            odd: false,
+            parity_known: true,
+        }
+    }
+
+    /// Paper A §II.E steps 2–4 on edge i→j (ends a, b relative to the point): near_edge
+    /// on P and, when an end is perturbed, on P*_BUFF, and the edge's crossing of the
+    /// ray (§II.D). `false` when the point is certainly within BUFF of the edge (then
+    /// definitely_outside is certainly false). Out of line: it runs only on the edges
+    /// the skip leaves, and one copy serves the scalar and the masked loops (inlined in
+    /// both, its callees were left out of line instead).
+    #[inline(never)]
+    fn edge<R: RelPoly + ?Sized>(
+        &mut self,
+        p: &R,
+        i: usize,
+        j: usize,
+        a: BallV,
+        b: BallV,
+        buff: f64,
+    ) -> bool {
         let (ta, tb) = (|| p.terms(i), || p.terms(j));
         match near_edge_rel(a, b, buff, || Some((ta()?, tb()?))) {
-            Tri::Yes => return Tri::No,
-            Tri::Unsure => acc = Tri::Unsure,
+            Tri::Yes => return false,
+            Tri::Unsure => self.acc = Tri::Unsure,
             Tri::No => {}
         }
         let pa = pr::perturbs(a, ta, buff);
         let pb = pr::perturbs(b, tb, buff);
         if pa == Tri::Unsure || pb == Tri::Unsure {
-            acc = Tri::Unsure;
-            parity_known = false;
-            continue;
+            self.acc = Tri::Unsure;
+            self.parity_known = false;
+            return true;
         }
         let (pa, pb) = (pa == Tri::Yes, pb == Tri::Yes);
         let a_star = if pa { shift_left(a, buff) } else { a };
@@ -434,23 +516,115 @@ pub fn definitely_outside_rel<R: RelPoly + ?Sized>(p: &R, buff: f64) -> Tri {
         if pa || pb {
             let terms = || Some((star(ta(), pa)?, star(tb(), pb)?));
             match near_edge_rel(a_star, b_star, buff, terms) {
-                Tri::Yes => return Tri::No,
-                Tri::Unsure => acc = Tri::Unsure,
+                Tri::Yes => return false,
+                Tri::Unsure => self.acc = Tri::Unsure,
                 Tri::No => {}
             }
         }
         match pr::crosses_ray(a_star, b_star, pa, pb, ta, tb, buff) {
-            Tri::Yes => odd = !odd,
+            Tri::Yes => self.odd = !self.odd,
             Tri::No => {}
-            Tri::Unsure => parity_known = false,
+            Tri::Unsure => self.parity_known = false,
         }
+        true
     }
-    let even = if parity_known {
-        Tri::from_bool(!odd)
+
+    /// Paper A §II.E's answer after the last edge: `acc` and an even count.
+    #[inline(always)]
+    fn end(self) -> Tri {
+        let even = if self.parity_known {
+            Tri::from_bool(!self.odd)
+        } else {
+            Tri::Unsure
+        };
+        self.acc.and(even)
+    }
+}
+
+/// [`definitely_outside_rel`] with a common margin m and a [`Frame`], for
+/// [`lanes::with_kernel`].
+struct Masked<'a, R: ?Sized> {
+    p: &'a R,
+    f: Frame<'a>,
+    m: f64,
+    buff: f64,
+}
+
+impl<R: RelPoly + ?Sized> KernelFn<Tri> for Masked<'_, R> {
+    #[inline(always)]
+    fn call<K: Kernel>(self, k: K) -> Tri {
+        outside_masked(self.p, &self.f, self.m, self.buff, k)
+    }
+}
+
+/// Bits 0, 2, 4, …: the x bits of a margin mask (one per vertex, or per edge).
+const EVEN: u64 = 0x5555_5555_5555_5555;
+
+/// The even bits of the first `len` vertices (1 ≤ len ≤ [`lanes::MARGIN_CHUNK`]).
+#[inline(always)]
+fn even_bits(len: usize) -> u64 {
+    if len >= lanes::MARGIN_CHUNK {
+        EVEN
     } else {
-        Tri::Unsure
-    };
-    acc.and(even)
+        EVEN & ((1u64 << (2 * len)) - 1)
+    }
+}
+
+/// Paper A §II.E definitely_outside_rel's skip and shortcut on margin masks (see
+/// [`crate::lanes`]): the "every vertex certainly above" shortcut is the AND of the
+/// y ≥ m bits; edge k is skipped when the x ≥ m, the x ≤ −m or the y ≤ −m bits of both
+/// its ends are set, exactly the scalar loop's test; the edges left go through
+/// [`Pass::edge`] in increasing order, as in the scalar loop. Chunks of
+/// [`lanes::MARGIN_CHUNK`] edges; the end of a chunk's last edge (vertex 0 after the
+/// last chunk) is computed afresh, not carried.
+#[inline(always)]
+pub(crate) fn outside_masked<R: RelPoly + ?Sized, K: Kernel>(
+    p: &R,
+    f: &Frame<'_>,
+    m: f64,
+    buff: f64,
+    k: K,
+) -> Tri {
+    let n = f.verts.len();
+    const C: usize = lanes::MARGIN_CHUNK;
+    let y_above = |bits: (u64, u64), len: usize| (bits.0 >> 1) & even_bits(len) == even_bits(len);
+    let first = k.margin_bits(f, 0, n.min(C), m);
+    if y_above(first, n.min(C))
+        && (C..n).step_by(C).all(|lo| {
+            let hi = (lo + C).min(n);
+            y_above(k.margin_bits(f, lo, hi, m), hi - lo)
+        })
+    {
+        return Tri::Yes;
+    }
+    let mut pass = Pass::new();
+    let mut lo = 0;
+    while lo < n {
+        let hi = (lo + C).min(n);
+        let len = hi - lo;
+        let (ge, le) = if lo == 0 {
+            first
+        } else {
+            k.margin_bits(f, lo, hi, m)
+        };
+        let (ge_next, le_next) = lanes::vertex_margin_bits(f.at(if hi == n { 0 } else { hi }), m);
+        // The bits of each edge's far end at its near end's place.
+        let ge_far = (ge >> 2) | (ge_next << (2 * (len - 1)));
+        let le_far = (le >> 2) | (le_next << (2 * (len - 1)));
+        let le_both = le & le_far;
+        let skip = (ge & ge_far) | le_both | (le_both >> 1);
+        let mut live = !skip & even_bits(len);
+        while live != 0 {
+            let i = lo + live.trailing_zeros() as usize / 2;
+            live &= live - 1;
+            let j = p.next(i);
+            if !pass.edge(p, i, j, p.rel(i), p.rel(j), buff) {
+                return Tri::No;
+            }
+        }
+        lo = hi;
+    }
+    pass.end()
 }
 
 /// q − (2·BUFF, 0), the perturbed vertex of §II.B, as a ball.

@@ -109,6 +109,7 @@ pub mod entry;
 pub mod error;
 pub mod fence;
 pub mod intervals;
+mod lanes;
 mod motion;
 #[cfg(feature = "std")]
 pub mod offset;

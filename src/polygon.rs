@@ -22,6 +22,13 @@ pub trait VertexSeq {
             i + 1
         }
     }
+    /// The vertices as one contiguous slice, when they are stored that way (vertex i is
+    /// element i): the per-edge filters then test several vertices at once
+    /// ([`crate::lanes`]). `None` for computed views.
+    #[inline(always)]
+    fn as_slice(&self) -> Option<&[Vect2]> {
+        None
+    }
 }
 
 impl VertexSeq for [Vect2] {
@@ -32,6 +39,10 @@ impl VertexSeq for [Vect2] {
     #[inline(always)]
     fn vertex(&self, i: usize) -> Vect2 {
         self[i]
+    }
+    #[inline(always)]
+    fn as_slice(&self) -> Option<&[Vect2]> {
+        Some(self)
     }
 }
 
@@ -44,6 +55,10 @@ impl<const N: usize> VertexSeq for [Vect2; N] {
     fn vertex(&self, i: usize) -> Vect2 {
         self[i]
     }
+    #[inline(always)]
+    fn as_slice(&self) -> Option<&[Vect2]> {
+        Some(&self[..])
+    }
 }
 
 impl<T: VertexSeq + ?Sized> VertexSeq for &T {
@@ -54,6 +69,10 @@ impl<T: VertexSeq + ?Sized> VertexSeq for &T {
     #[inline(always)]
     fn vertex(&self, i: usize) -> Vect2 {
         (**self).vertex(i)
+    }
+    #[inline(always)]
+    fn as_slice(&self) -> Option<&[Vect2]> {
+        (**self).as_slice()
     }
 }
 

@@ -483,6 +483,17 @@ pub struct PathLine {
 }
 
 impl PathLine {
+    /// The constant K1 of [`PathLine::side`]'s bound: 6u raised by (1 + 16u).
+    pub const K1: f64 = 6.0 * crate::ball::U * (1.0 + 16.0 * crate::ball::U);
+
+    /// The line's direction d̃, its radius term r_d·(1 + 4u) and the constant part of
+    /// the bound, for [`crate::lanes`], which evaluates [`PathLine::side`] on several
+    /// vertices at once.
+    #[inline(always)]
+    pub fn parts(&self) -> (Vect2, f64, f64) {
+        (self.d, self.rd, self.need)
+    }
+
     /// The line through the origin along the ball d; sides beyond `dist`.
     #[inline]
     pub fn new(d: BallV, dist: f64) -> PathLine {
@@ -502,11 +513,10 @@ impl PathLine {
     /// non-negative) and keeps the dependency chain short.
     #[inline(always)]
     pub fn side(&self, q: Vect2) -> i8 {
-        const K1: f64 = 6.0 * crate::ball::U * (1.0 + 16.0 * crate::ball::U);
         let l = self.d.x * q.y;
         let r = self.d.y * q.x;
         let c = l - r;
-        let bound = K1 * (l.abs() + r.abs()) + self.rd * (q.x.abs() + q.y.abs()) + self.need;
+        let bound = Self::K1 * (l.abs() + r.abs()) + self.rd * (q.x.abs() + q.y.abs()) + self.need;
         if c > bound {
             1
         } else if -c > bound {

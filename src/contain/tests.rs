@@ -546,3 +546,124 @@ fn an_undecided_perturbation_is_not_outside() {
     assert_eq!(pr::perturbs(tri.rel(0), || None, 1.0), Tri::Unsure);
     assert_ne!(definitely_outside_rel(&tri, 1.0), Tri::Yes);
 }
+
+mod masks {
+    //! definitely_outside (§II.E) answers on masks ([`crate::lanes`]) as one edge at a
+    //! time, with every kernel, at t = 0 and in the shifted frame.
+    use super::*;
+    use crate::ball::Ball;
+    use crate::lanes::tests::{case, check_cases, Case};
+    #[cfg(target_arch = "x86_64")]
+    use crate::lanes::Avx;
+    use crate::lanes::{Kernel, Portable};
+    use proptest::prelude::*;
+
+    /// A frame without [`RelPoly::frame`]: definitely_outside_rel runs its scalar loop.
+    struct NoFrame<'a, R>(&'a R);
+
+    impl<R: RelPoly> RelPoly for NoFrame<'_, R> {
+        fn count(&self) -> usize {
+            self.0.count()
+        }
+        fn rel(&self, i: usize) -> BallV {
+            self.0.rel(i)
+        }
+        fn terms(&self, i: usize) -> Option<Terms> {
+            self.0.terms(i)
+        }
+        fn at(&self, i: usize) -> Vect2 {
+            self.0.at(i)
+        }
+        fn skip_margin(&self, buff: f64) -> Option<f64> {
+            self.0.skip_margin(buff)
+        }
+    }
+
+    /// definitely_outside_rel on masks with kernel `k`, as the masked path calls it.
+    fn masked<R: RelPoly, K: Kernel>(p: &R, buff: f64, k: K) -> Option<Tri> {
+        let (m, f) = (p.skip_margin(buff)?, p.frame()?);
+        Some(outside_masked(p, &f, m, buff, k))
+    }
+
+    /// definitely_outside (§II.E) on masks, with each kernel, answers as the scalar loop,
+    /// at t = 0 and in the shifted frame at T.
+    #[test]
+    fn definitely_outside_on_masks_is_the_scalar_answer() {
+        check_cases(case(), outside_same);
+    }
+
+    fn outside_same((b, verts, s, v, v0, t): Case) -> Result<(), TestCaseError> {
+        let at0 = AtTime {
+            p: &verts[..],
+            vels: &verts[..],
+            s,
+            v,
+            t: Ball::exact(0.0),
+        };
+        let shifted = Shifted::new(&verts[..], s, v, v0, Ball::exact(t));
+        for (scalar, dispatched, portable, k) in [
+            (
+                definitely_outside_rel(&NoFrame(&at0), b),
+                definitely_outside_rel(&at0, b),
+                masked(&at0, b, Portable),
+                0,
+            ),
+            (
+                definitely_outside_rel(&NoFrame(&shifted), b),
+                definitely_outside_rel(&shifted, b),
+                masked(&shifted, b, Portable),
+                1,
+            ),
+        ] {
+            prop_assert_eq!(dispatched, scalar, "frame {}", k);
+            prop_assert_eq!(portable, Some(scalar), "frame {}", k);
+        }
+        #[cfg(target_arch = "x86_64")]
+        if let Some(avx) = Avx::new() {
+            prop_assert_eq!(
+                masked(&at0, b, avx),
+                Some(definitely_outside_rel(&NoFrame(&at0), b))
+            );
+            prop_assert_eq!(
+                masked(&shifted, b, avx),
+                Some(definitely_outside_rel(&NoFrame(&shifted), b))
+            );
+        }
+        Ok(())
+    }
+}
+
+/// The frames' [`RelPoly::frame`] computes what their [`RelPoly::at`] does, bit for bit.
+#[test]
+fn a_frame_is_its_at() {
+    let verts = [v(0.1, 0.7), v(3.3, -1e-310), v(-2.9, 1e300)];
+    let (s, vel, v0) = (v(0.3, 0.2), v(0.7, -0.1), v(-0.3, 1.1));
+    let t0 = crate::ball::Ball::exact(0.0);
+    let at0 = AtTime {
+        p: &verts[..],
+        vels: &verts[..],
+        s,
+        v: vel,
+        t: t0,
+    };
+    let shifted = Shifted::new(&verts[..], s, vel, v0, crate::ball::Ball::exact(0.7));
+    let bits = |q: Vect2| (q.x.to_bits(), q.y.to_bits());
+    for k in 0..3 {
+        assert_eq!(at0.frame().map(|f| bits(f.at(k))), Some(bits(at0.at(k))));
+        assert_eq!(
+            shifted.frame().map(|f| bits(f.at(k))),
+            Some(bits(shifted.at(k)))
+        );
+    }
+    // At a time other than 0 each vertex moves by its own velocity: no frame.
+    let t1 = crate::ball::Ball::exact(1.0);
+    assert!(AtTime {
+        p: &verts[..],
+        vels: &verts[..],
+        s,
+        v: vel,
+        t: t1
+    }
+    .frame()
+    .is_none());
+}

@@ -4,6 +4,7 @@
 use super::statically_shaped;
 use crate::ball::{Ball, BallV, Tri};
 use crate::contain::{definitely_outside_rel, AtTime, Shifted};
+use crate::lanes::{self, Kernel, KernelFn};
 use crate::polygon::VertexSeq;
 use crate::predicates::{self as pr, PathLine, Terms};
 use crate::proximity::segments_close_rel;
@@ -94,6 +95,26 @@ where
     // once and carried to the next edge: an edge with both ends certainly beyond BUFF on
     // one side is not close, the same certain test segments_close starts with.
     let (path0, sides) = PathSides::new(ta, tb, v, v0, buff);
+    // From a window starting at 0 with every velocity v_0 and the vertices stored
+    // contiguously, the sides are taken several vertices at a time ([`same_masked`]):
+    // the same tests, hence the same edges tested in full, in the same order.
+    if stat && sides.from_zero && n >= lanes::MIN_VERTICES {
+        if let Some(verts) = p.as_slice().filter(|q| q.len() == n) {
+            let masked = SameMasked {
+                ta,
+                tb,
+                s,
+                v,
+                verts,
+                vels,
+                buff,
+                path0,
+                line: sides.line,
+                acc,
+            };
+            return lanes::with_kernel(masked);
+        }
+    }
     let side = |k: usize| sides.of(p.vertex(k), s);
     let mut side_i = side(0);
     for i in 0..n {
@@ -113,6 +134,73 @@ where
             Tri::Unsure => acc = Tri::Unsure,
             Tri::No => {}
         }
+    }
+    acc
+}
+
+/// [`same_window`]'s step 3 for a statically shaped polygon from a window starting at 0,
+/// on side masks ([`crate::lanes`]), for [`lanes::with_kernel`].
+struct SameMasked<'a, V: ?Sized> {
+    ta: Ball,
+    tb: Ball,
+    s: Vect2,
+    v: Vect2,
+    verts: &'a [Vect2],
+    vels: &'a V,
+    buff: f64,
+    path0: (BallV, BallV),
+    line: PathLine,
+    /// Steps 1 and 2's answer (`No` or `Unsure`).
+    acc: Tri,
+}
+
+impl<V: VertexSeq + ?Sized> KernelFn<Tri> for SameMasked<'_, V> {
+    #[inline(always)]
+    fn call<K: Kernel>(self, k: K) -> Tri {
+        same_masked(self, k)
+    }
+}
+
+/// Paper A §II.H step 3 on side masks: edge i is skipped when both its ends are
+/// certainly beyond BUFF on the same side of the relative path's line ([`PathLine::side`]
+/// +1 at both, or −1 at both), as [`same_window`]'s loop does; the edges left go through
+/// [`edge_close`] in increasing order. Chunks of [`lanes::SIDE_CHUNK`] edges; the end of
+/// a chunk's last edge (vertex 0 after the last chunk) is computed afresh.
+#[inline(always)]
+fn same_masked<V: VertexSeq + ?Sized, K: Kernel>(w: SameMasked<'_, V>, k: K) -> Tri {
+    let n = w.verts.len();
+    const C: usize = lanes::SIDE_CHUNK;
+    let mut acc = w.acc;
+    let mut lo = 0;
+    while lo < n {
+        let hi = (lo + C).min(n);
+        let len = hi - lo;
+        let (pos, neg) = k.side_bits(&w.line, w.verts, w.s, lo, hi);
+        let next = w.line.side(w.verts[if hi == n { 0 } else { hi }] - w.s);
+        // Each edge's far end at its near end's bit.
+        let pos_far = (pos >> 1) | (((next > 0) as u64) << (len - 1));
+        let neg_far = (neg >> 1) | (((next < 0) as u64) << (len - 1));
+        let skip = (pos & pos_far) | (neg & neg_far);
+        let all = if len == 64 {
+            u64::MAX
+        } else {
+            (1u64 << len) - 1
+        };
+        let mut live = !skip & all;
+        while live != 0 {
+            let i = lo + live.trailing_zeros() as usize;
+            live &= live - 1;
+            let j = if i + 1 == n { 0 } else { i + 1 };
+            let (vi, vj) = (w.vels.vertex(i), w.vels.vertex(j));
+            let (pi, pj) = (w.verts[i], w.verts[j]);
+            let (ta, tb, path) = (w.ta, w.tb, Some(w.path0));
+            match edge_close(ta, tb, w.s, w.v, pi, pj, vi, vj, w.buff, true, path) {
+                Tri::Yes => return Tri::Yes,
+                Tri::Unsure => acc = Tri::Unsure,
+                Tri::No => {}
+            }
+        }
+        lo = hi;
     }
     acc
 }
@@ -269,6 +357,42 @@ mod tests {
     use super::*;
     use crate::detect::detect_diff_2d;
     use crate::detect::tests::v;
+
+    mod masks {
+        //! detect_same_2D (§II.H) answers on masks ([`crate::lanes`]) as one edge at a
+        //! time.
+        use super::*;
+        use crate::lanes::tests::{case, check_cases, Case};
+        use proptest::prelude::*;
+
+        /// Vertices not stored as a slice: detect_same_2D runs its scalar loops.
+        struct NotSlice<'a>(&'a [Vect2]);
+
+        impl VertexSeq for NotSlice<'_> {
+            fn count(&self) -> usize {
+                self.0.len()
+            }
+            fn vertex(&self, i: usize) -> Vect2 {
+                self.0[i]
+            }
+        }
+
+        /// detect_same_2D (§II.H) on slices (masks from 16 vertices on) answers as on
+        /// vertices that are not a slice (one edge at a time).
+        #[test]
+        fn detect_same_on_masks_is_the_scalar_answer() {
+            check_cases(case(), detect_same);
+        }
+
+        fn detect_same((b, verts, s, v, v0, t): Case) -> Result<(), TestCaseError> {
+            let vels = vec![v0; verts.len()];
+            prop_assert_eq!(
+                detect_same_2d_tri(t, s, v, &verts[..], &vels[..], b),
+                detect_same_2d_tri(t, s, v, &NotSlice(&verts), &vels[..], b)
+            );
+            Ok(())
+        }
+    }
 
     #[test]
     fn detect_diff_and_same_agree_on_a_translating_square() {

@@ -39,15 +39,19 @@ fn declared(manifest: &str) -> BTreeSet<String> {
     out
 }
 
-/// Every `feature = "NAME"` in the text, with its line number.
+/// Every `feature = "NAME"` in the text, with its line number; `target_feature = "…"`
+/// names a CPU feature, not a package's, and is left out.
 fn used(text: &str) -> Vec<(usize, String)> {
     let mut out = Vec::new();
     for (no, line) in text.lines().enumerate() {
         let mut rest = line;
         while let Some(at) = rest.find("feature = \"") {
+            let cpu = rest[..at].ends_with("target_");
             rest = &rest[at + "feature = \"".len()..];
             if let Some(end) = rest.find('"') {
-                out.push((no + 1, rest[..end].to_owned()));
+                if !cpu {
+                    out.push((no + 1, rest[..end].to_owned()));
+                }
                 rest = &rest[end..];
             }
         }
@@ -119,9 +123,13 @@ fn canary_a_missing_feature_is_flagged() {
         features,
         BTreeSet::from(["default".to_owned(), "std".to_owned()])
     );
-    let text = "#![cfg(feature = \"std\")]\n#[cfg(all(feature = \"cli\", feature = \"std\"))]\n";
+    let text = "#![cfg(feature = \"std\")]\n#[cfg(all(feature = \"cli\", feature = \"std\"))]\n\
+                #[cfg(all(target_feature = \"avx\", feature = \"avx\"))]\n";
     assert_eq!(
         undeclared("t.rs", text, &features),
-        vec!["t.rs:2: feature \"cli\"".to_owned()]
+        vec![
+            "t.rs:2: feature \"cli\"".to_owned(),
+            "t.rs:3: feature \"avx\"".to_owned()
+        ]
     );
 }

@@ -100,6 +100,19 @@ pub fn clip_convex(a: &[Merc], b: &[Merc]) -> Vec<Merc> {
     out
 }
 
+/// Is the ring simple (no two edges meet but neighbours at their common vertex; repeated
+/// consecutive vertices count once) and counter-clockwise? Decided exactly by the
+/// engine's ring check (`polyguard::ring::check`: Shewchuk's filtered orientation with
+/// an exact fallback), so no rounding bound enters; a ring too extreme to check exactly
+/// counts as not simple.
+pub fn simple_ccw(ring: &[Merc]) -> bool {
+    let v: Vec<polyguard::Vect2> = ring
+        .iter()
+        .map(|p| polyguard::Vect2::new(p[0], p[1]))
+        .collect();
+    polyguard::ring::simple_ccw(&v)
+}
+
 /// Paper B eq 9 for convex polygons (both counter-clockwise): do the closed polygons
 /// meet? Separating-axis test over the edge normals: they are disjoint iff some edge of
 /// one has every vertex of the other strictly outside.
@@ -381,10 +394,16 @@ pub fn region(rings: Vec<Vec<Merc>>, earth: bool) -> Vec<Vec<Merc>> {
             0.0
         }
     };
+    // one ring that is already a valid polygon (convex, or simple and counter-clockwise,
+    // decided exactly by [`simple_ccw`]) and within [−π, π]: the union of one polygon is
+    // itself
     if let [(ring, holes)] = pieces.as_slice() {
         let dx = turn(ring);
         let b = bbox(ring);
-        if holes.is_empty() && is_convex(ring) && (!earth || b[2] + dx <= PI) {
+        if holes.is_empty()
+            && (!earth || b[2] + dx <= PI)
+            && (is_convex(ring) || simple_ccw(ring))
+        {
             let mut r: Vec<Merc> = ring.iter().map(|p| [p[0] + dx, p[1]]).collect();
             r.dedup();
             while r.len() > 1 && r.first() == r.last() {

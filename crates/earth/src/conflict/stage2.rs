@@ -127,28 +127,14 @@ pub fn exact_rings(a: &Object, b: &Object) -> Vec<Vec<Merc>> {
     rings
 }
 
-/// Paper B eq 9, the answer's region of a pair where exactly one object is convex:
-/// `clip`, stage 2's Sutherland–Hodgman clip of the other by it, when the other has no
-/// holes and `clip` is one simple counter-clockwise ring ([`geom::simple_ccw`], exact);
-/// otherwise [`exact_rings`].
-///
-/// Why such a clip is `Γ^i ∩ Γ^j`: clipping a closed curve by a half-plane `H` replaces
-/// each excursion outside `H` by a chord on `H`'s line; an excursion and its chord form
-/// a closed curve in the closed complement of `H`, which winds 0 times around any point
-/// inside `H`, and the clipped curve lies in `H`, so it winds 0 times around any point
-/// outside. So for a point on no ring and no clipper line, the clip's winding number is
-/// the subject's (1 inside, 0 outside) times "inside the clipper". A simple
-/// counter-clockwise ring winds once around its interior and 0 times outside: the
-/// interiors agree but for a null set, and so do their closures, the regions. A clip that
-/// is not simple (zero-width bridges where the intersection has several pieces) takes
-/// the general boolean operations. The clip's vertices are stage 2's f64 ones; the check
-/// is on those very vertices, so the region printed is a valid polygon.
-pub fn answer_rings(a: &Object, b: &Object, clip: Vec<Vec<Merc>>) -> Vec<Vec<Merc>> {
-    if a.holes().is_empty() && b.holes().is_empty() {
-        if let [ring] = clip.as_slice() {
-            if geom::simple_ccw(ring) {
-                return clip;
-            }
+/// Paper B eq 9, the answer's region of a pair where exactly one object is convex: the
+/// clip of the other by it when [`geom::clip_convex_exact`] shows the clip to be the
+/// intersection's boundary (the other has no holes), otherwise [`exact_rings`].
+pub fn answer_rings(a: &Object, b: &Object) -> Vec<Vec<Merc>> {
+    let (subject, clipper) = if b.is_convex() { (a, b) } else { (b, a) };
+    if subject.holes().is_empty() && clipper.holes().is_empty() {
+        if let Some(r) = geom::clip_convex_exact(&subject.sweep, &clipper.sweep) {
+            return if r.len() >= 3 { vec![r] } else { Vec::new() };
         }
     }
     exact_rings(a, b)

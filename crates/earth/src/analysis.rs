@@ -342,6 +342,9 @@ pub struct Summary {
     pub stats: pipeline::Stats,
 }
 
+/// Conflicts whose answer text one task of [`analyse_into`] writes.
+const OUTPUT_CHUNK: usize = 256;
+
 /// [`analyse_with`], the answer written to `out` as each block of features is done
 /// ([`pipeline::run_blocks`]): memory holds one block's conflicts, never the whole answer
 /// (any density, in bounded memory). The text written is the answer
@@ -389,14 +392,31 @@ pub fn analyse_into(
             if failed.is_some() {
                 return;
             }
+            // the conflicts' text in parallel, a chunk per task (with regions, writing the
+            // coordinates costs as much as a stage), joined in order
+            use rayon::prelude::*;
+            let texts: Vec<String> = block
+                .par_chunks(OUTPUT_CHUNK)
+                .map(|chunk| {
+                    let mut s = String::new();
+                    for (k, c) in chunk.iter().enumerate() {
+                        if k > 0 {
+                            s.push(',');
+                        }
+                        conflict_json(&mut s, &|k| &ids[k], c, regions, geo);
+                    }
+                    s
+                })
+                .collect();
             buf.clear();
-            for c in &block {
+            for t in &texts {
                 if count > 0 {
                     buf.push(',');
                 }
-                conflict_json(&mut buf, &|k| &ids[k], c, regions, geo);
+                buf.push_str(t);
                 count += 1;
             }
+            count += block.len() - texts.len();
             if let Err(e) = out.write_all(buf.as_bytes()) {
                 failed = Some(e);
             }

@@ -266,10 +266,29 @@ pub fn point_in_ring(p: Merc, ring: &[Merc]) -> bool {
     inside
 }
 
-/// Do the two rings (as closed curves) share a point?
+/// Do the two rings (as closed curves) share a point? Pairs of edges whose bounding boxes
+/// are disjoint are skipped: closed segments meet only where their boxes do, and the
+/// boxes compare input coordinates, without rounding.
 pub fn boundaries_meet(a: &[Merc], b: &[Merc]) -> bool {
     let (n, m) = (a.len(), b.len());
-    (0..n).any(|i| (0..m).any(|j| segments_meet(a[i], a[(i + 1) % n], b[j], b[(j + 1) % m])))
+    let boxes: Vec<[f64; 4]> = (0..m)
+        .map(|j| {
+            let (p, q) = (b[j], b[(j + 1) % m]);
+            [p[0].min(q[0]), p[1].min(q[1]), p[0].max(q[0]), p[1].max(q[1])]
+        })
+        .collect();
+    (0..n).any(|i| {
+        let (p, q) = (a[i], a[(i + 1) % n]);
+        let ba = [p[0].min(q[0]), p[1].min(q[1]), p[0].max(q[0]), p[1].max(q[1])];
+        (0..m).any(|j| {
+            let bb = &boxes[j];
+            ba[0] <= bb[2]
+                && bb[0] <= ba[2]
+                && ba[1] <= bb[3]
+                && bb[1] <= ba[3]
+                && segments_meet(p, q, b[j], b[(j + 1) % m])
+        })
+    })
 }
 
 /// Paper B eq 9 as a predicate: do the closed polygons bounded by two simple rings meet?

@@ -373,6 +373,9 @@ pub struct Summary {
 /// Conflicts whose answer text one task of [`analyse_into`] writes.
 const OUTPUT_CHUNK: usize = 256;
 
+/// The bytes of one conflict's answer text reserved ahead (with its region).
+const CONFLICT_BYTES: usize = 512;
+
 /// [`analyse_with`], the answer written to `out` as each block of features is done
 /// ([`pipeline::run_blocks`]): memory holds one block's conflicts, never the whole answer
 /// (any density, in bounded memory). The text written is the answer
@@ -408,7 +411,6 @@ pub fn analyse_into(
     if let Err(e) = out.write_all(ANSWER_HEAD.as_bytes()) {
         return Ok(Err(e));
     }
-    let mut buf = String::new();
     let stats = pipeline::run_blocks(
         &objects,
         pipeline::Options {
@@ -421,12 +423,13 @@ pub fn analyse_into(
                 return;
             }
             // the conflicts' text in parallel, a chunk per task (with regions, writing the
-            // coordinates costs as much as a stage), joined in order
+            // coordinates costs as much as a stage), written in order
             use rayon::prelude::*;
             let texts: Vec<String> = block
                 .par_chunks(OUTPUT_CHUNK)
                 .map(|chunk| {
-                    let mut s = String::new();
+                    // room for a conflict with a region of a dozen vertices: few regrowths
+                    let mut s = String::with_capacity(chunk.len() * CONFLICT_BYTES);
                     for (k, c) in chunk.iter().enumerate() {
                         if k > 0 {
                             s.push(',');
@@ -436,18 +439,14 @@ pub fn analyse_into(
                     s
                 })
                 .collect();
-            buf.clear();
-            for t in &texts {
-                if count > 0 {
-                    buf.push(',');
+            for (i, t) in texts.iter().enumerate() {
+                let sep: &[u8] = if count > 0 || i > 0 { b"," } else { b"" };
+                if let Err(e) = out.write_all(sep).and_then(|()| out.write_all(t.as_bytes())) {
+                    failed = Some(e);
+                    return;
                 }
-                buf.push_str(t);
-                count += 1;
             }
-            count += block.len() - texts.len();
-            if let Err(e) = out.write_all(buf.as_bytes()) {
-                failed = Some(e);
-            }
+            count += block.len();
         },
     );
     progress.stages_end();
@@ -455,7 +454,7 @@ pub fn analyse_into(
         return Ok(Err(e));
     }
     let total_ms = t_all.elapsed().as_secs_f64() * 1e3;
-    buf.clear();
+    let mut buf = String::new();
     answer_tail(
         &mut buf,
         ids.len(),

@@ -221,10 +221,11 @@ fn conflict_json<'a>(
     num(out, c.t_start);
     out.push_str(",\"t_end\":");
     num(out, c.t_end);
-    let _ = write!(
-        out,
-        ",\"decided_by\":\"{decided_by}\",\"method\":\"{method}\",\"projection_windows\":"
-    );
+    out.push_str(",\"decided_by\":\"");
+    out.push_str(decided_by);
+    out.push_str("\",\"method\":\"");
+    out.push_str(method);
+    out.push_str("\",\"projection_windows\":");
     // not computed with --no-regions: null, not a pair of "no window"s
     if !regions {
         out.push_str("null");

@@ -442,7 +442,10 @@ pub fn analyse_into(
                 .collect();
             for (i, t) in texts.iter().enumerate() {
                 let sep: &[u8] = if count > 0 || i > 0 { b"," } else { b"" };
-                if let Err(e) = out.write_all(sep).and_then(|()| out.write_all(t.as_bytes())) {
+                if let Err(e) = out
+                    .write_all(sep)
+                    .and_then(|()| out.write_all(t.as_bytes()))
+                {
                     failed = Some(e);
                     return;
                 }
@@ -558,10 +561,20 @@ mod tests {
     /// backslashes, non-ASCII text.
     #[test]
     fn strings_are_escaped_as_serde_json_escapes_them() {
-        let mut cases: Vec<String> = (0u8..0x20).map(|b| format!("a{}b", char::from(b))).collect();
+        let mut cases: Vec<String> = (0u8..0x20)
+            .map(|b| format!("a{}b", char::from(b)))
+            .collect();
         cases.extend(
-            ["", "plain", "q\"uote", "back\\slash", "\u{7f}", "é – ü 飛", "\"\\\n"]
-                .map(String::from),
+            [
+                "",
+                "plain",
+                "q\"uote",
+                "back\\slash",
+                "\u{7f}",
+                "é – ü 飛",
+                "\"\\\n",
+            ]
+            .map(String::from),
         );
         for c in &cases {
             let mut s = String::new();

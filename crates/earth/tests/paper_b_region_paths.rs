@@ -144,7 +144,9 @@ fn perimeter(rings: &[Vec<Merc>]) -> f64 {
 fn same_set(got: &[Vec<Merc>], want: &[Vec<Merc>], tol: f64) -> Result<(), String> {
     let far = farthest_vertex(got, want).max(farthest_vertex(want, got));
     if far > tol {
-        return Err(format!("a vertex {far} from the other region (allowed {tol})"));
+        return Err(format!(
+            "a vertex {far} from the other region (allowed {tol})"
+        ));
     }
     let (g, w) = (multi(got), multi(want));
     let diff = g.difference(&w).unsigned_area() + w.difference(&g).unsigned_area();
@@ -225,7 +227,8 @@ fn fast_regions_are_the_definitions_point_sets() {
 /// passes.
 #[test]
 fn the_comparison_catches_a_moved_vertex_and_a_lost_piece() {
-    let sq = |x0: f64, y0: f64, s: f64| vec![[x0, y0], [x0 + s, y0], [x0 + s, y0 + s], [x0, y0 + s]];
+    let sq =
+        |x0: f64, y0: f64, s: f64| vec![[x0, y0], [x0 + s, y0], [x0 + s, y0 + s], [x0, y0 + s]];
     let tol = 2f64.powi(-27) * 0.2;
     let one = vec![sq(-0.5, 0.3, 0.05)];
     assert_eq!(same_set(&one, &one, tol), Ok(()));
@@ -255,4 +258,3 @@ fn the_comparison_catches_a_moved_vertex_and_a_lost_piece() {
         assert!(same_set(&[lost], &c.rings, tol).is_err());
     }
 }
-

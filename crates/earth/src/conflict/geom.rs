@@ -274,12 +274,22 @@ pub fn boundaries_meet(a: &[Merc], b: &[Merc]) -> bool {
     let boxes: Vec<[f64; 4]> = (0..m)
         .map(|j| {
             let (p, q) = (b[j], b[(j + 1) % m]);
-            [p[0].min(q[0]), p[1].min(q[1]), p[0].max(q[0]), p[1].max(q[1])]
+            [
+                p[0].min(q[0]),
+                p[1].min(q[1]),
+                p[0].max(q[0]),
+                p[1].max(q[1]),
+            ]
         })
         .collect();
     (0..n).any(|i| {
         let (p, q) = (a[i], a[(i + 1) % n]);
-        let ba = [p[0].min(q[0]), p[1].min(q[1]), p[0].max(q[0]), p[1].max(q[1])];
+        let ba = [
+            p[0].min(q[0]),
+            p[1].min(q[1]),
+            p[0].max(q[0]),
+            p[1].max(q[1]),
+        ];
         (0..m).any(|j| {
             let bb = &boxes[j];
             ba[0] <= bb[2]
@@ -508,9 +518,7 @@ pub fn region(rings: Vec<Vec<Merc>>, earth: bool) -> Vec<Vec<Merc>> {
     if let [(ring, holes)] = pieces.as_slice() {
         let dx = turn(ring);
         let b = bbox(ring);
-        if holes.is_empty()
-            && (!earth || b[2] + dx <= PI)
-            && (is_convex(ring) || simple_ccw(ring))
+        if holes.is_empty() && (!earth || b[2] + dx <= PI) && (is_convex(ring) || simple_ccw(ring))
         {
             let mut r: Vec<Merc> = ring.iter().map(|p| [p[0] + dx, p[1]]).collect();
             r.dedup();

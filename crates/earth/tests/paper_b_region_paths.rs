@@ -1,6 +1,7 @@
-//! Paper B eq 9, the answer's regions: the fast paths (stage 2's Sutherland–Hodgman clip
-//! when it is one simple counter-clockwise ring, `stage2::answer_rings`; one valid ring
-//! returned without a union, `geom::region`) against the definition computed by `geo`'s
+//! Paper B eq 9, the answer's regions: the fast paths (a Sutherland–Hodgman clip where it
+//! is shown to be the intersection's boundary, `stage2::answer_rings` and
+//! `geom::clip_by_hull_exact`; one valid ring returned without a union, `geom::region`)
+//! against the definition computed by `geo`'s
 //! boolean operations for every object pair in conflict (`Γ^a ∩ Γ^b` by
 //! `stage2::exact_rings`, the legs' pieces united by `geom::united`). Both must be the
 //! same point set, up to geo's grid.
@@ -19,7 +20,9 @@
 //! both. Run by hand and caught: taking stage 2's clip whenever it is one simple ring
 //! (without `geom::clip_convex_exact`'s test for bridges) fails on the mixed scenario of
 //! seed 2, features 100 and 187: a bridge that rounding had given a width, a spike
-//! 0.006 rad long.
+//! 0.006 rad long; taking the clip of two non-convex areas by a hull although the other
+//! meets one of its pockets (`geom::clip_by_hull_exact` without its pocket test) fails on
+//! the mixed scenario of seed 1, features 0 and 60.
 
 use geo::{Area, BooleanOps, Intersects, LineString, MultiPolygon, Polygon};
 use polyguard_earth::conflict::{

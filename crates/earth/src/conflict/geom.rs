@@ -190,6 +190,83 @@ pub fn clip_convex_exact(subject: &[Merc], clipper: &[Merc]) -> Option<Vec<Merc>
     simple_ccw(&ring).then_some(ring)
 }
 
+/// Paper B eq 9 for two simple counter-clockwise rings without holes, `a` and `b`:
+/// `a ∩ b` as [`clip_convex_exact`]'s clip of `a` by the convex hull of `b`, when `a`
+/// meets none of `b`'s pockets; `None` when that is not shown.
+///
+/// Why: the hull `H` of a simple polygon `b` is `b` together with its pockets (each
+/// bounded by a hull edge, its lid, and the stretch of `b` between the lid's ends), so
+/// `a ∩ H = (a ∩ b) ∪ (a ∩ pockets) = a ∩ b` when `a` meets no pocket. Every decision is
+/// exact: `H` is taken from `b`'s vertices and must be strictly convex, hold every vertex
+/// of `b` and meet `b`'s ring in its vertices in `b`'s order; a pocket's stretch must lie
+/// strictly inside its lid; `a` and a pocket are disjoint closed sets when no edge of one
+/// meets an edge of the other (`polyguard::ring::segments_meet`, exact) and neither has a
+/// vertex inside the other (winding number by exact orientations).
+pub fn clip_by_hull_exact(a: &[Merc], b: &[Merc]) -> Option<Vec<Merc>> {
+    let n = b.len();
+    let hull = convex_hull(b);
+    let h = hull.len();
+    if h < 3 || n < 3 {
+        return None;
+    }
+    // the hull's vertices in b, in b's order from the first
+    let idx: Vec<usize> = hull
+        .iter()
+        .map(|v| b.iter().position(|w| w == v))
+        .collect::<Option<Vec<usize>>>()?;
+    let k0 = idx.iter().enumerate().min_by_key(|&(_, &i)| i)?.0;
+    let order: Vec<usize> = (0..h).map(|k| idx[(k0 + k) % h]).collect();
+    if order.windows(2).any(|w| w[0] >= w[1]) {
+        return None;
+    }
+    for k in 0..h {
+        let (e0, e1) = (hull[k], hull[(k + 1) % h]);
+        if b.iter().any(|&v| orient_exact(e0, e1, v) < 0.0) {
+            return None;
+        }
+    }
+    let v2 = |p: Merc| polyguard::Vect2::new(p[0], p[1]);
+    let disjoint = |p: &[Merc], q: &[Merc]| -> bool {
+        let (np, nq) = (p.len(), q.len());
+        for i in 0..np {
+            for j in 0..nq {
+                let m = polyguard::ring::segments_meet(
+                    v2(p[i]),
+                    v2(p[(i + 1) % np]),
+                    v2(q[j]),
+                    v2(q[(j + 1) % nq]),
+                );
+                if m != Some(false) {
+                    return false;
+                }
+            }
+        }
+        // boundaries apart: each lies inside the other or outside it as a whole
+        crate::moving::prepared::winding(q, p[0]) == 0
+            && crate::moving::prepared::winding(p, q[0]) == 0
+    };
+    for k in 0..h {
+        let (i, j) = (order[k], order[(k + 1) % h]);
+        let end = if j > i { j } else { j + n };
+        if end - i < 2 {
+            continue; // the lid is an edge of b: no pocket
+        }
+        // the pocket: b's stretch from i to j, closed by the lid from j back to i
+        let pocket: Vec<Merc> = (i..=end).map(|t| b[t % n]).collect();
+        let (l0, l1) = (b[i], b[end % n]);
+        if pocket[1..pocket.len() - 1]
+            .iter()
+            .any(|&v| orient_exact(l0, l1, v) <= 0.0)
+        {
+            return None;
+        }
+        if !disjoint(a, &pocket) {
+            return None;
+        }
+    }
+    clip_convex_exact(a, &hull)
+}
+
 /// Is the ring simple (no two edges meet but neighbours at their common vertex; repeated
 /// consecutive vertices count once) and counter-clockwise? Decided exactly by the
 /// engine's ring check (`polyguard::ring::check`: Shewchuk's filtered orientation with

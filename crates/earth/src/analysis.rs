@@ -31,9 +31,37 @@ fn num(out: &mut String, x: f64) {
     }
 }
 
-/// A JSON string literal.
+/// A JSON string literal with JSON's escapes (RFC 8259 §7) as `serde_json` writes them: `"` and `\\` escaped, the
+/// control characters below U+0020 by their short escape or `\u00xx`, all else as it
+/// is (a `Value` per id cost a tenth of writing a large answer).
 fn string(out: &mut String, s: &str) {
-    out.push_str(&Value::from(s).to_string());
+    out.push('"');
+    let mut start = 0;
+    for (i, b) in s.bytes().enumerate() {
+        let esc: &str = match b {
+            b'"' => "\\\"",
+            b'\\' => "\\\\",
+            b'\n' => "\\n",
+            b'\r' => "\\r",
+            b'\t' => "\\t",
+            0x08 => "\\b",
+            0x0c => "\\f",
+            0..=0x1f => "",
+            _ => continue,
+        };
+        out.push_str(&s[start..i]);
+        if esc.is_empty() {
+            const HEX: &[u8; 16] = b"0123456789abcdef";
+            out.push_str("\\u00");
+            out.push(char::from(HEX[usize::from(b >> 4)]));
+            out.push(char::from(HEX[usize::from(b & 15)]));
+        } else {
+            out.push_str(esc);
+        }
+        start = i + 1;
+    }
+    out.push_str(&s[start..]);
+    out.push('"');
 }
 
 /// Region coordinates are written with this many decimals of a degree: 1e-7° ≈ 1.1 cm,
@@ -193,10 +221,11 @@ fn conflict_json<'a>(
     num(out, c.t_start);
     out.push_str(",\"t_end\":");
     num(out, c.t_end);
-    let _ = write!(
-        out,
-        ",\"decided_by\":\"{decided_by}\",\"method\":\"{method}\",\"projection_windows\":"
-    );
+    out.push_str(",\"decided_by\":\"");
+    out.push_str(decided_by);
+    out.push_str("\",\"method\":\"");
+    out.push_str(method);
+    out.push_str("\",\"projection_windows\":");
     // not computed with --no-regions: null, not a pair of "no window"s
     if !regions {
         out.push_str("null");
@@ -342,6 +371,12 @@ pub struct Summary {
     pub stats: pipeline::Stats,
 }
 
+/// Conflicts whose answer text one task of [`analyse_into`] writes.
+const OUTPUT_CHUNK: usize = 256;
+
+/// The bytes of one conflict's answer text reserved ahead (with its region).
+const CONFLICT_BYTES: usize = 512;
+
 /// [`analyse_with`], the answer written to `out` as each block of features is done
 /// ([`pipeline::run_blocks`]): memory holds one block's conflicts, never the whole answer
 /// (any density, in bounded memory). The text written is the answer
@@ -377,7 +412,6 @@ pub fn analyse_into(
     if let Err(e) = out.write_all(ANSWER_HEAD.as_bytes()) {
         return Ok(Err(e));
     }
-    let mut buf = String::new();
     let stats = pipeline::run_blocks(
         &objects,
         pipeline::Options {
@@ -389,17 +423,34 @@ pub fn analyse_into(
             if failed.is_some() {
                 return;
             }
-            buf.clear();
-            for c in &block {
-                if count > 0 {
-                    buf.push(',');
+            // the conflicts' text in parallel, a chunk per task (with regions, writing the
+            // coordinates costs as much as a stage), written in order
+            use rayon::prelude::*;
+            let texts: Vec<String> = block
+                .par_chunks(OUTPUT_CHUNK)
+                .map(|chunk| {
+                    // room for a conflict with a region of a dozen vertices: few regrowths
+                    let mut s = String::with_capacity(chunk.len() * CONFLICT_BYTES);
+                    for (k, c) in chunk.iter().enumerate() {
+                        if k > 0 {
+                            s.push(',');
+                        }
+                        conflict_json(&mut s, &|k| &ids[k], c, regions, geo);
+                    }
+                    s
+                })
+                .collect();
+            for (i, t) in texts.iter().enumerate() {
+                let sep: &[u8] = if count > 0 || i > 0 { b"," } else { b"" };
+                if let Err(e) = out
+                    .write_all(sep)
+                    .and_then(|()| out.write_all(t.as_bytes()))
+                {
+                    failed = Some(e);
+                    return;
                 }
-                conflict_json(&mut buf, &|k| &ids[k], c, regions, geo);
-                count += 1;
             }
-            if let Err(e) = out.write_all(buf.as_bytes()) {
-                failed = Some(e);
-            }
+            count += block.len();
         },
     );
     progress.stages_end();
@@ -407,7 +458,7 @@ pub fn analyse_into(
         return Ok(Err(e));
     }
     let total_ms = t_all.elapsed().as_secs_f64() * 1e3;
-    buf.clear();
+    let mut buf = String::new();
     answer_tail(
         &mut buf,
         ids.len(),
@@ -505,6 +556,32 @@ pub fn analyse_with(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Ids are written as serde_json writes them: every control character, quotes,
+    /// backslashes, non-ASCII text.
+    #[test]
+    fn strings_are_escaped_as_serde_json_escapes_them() {
+        let mut cases: Vec<String> = (0u8..0x20)
+            .map(|b| format!("a{}b", char::from(b)))
+            .collect();
+        cases.extend(
+            [
+                "",
+                "plain",
+                "q\"uote",
+                "back\\slash",
+                "\u{7f}",
+                "é – ü 飛",
+                "\"\\\n",
+            ]
+            .map(String::from),
+        );
+        for c in &cases {
+            let mut s = String::new();
+            string(&mut s, c);
+            assert_eq!(s, Value::from(c.as_str()).to_string(), "{c:?}");
+        }
+    }
 
     #[test]
     fn coord_is_fixed_point_with_seven_decimals() {

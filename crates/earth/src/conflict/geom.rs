@@ -100,6 +100,186 @@ pub fn clip_convex(a: &[Merc], b: &[Merc]) -> Vec<Merc> {
     out
 }
 
+/// The exact sign of [`orient`] (Shewchuk's adaptive predicate: exact on f64 inputs).
+fn orient_exact(a: Merc, b: Merc, c: Merc) -> f64 {
+    let k = |p: Merc| robust::Coord { x: p[0], y: p[1] };
+    robust::orient2d(k(a), k(b), k(c))
+}
+
+/// Paper B eq 9 for a simple counter-clockwise `subject` without holes and a convex
+/// counter-clockwise `clipper`: [`clip_convex`]'s ring when it is the boundary of
+/// `subject ∩ clipper`, `None` when that is not shown (then the caller takes the general
+/// boolean operations).
+///
+/// Why the ring is the boundary when `Some`: clipping a closed curve by a half-plane `H`
+/// replaces each excursion outside `H` by a chord on `H`'s line; an excursion and its
+/// chord form a closed curve in the closed complement of `H`, which winds 0 times around
+/// any point inside `H`, and the clipped curve lies in `H`. So the clip winds once around
+/// the points of `subject ∩ clipper` and 0 times around the others (off the curve), and
+/// the curve is that set's boundary except where it runs along a part of the clipper's
+/// boundary twice, in opposite directions (the zero-width bridges of an intersection of
+/// several pieces, or a spike). Only chords lie on the clipper's lines: every subject
+/// vertex is off every clipper line (exact orientation, else `None`), so no subject edge
+/// lies on one. Each point of the clip is tagged with the clipper lines it was made on
+/// (a point cut from an edge also keeps the lines both ends share); two edges on one line
+/// whose spans along it overlap are a bridge (`None`). Last the ring must be simple and
+/// counter-clockwise ([`simple_ccw`], exact), which also rejects pieces that touch at a
+/// point. The float classification `orient ≥ 0` may differ from the exact sign only for
+/// points within rounding of a line; a point whose float orientation is 0 is tagged with
+/// the line, so a chord that starts at it is seen as one.
+pub fn clip_convex_exact(subject: &[Merc], clipper: &[Merc]) -> Option<Vec<Merc>> {
+    let m = clipper.len();
+    if !(3..=64).contains(&m) || subject.len() < 3 {
+        return None;
+    }
+    for i in 0..m {
+        let (e0, e1) = (clipper[i], clipper[(i + 1) % m]);
+        // strictly convex: two collinear edges would be one line with two tags
+        if orient_exact(e0, e1, clipper[(i + 2) % m]) <= 0.0 {
+            return None;
+        }
+        if subject.iter().any(|&v| orient_exact(e0, e1, v) == 0.0) {
+            return None;
+        }
+    }
+    // the same arithmetic as clip_convex, each point with its lines (bit i: line i)
+    let mut out: Vec<(Merc, u64)> = subject.iter().map(|&p| (p, 0)).collect();
+    let mut buf: Vec<(Merc, u64)> = Vec::with_capacity(subject.len() + m);
+    for i in 0..m {
+        if out.is_empty() {
+            break;
+        }
+        let (e0, e1) = (clipper[i], clipper[(i + 1) % m]);
+        let bit = 1u64 << i;
+        buf.clear();
+        let n = out.len();
+        for j in 0..n {
+            let ((p, tp), (q, tq)) = (out[j], out[(j + 1) % n]);
+            let (op, oq) = (orient(e0, e1, p), orient(e0, e1, q));
+            if op >= 0.0 {
+                buf.push((p, if op == 0.0 { tp | bit } else { tp }));
+            }
+            if (op > 0.0 && oq < 0.0) || (op < 0.0 && oq > 0.0) {
+                let s = op / (op - oq);
+                let x = [p[0] + s * (q[0] - p[0]), p[1] + s * (q[1] - p[1])];
+                buf.push((x, (tp & tq) | bit));
+            }
+        }
+        core::mem::swap(&mut out, &mut buf);
+    }
+    let n = out.len();
+    for i in 0..m {
+        let bit = 1u64 << i;
+        let (e0, e1) = (clipper[i], clipper[(i + 1) % m]);
+        let d = [e1[0] - e0[0], e1[1] - e0[1]];
+        let t = |p: Merc| (p[0] - e0[0]) * d[0] + (p[1] - e0[1]) * d[1];
+        let spans: Vec<(f64, f64)> = (0..n)
+            .filter(|&j| out[j].1 & out[(j + 1) % n].1 & bit != 0)
+            .map(|j| {
+                let (a, b) = (t(out[j].0), t(out[(j + 1) % n].0));
+                (a.min(b), a.max(b))
+            })
+            .collect();
+        for (k, x) in spans.iter().enumerate() {
+            if spans[k + 1..].iter().any(|y| x.0.max(y.0) < x.1.min(y.1)) {
+                return None;
+            }
+        }
+    }
+    let ring: Vec<Merc> = out.into_iter().map(|(p, _)| p).collect();
+    simple_ccw(&ring).then_some(ring)
+}
+
+/// Paper B eq 9 for two simple counter-clockwise rings without holes, `a` and `b`:
+/// `a ∩ b` as [`clip_convex_exact`]'s clip of `a` by the convex hull of `b`, when `a`
+/// meets none of `b`'s pockets; `None` when that is not shown.
+///
+/// Why: the hull `H` of a simple polygon `b` is `b` together with its pockets (each
+/// bounded by a hull edge, its lid, and the stretch of `b` between the lid's ends), so
+/// `a ∩ H = (a ∩ b) ∪ (a ∩ pockets) = a ∩ b` when `a` meets no pocket. Every decision is
+/// exact: `H` is taken from `b`'s vertices and must be strictly convex, hold every vertex
+/// of `b` and meet `b`'s ring in its vertices in `b`'s order; a pocket's stretch must lie
+/// strictly inside its lid; `a` and a pocket are disjoint closed sets when no edge of one
+/// meets an edge of the other (`polyguard::ring::segments_meet`, exact) and neither has a
+/// vertex inside the other (winding number by exact orientations).
+pub fn clip_by_hull_exact(a: &[Merc], b: &[Merc]) -> Option<Vec<Merc>> {
+    let n = b.len();
+    let hull = convex_hull(b);
+    let h = hull.len();
+    if h < 3 || n < 3 {
+        return None;
+    }
+    // the hull's vertices in b, in b's order from the first
+    let idx: Vec<usize> = hull
+        .iter()
+        .map(|v| b.iter().position(|w| w == v))
+        .collect::<Option<Vec<usize>>>()?;
+    let k0 = idx.iter().enumerate().min_by_key(|&(_, &i)| i)?.0;
+    let order: Vec<usize> = (0..h).map(|k| idx[(k0 + k) % h]).collect();
+    if order.windows(2).any(|w| w[0] >= w[1]) {
+        return None;
+    }
+    for k in 0..h {
+        let (e0, e1) = (hull[k], hull[(k + 1) % h]);
+        if b.iter().any(|&v| orient_exact(e0, e1, v) < 0.0) {
+            return None;
+        }
+    }
+    let v2 = |p: Merc| polyguard::Vect2::new(p[0], p[1]);
+    let disjoint = |p: &[Merc], q: &[Merc]| -> bool {
+        let (np, nq) = (p.len(), q.len());
+        for i in 0..np {
+            for j in 0..nq {
+                let m = polyguard::ring::segments_meet(
+                    v2(p[i]),
+                    v2(p[(i + 1) % np]),
+                    v2(q[j]),
+                    v2(q[(j + 1) % nq]),
+                );
+                if m != Some(false) {
+                    return false;
+                }
+            }
+        }
+        // boundaries apart: each lies inside the other or outside it as a whole
+        crate::moving::prepared::winding(q, p[0]) == 0
+            && crate::moving::prepared::winding(p, q[0]) == 0
+    };
+    for k in 0..h {
+        let (i, j) = (order[k], order[(k + 1) % h]);
+        let end = if j > i { j } else { j + n };
+        if end - i < 2 {
+            continue; // the lid is an edge of b: no pocket
+        }
+        // the pocket: b's stretch from i to j, closed by the lid from j back to i
+        let pocket: Vec<Merc> = (i..=end).map(|t| b[t % n]).collect();
+        let (l0, l1) = (b[i], b[end % n]);
+        if pocket[1..pocket.len() - 1]
+            .iter()
+            .any(|&v| orient_exact(l0, l1, v) <= 0.0)
+        {
+            return None;
+        }
+        if !disjoint(a, &pocket) {
+            return None;
+        }
+    }
+    clip_convex_exact(a, &hull)
+}
+
+/// Is the ring simple (no two edges meet but neighbours at their common vertex; repeated
+/// consecutive vertices count once) and counter-clockwise? Decided exactly by the
+/// engine's ring check (`polyguard::ring::check`: Shewchuk's filtered orientation with
+/// an exact fallback), so no rounding bound enters; a ring too extreme to check exactly
+/// counts as not simple.
+pub fn simple_ccw(ring: &[Merc]) -> bool {
+    let v: Vec<polyguard::Vect2> = ring
+        .iter()
+        .map(|p| polyguard::Vect2::new(p[0], p[1]))
+        .collect();
+    polyguard::ring::simple_ccw(&v)
+}
+
 /// Paper B eq 9 for convex polygons (both counter-clockwise): do the closed polygons
 /// meet? Separating-axis test over the edge normals: they are disjoint iff some edge of
 /// one has every vertex of the other strictly outside.
@@ -163,10 +343,39 @@ pub fn point_in_ring(p: Merc, ring: &[Merc]) -> bool {
     inside
 }
 
-/// Do the two rings (as closed curves) share a point?
+/// Do the two rings (as closed curves) share a point? Pairs of edges whose bounding boxes
+/// are disjoint are skipped: closed segments meet only where their boxes do, and the
+/// boxes compare input coordinates, without rounding.
 pub fn boundaries_meet(a: &[Merc], b: &[Merc]) -> bool {
     let (n, m) = (a.len(), b.len());
-    (0..n).any(|i| (0..m).any(|j| segments_meet(a[i], a[(i + 1) % n], b[j], b[(j + 1) % m])))
+    let boxes: Vec<[f64; 4]> = (0..m)
+        .map(|j| {
+            let (p, q) = (b[j], b[(j + 1) % m]);
+            [
+                p[0].min(q[0]),
+                p[1].min(q[1]),
+                p[0].max(q[0]),
+                p[1].max(q[1]),
+            ]
+        })
+        .collect();
+    (0..n).any(|i| {
+        let (p, q) = (a[i], a[(i + 1) % n]);
+        let ba = [
+            p[0].min(q[0]),
+            p[1].min(q[1]),
+            p[0].max(q[0]),
+            p[1].max(q[1]),
+        ];
+        (0..m).any(|j| {
+            let bb = &boxes[j];
+            ba[0] <= bb[2]
+                && bb[0] <= ba[2]
+                && ba[1] <= bb[3]
+                && bb[1] <= ba[3]
+                && segments_meet(p, q, b[j], b[(j + 1) % m])
+        })
+    })
 }
 
 /// Paper B eq 9 as a predicate: do the closed polygons bounded by two simple rings meet?
@@ -365,12 +574,11 @@ fn open_ring(l: &geo::LineString<f64>) -> Vec<Merc> {
 /// polygons, each a counter-clockwise exterior followed by its clockwise holes. On the
 /// Earth (`earth`) each piece is first moved by whole turns so that its least x lies in
 /// [−π, π), and the union is cut at x = π (RFC 7946 §3.1.9), the part east of it moved a
-/// turn west: every x in [−π, π]. One convex ring within [−π, π] (the common case) is
-/// returned as it is; the rest goes through `geo`'s boolean operations, which compute on
-/// a grid finer than the answer's 7 decimals of a degree. Only reported: stages 3 and 4
-/// use stage 2's rings.
+/// turn west: every x in [−π, π]. One ring within [−π, π] that is convex or simple and
+/// counter-clockwise (the common case) is returned as it is; the rest goes through
+/// `geo`'s boolean operations ([`united`]), which compute on a grid finer than the
+/// answer's 7 decimals of a degree. Only reported: stages 3 and 4 use stage 2's rings.
 pub fn region(rings: Vec<Vec<Merc>>, earth: bool) -> Vec<Vec<Merc>> {
-    use geo::BooleanOps;
     use std::f64::consts::{PI, TAU};
     let pieces = polygons(&rings);
     let turn = |r: &[Merc]| {
@@ -381,10 +589,14 @@ pub fn region(rings: Vec<Vec<Merc>>, earth: bool) -> Vec<Vec<Merc>> {
             0.0
         }
     };
+    // one ring that is already a valid polygon (convex, or simple and counter-clockwise,
+    // decided exactly by [`simple_ccw`]) and within [−π, π]: the union of one polygon is
+    // itself
     if let [(ring, holes)] = pieces.as_slice() {
         let dx = turn(ring);
         let b = bbox(ring);
-        if holes.is_empty() && is_convex(ring) && (!earth || b[2] + dx <= PI) {
+        if holes.is_empty() && (!earth || b[2] + dx <= PI) && (is_convex(ring) || simple_ccw(ring))
+        {
             let mut r: Vec<Merc> = ring.iter().map(|p| [p[0] + dx, p[1]]).collect();
             r.dedup();
             while r.len() > 1 && r.first() == r.last() {
@@ -393,8 +605,25 @@ pub fn region(rings: Vec<Vec<Merc>>, earth: bool) -> Vec<Vec<Merc>> {
             return if r.len() >= 3 { vec![r] } else { Vec::new() };
         }
     }
+    united(&pieces, earth)
+}
+
+/// [`region`] by `geo`'s boolean operations, whatever the pieces: their union (each piece
+/// first moved by whole turns on the Earth), cut at x = π. `pieces` as [`polygons`]
+/// gives them.
+pub fn united(pieces: &[(Vec<Merc>, Vec<Vec<Merc>>)], earth: bool) -> Vec<Vec<Merc>> {
+    use geo::BooleanOps;
+    use std::f64::consts::{PI, TAU};
+    let turn = |r: &[Merc]| {
+        let b = bbox(r);
+        if earth && b[0].is_finite() {
+            -TAU * ((b[0] + PI) / TAU).floor()
+        } else {
+            0.0
+        }
+    };
     let mut acc = geo::MultiPolygon::<f64>(Vec::new());
-    for (ring, holes) in &pieces {
+    for (ring, holes) in pieces {
         let dx = turn(ring);
         let p = geo::Polygon::new(
             geo_ring(ring, dx),

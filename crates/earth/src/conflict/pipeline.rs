@@ -206,12 +206,13 @@ fn block(
             iv.rings = Vec::new();
         }
     }
-    // the answer's regions where an object is not convex: exact pieces instead of the
-    // clip stage 3 used (see stage2::exact_rings)
+    // the answer's regions where an object is not convex: the clip stage 3 used when it
+    // is shown to be the intersection's boundary, exact pieces otherwise
+    // (stage2::answer_rings)
     intervals.intervals.par_iter_mut().for_each(|iv| {
         let (a, b) = (&objects[iv.pair.0 as usize], &objects[iv.pair.1 as usize]);
         if !iv.rings.is_empty() && a.is_convex() != b.is_convex() {
-            iv.rings = stage2::exact_rings(a, b);
+            iv.rings = stage2::answer_rings(a, b);
         }
     });
     let mut conflicts = merge(objects, intervals);

@@ -36,8 +36,9 @@ fn to_geo(ring: &[Merc], holes: &[Vec<Merc>]) -> Polygon<f64> {
 }
 
 /// Paper B eq 9 for one pair: `None` when the closed regions are disjoint. Convex–convex
-/// (rectangle sweeps, convex areas) uses clipping; a non-convex static area goes through
-/// `geo`'s boolean operations (the paper's Shapely), its closed-set `Intersects` deciding.
+/// (rectangle sweeps, convex areas) uses clipping; two non-convex static areas the clip by
+/// a hull where [`geom::clip_by_hull_exact`] shows it exact, otherwise `geo`'s boolean
+/// operations (the paper's Shapely), their closed-set test deciding ([`geom::areas_meet`]).
 /// `static_region`: compute the region of two static areas (only reported, never used by
 /// later stages); when false such pairs are decided and get no rings.
 pub fn region(a: &Object, b: &Object, static_region: bool) -> Option<Vec<Vec<Merc>>> {
@@ -91,6 +92,14 @@ pub fn region(a: &Object, b: &Object, static_region: bool) -> Option<Vec<Vec<Mer
     if !static_region {
         return Some(Vec::new());
     }
+    // one of the two meets none of the other's pockets: the clip by the other's hull
+    if a.holes().is_empty() && b.holes().is_empty() {
+        let clip = geom::clip_by_hull_exact(&a.sweep, &b.sweep)
+            .or_else(|| geom::clip_by_hull_exact(&b.sweep, &a.sweep));
+        if let Some(r) = clip {
+            return Some(if r.len() >= 3 { vec![r] } else { Vec::new() });
+        }
+    }
     Some(exact_rings(a, b))
 }
 
@@ -125,6 +134,19 @@ pub fn exact_rings(a: &Object, b: &Object) -> Vec<Vec<Merc>> {
         }
     }
     rings
+}
+
+/// Paper B eq 9, the answer's region of a pair where exactly one object is convex: the
+/// clip of the other by it when [`geom::clip_convex_exact`] shows the clip to be the
+/// intersection's boundary (the other has no holes), otherwise [`exact_rings`].
+pub fn answer_rings(a: &Object, b: &Object) -> Vec<Vec<Merc>> {
+    let (subject, clipper) = if b.is_convex() { (a, b) } else { (b, a) };
+    if subject.holes().is_empty() && clipper.holes().is_empty() {
+        if let Some(r) = geom::clip_convex_exact(&subject.sweep, &clipper.sweep) {
+            return if r.len() >= 3 { vec![r] } else { Vec::new() };
+        }
+    }
+    exact_rings(a, b)
 }
 
 /// Paper B Section IV-C over all candidates, in parallel (rayon). `static_regions`: see

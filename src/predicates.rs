@@ -546,6 +546,9 @@ pub struct FuzzyLine {
 }
 
 impl FuzzyLine {
+    /// The constant K1 of [`FuzzyLine::side`]'s bound: 6u raised by (1 + 16u).
+    pub const K1: f64 = 6.0 * crate::ball::U * (1.0 + 16.0 * crate::ball::U);
+
     /// The line through o along d (o and the far end each within ρ); sides beyond `dist`.
     #[inline(always)]
     pub fn new(o: Vect2, d: Vect2, rho: f64, dist: f64) -> FuzzyLine {
@@ -564,12 +567,11 @@ impl FuzzyLine {
     /// 0 when not certain.
     #[inline(always)]
     pub fn side(&self, q: Vect2) -> i8 {
-        const K1: f64 = 6.0 * crate::ball::U * (1.0 + 16.0 * crate::ball::U);
         let w = q - self.o;
         let l = self.d.x * w.y;
         let r = self.d.y * w.x;
         let c = l - r;
-        let bound = K1 * (l.abs() + r.abs()) + self.k2 * (w.x.abs() + w.y.abs()) + self.c;
+        let bound = Self::K1 * (l.abs() + r.abs()) + self.k2 * (w.x.abs() + w.y.abs()) + self.c;
         if c > bound {
             1
         } else if -c > bound {

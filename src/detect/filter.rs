@@ -8,6 +8,8 @@ use crate::ball::{self, positive, Ball, BallV, Tri};
 use crate::predicates::{self as pr, SWEEP_ROUNDING};
 use crate::vect2::Vect2;
 
+pub(super) mod lanes;
+
 /// The point's part of the swept-box filter over a window [t0, t1], shared by every
 /// edge of the polygon: its positions at t0 and t1, their box, the largest magnitude
 /// involved, and its path line.

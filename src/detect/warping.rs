@@ -2,6 +2,7 @@
 //! edge_detect_simp and edge_detect to detect_diff_2D (and its run over a slab window's
 //! part of the motion, which §III asks for).
 
+use super::filter::lanes::{self, Kernel, KernelFn, LANES};
 use super::filter::{never_collapses, swept_boxes_apart, Sweep};
 use super::roots::{ball_set, below_zero_on};
 use super::{Interval, Sign};
@@ -441,6 +442,23 @@ fn edge_detect_window(
     {
         return Tri::No;
     }
+    edge_detect_simp_window(ta, tb, s, v, pi, pj, vi, vj, f)
+}
+
+/// edge_detect over the window [ta, tb] past its filter (see [`edge_detect_window`]):
+/// edge_detect_simp on the edge's ww, vv, aa, bb.
+#[inline(always)]
+fn edge_detect_simp_window(
+    ta: Ball,
+    tb: Ball,
+    s: Vect2,
+    v: Vect2,
+    pi: Vect2,
+    pj: Vect2,
+    vi: Vect2,
+    vj: Vect2,
+    f: f64,
+) -> Tri {
     let (qi, qj) = (BallV::diff(pi, s), BallV::diff(pj, s));
     let (ui, uj) = (BallV::diff(vi, v), BallV::diff(vj, v));
     let ww = qi.add(qj).half().neg();
@@ -529,6 +547,25 @@ where
         Tri::Yes => Tri::No,
     };
     let sweep = Sweep::new(ta.lo().max(0.0), tb.hi(), s, v);
+    // With the vertices and velocities stored contiguously, the filter takes four edges
+    // at a time ([`diff_masked`]): the same tests, hence the same edges tested in full,
+    // in the same order.
+    if let (Some(ps), Some(vs)) = (p.as_slice(), vels.as_slice()) {
+        if ps.len() == n && vs.len() == n {
+            let masked = DiffMasked {
+                ta,
+                tb,
+                s,
+                v,
+                ps,
+                vs,
+                f,
+                sweep,
+                acc,
+            };
+            return lanes::with_kernel(masked);
+        }
+    }
     for i in 0..n {
         let j = p.next(i);
         let (pi, pj) = (p.vertex(i), p.vertex(j));
@@ -538,6 +575,76 @@ where
             Tri::Unsure => acc = Tri::Unsure,
             Tri::No => {}
         }
+    }
+    acc
+}
+
+/// [`diff_window`]'s edge loop on contiguously stored vertices and velocities, for
+/// [`lanes::with_kernel`].
+struct DiffMasked<'a> {
+    ta: Ball,
+    tb: Ball,
+    s: Vect2,
+    v: Vect2,
+    ps: &'a [Vect2],
+    vs: &'a [Vect2],
+    f: f64,
+    sweep: Sweep,
+    /// definitely_outside's answer (`No` or `Unsure`).
+    acc: Tri,
+}
+
+impl KernelFn<Tri> for DiffMasked<'_> {
+    #[inline(always)]
+    fn call<K: Kernel>(self, k: K) -> Tri {
+        diff_masked(self, k)
+    }
+}
+
+/// Paper A §II.I detect_diff_2D's edge loop with edge_detect's filter four edges at a
+/// time: edge i is left out when its [`swept_boxes_apart`] bit is set and it
+/// [`never_collapses`], as [`edge_detect_window`] leaves it out; the edges left go
+/// through edge_detect_simp in increasing order, the first certain yes answering.
+/// Groups of [`LANES`] edges from [`LANES`] consecutive vertices; the last group of a
+/// polygon whose size is not a multiple of [`LANES`] is the last [`LANES`] edges, of
+/// which only those not yet visited are read (below [`LANES`] vertices, the edges repeat
+/// cyclically).
+#[inline(always)]
+fn diff_masked<K: Kernel>(d: DiffMasked<'_>, k: K) -> Tri {
+    let (ps, vs, w) = (d.ps, d.vs, &d.sweep);
+    let n = ps.len();
+    let mut acc = d.acc;
+    let mut i = 0;
+    while i < n {
+        let g = i.min(n.saturating_sub(LANES));
+        let j = if g + LANES >= n {
+            (g + LANES) % n
+        } else {
+            g + LANES
+        };
+        let bits = match (
+            ps[g..].first_chunk::<LANES>(),
+            vs[g..].first_chunk::<LANES>(),
+        ) {
+            (Some(p), Some(v)) => k.apart(w, p, ps[j], v, vs[j], d.f),
+            _ => {
+                let cyc = |s: &[Vect2]| core::array::from_fn(|l| s[(g + l) % n]);
+                k.apart(w, &cyc(ps), ps[j], &cyc(vs), vs[j], d.f)
+            }
+        } >> (i - g);
+        for e in i..(g + LANES).min(n) {
+            let j = if e + 1 == n { 0 } else { e + 1 };
+            let (pi, pj, vi, vj) = (ps[e], ps[j], vs[e], vs[j]);
+            if (bits >> (e - i)) & 1 == 1 && never_collapses(w.t0, w.t1, pi, pj, vi, vj) {
+                continue;
+            }
+            match edge_detect_simp_window(d.ta, d.tb, d.s, d.v, pi, pj, vi, vj, d.f) {
+                Tri::Yes => return Tri::Yes,
+                Tri::Unsure => acc = Tri::Unsure,
+                Tri::No => {}
+            }
+        }
+        i = g + LANES;
     }
     acc
 }

@@ -550,3 +550,79 @@ mod simp_quadratics_contract {
         }
     }
 }
+
+mod masks {
+    //! detect_diff_2D (§II.I) answers with its filter four edges at a time
+    //! ([`crate::detect::filter::lanes`]) as with the filter one edge at a time.
+    use super::*;
+    use crate::detect::filter::lanes::tests::{case, Case};
+    use crate::detect::{detect_3d_tri, slab_window_balls};
+    use crate::lanes::tests::check_cases;
+    use proptest::prelude::*;
+
+    /// Vertices not stored as a slice: detect_diff_2D runs its scalar loop.
+    struct NotSlice<'a>(&'a [Vect2]);
+
+    impl VertexSeq for NotSlice<'_> {
+        fn count(&self) -> usize {
+            self.0.len()
+        }
+        fn vertex(&self, i: usize) -> Vect2 {
+            self.0[i]
+        }
+    }
+
+    /// detect_diff_2D on slices (the masked loop) answers as on vertices that are not a
+    /// slice (the scalar loop), from 0 over [0, T].
+    #[test]
+    fn detect_diff_on_masks_is_the_scalar_answer() {
+        check_cases(case(), detect_diff);
+    }
+
+    fn detect_diff((p, vels, s, v, (_, t), f, b): Case) -> Result<(), TestCaseError> {
+        prop_assert_eq!(
+            detect_diff_2d_tri(t, s, v, &p[..], &vels[..], f, b),
+            detect_diff_2d_tri(t, s, v, &NotSlice(&p), &vels[..], f, b)
+        );
+        Ok(())
+    }
+
+    /// detect_3D (§III), whose 2D part is detect_diff_2D over the slab window (from a
+    /// time after 0 when the point enters the slab later), answers on slices as on
+    /// vertices that are not a slice.
+    #[test]
+    fn detect_3d_on_masks_is_the_scalar_answer() {
+        check_cases((case(), -3.0f64..3.0, -2.0f64..2.0), detect_3d);
+    }
+
+    fn detect_3d(
+        ((p, vels, s, v, (_, t), f, b), sz, vz): (Case, f64, f64),
+    ) -> Result<(), TestCaseError> {
+        let (pmin, pmax) = (0.0, 1.0);
+        let masked = detect_3d_tri(t, s, v, sz, vz, &p[..], &vels[..], pmin, pmax, 0.0, b, f);
+        let scalar = detect_3d_tri(
+            t,
+            s,
+            v,
+            sz,
+            vz,
+            &NotSlice(&p),
+            &vels[..],
+            pmin,
+            pmax,
+            0.0,
+            b,
+            f,
+        );
+        prop_assert_eq!(masked, scalar);
+        Ok(())
+    }
+
+    /// The slab windows above do start after 0 (or the test above would repeat the one
+    /// before it): from 2 below the slab rising at 1, the point enters it at t = 2.
+    #[test]
+    fn the_slab_window_starts_later() {
+        let (a, b) = slab_window_balls(10.0, -2.0, 1.0, 0.0, 1.0, 0.0).expect("a window");
+        assert!(a.lo() > 1.9 && b.hi() < 3.1);
+    }
+}

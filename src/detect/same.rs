@@ -86,10 +86,44 @@ where
     if n == 0 {
         return Tri::No;
     }
-    let mut acc = match ends_inside(ta, tb, s, v, p, vels, buff, stat) {
+    // Steps 2, 3 and 1, in that order: the answer is their disjunction (`Yes` from any,
+    // else `Unsure` from any, else `No`) whatever the order, and this one settles the
+    // common hits soonest, a point that ends inside by step 2 and one that crosses an
+    // edge by step 3, without the start's containment test.
+    let acc = match end_inside(tb, s, v, p, vels, buff, stat) {
         Tri::Yes => return Tri::Yes,
         other => other,
     };
+    match edges_close(ta, tb, s, v, p, vels, buff, stat, acc) {
+        Tri::Yes => Tri::Yes,
+        acc => match end_inside(ta, s, v, p, vels, buff, stat) {
+            Tri::Yes => Tri::Yes,
+            Tri::Unsure => Tri::Unsure,
+            Tri::No => acc,
+        },
+    }
+}
+
+/// Paper A §II.H step 3 over the window [ta, tb] (see [`same_window`]): `Yes` at the
+/// first edge whose segments_close certainly holds, else `acc` (step 2's answer) made
+/// `Unsure` by any undecided edge.
+#[inline(always)]
+fn edges_close<P, V>(
+    ta: Ball,
+    tb: Ball,
+    s: Vect2,
+    v: Vect2,
+    p: &P,
+    vels: &V,
+    buff: f64,
+    stat: bool,
+    mut acc: Tri,
+) -> Tri
+where
+    P: VertexSeq + ?Sized,
+    V: VertexSeq + ?Sized,
+{
+    let n = p.count();
     let v0 = vels.vertex(0);
     // Each vertex's side of the relative path's line of the common velocity v_0, computed
     // once and carried to the next edge: an edge with both ends certainly beyond BUFF on
@@ -205,44 +239,29 @@ fn same_masked<V: VertexSeq + ?Sized, K: Kernel>(w: SameMasked<'_, V>, k: K) -> 
     acc
 }
 
-/// Paper A §II.H steps 1 and 2 over the window [ta, tb]: is the point not definitely
-/// outside the polygon at ta, or at tb? `Yes` as soon as one end certainly is not
-/// (definitely_outside says `No`), `No` when both certainly are, `Unsure` otherwise.
-/// From ta = 0 the polygon is P itself; for a statically shaped polygon (`stat`) the
-/// vertices at t are P shifted by t·(v_0 − v) ([`Shifted`]), else each moves by its own
-/// velocity ([`AtTime`]).
+/// Paper A §II.H step 1 (t = ta) or step 2 (t = tb): is the point not definitely outside
+/// the polygon at t? `Yes` when it certainly is not (definitely_outside says `No`), `No`
+/// when it certainly is, `Unsure` otherwise. From t = 0 the polygon is P itself; for a
+/// statically shaped polygon (`stat`) the vertices at t are P shifted by t·(v_0 − v)
+/// ([`Shifted`]), else each moves by its own velocity ([`AtTime`]).
 #[inline(always)]
-fn ends_inside<P, V>(
-    ta: Ball,
-    tb: Ball,
-    s: Vect2,
-    v: Vect2,
-    p: &P,
-    vels: &V,
-    buff: f64,
-    stat: bool,
-) -> Tri
+fn end_inside<P, V>(t: Ball, s: Vect2, v: Vect2, p: &P, vels: &V, buff: f64, stat: bool) -> Tri
 where
     P: VertexSeq + ?Sized,
     V: VertexSeq + ?Sized,
 {
-    let mut acc = Tri::No;
-    let v0 = vels.vertex(0);
-    for t in [ta, tb] {
-        let outside = if t.is_exact_zero() {
-            definitely_outside_rel(&AtTime { p, vels, s, v, t }, buff)
-        } else if stat {
-            definitely_outside_rel(&Shifted::new(p, s, v, v0, t), buff)
-        } else {
-            definitely_outside_rel(&AtTime { p, vels, s, v, t }, buff)
-        };
-        match outside {
-            Tri::No => return Tri::Yes,
-            Tri::Unsure => acc = Tri::Unsure,
-            Tri::Yes => {}
-        }
+    let outside = if t.is_exact_zero() {
+        definitely_outside_rel(&AtTime { p, vels, s, v, t }, buff)
+    } else if stat {
+        definitely_outside_rel(&Shifted::new(p, s, v, vels.vertex(0), t), buff)
+    } else {
+        definitely_outside_rel(&AtTime { p, vels, s, v, t }, buff)
+    };
+    match outside {
+        Tri::No => Tri::Yes,
+        Tri::Unsure => Tri::Unsure,
+        Tri::Yes => Tri::No,
     }
-    acc
 }
 
 /// Paper A §II.H step 3 for the edge p_i p_j over the window [ta, tb], in the point's

@@ -532,20 +532,39 @@ where
     if n == 0 {
         return Tri::No;
     }
-    let mut acc = match definitely_outside_rel(
-        &AtTime {
-            p,
-            vels,
-            s,
-            v,
-            t: ta,
+    // The edges first, then the start's containment: the answer is their disjunction
+    // whatever the order, and a point that crosses an edge is settled without the
+    // containment test.
+    match diff_edges(ta, tb, s, v, p, vels, f) {
+        Tri::Yes => Tri::Yes,
+        acc => match definitely_outside_rel(
+            &AtTime {
+                p,
+                vels,
+                s,
+                v,
+                t: ta,
+            },
+            buff,
+        ) {
+            Tri::No => Tri::Yes,
+            Tri::Unsure => Tri::Unsure,
+            Tri::Yes => acc,
         },
-        buff,
-    ) {
-        Tri::No => return Tri::Yes,
-        Tri::Unsure => Tri::Unsure,
-        Tri::Yes => Tri::No,
-    };
+    }
+}
+
+/// Paper A §II.I detect_diff_2D's loop over the edges (see [`diff_window`]): `Yes` at the
+/// first edge that edge_detect certainly meets, `Unsure` if some edge is undecided, else
+/// `No`.
+#[inline(always)]
+fn diff_edges<P, V>(ta: Ball, tb: Ball, s: Vect2, v: Vect2, p: &P, vels: &V, f: f64) -> Tri
+where
+    P: VertexSeq + ?Sized,
+    V: VertexSeq + ?Sized,
+{
+    let n = p.count();
+    let mut acc = Tri::No;
     let sweep = Sweep::new(ta.lo().max(0.0), tb.hi(), s, v);
     // With the vertices and velocities stored contiguously, the filter takes four edges
     // at a time ([`diff_masked`]): the same tests, hence the same edges tested in full,

@@ -23,8 +23,8 @@ pub trait VertexSeq {
         }
     }
     /// The vertices as one contiguous slice, when they are stored that way (vertex i is
-    /// element i): the per-edge filters then test several vertices at once
-    /// ([`crate::lanes`]). `None` for computed views.
+    /// element i): the per-edge filters then test several vertices at once (the
+    /// engine's lanes, docs/performance.md). `None` for computed views.
     #[inline(always)]
     fn as_slice(&self) -> Option<&[Vect2]> {
         None

@@ -42,7 +42,7 @@ const KERNEL_PARAM: &str = "k";
 
 /// Engine modules with no oracle counterpart, each for its reason. Each must exist in
 /// the engine and not in the oracle (a stale entry fails the test).
-const ENGINE_ONLY_MODULES: [(&str, &str); 10] = [
+const ENGINE_ONLY_MODULES: [(&str, &str); 11] = [
     (
         "offset::raw",
         "the f64 construction region (strips and circumscribed fans); the oracle checks a \
@@ -72,6 +72,11 @@ const ENGINE_ONLY_MODULES: [(&str, &str); 10] = [
         "bands::rigid",
         "the f64 fast path for translating obstacles, certified on balls; the oracle decides \
          single velocities exactly for every motion (bands::conflict)",
+    ),
+    (
+        "detect::filter::lanes",
+        "the sweep filter's f64 tests four edges at a time, the same bits as the scalar \
+         filter; the oracle decides edge_detect exactly and needs no filter",
     ),
     (
         "detect::roots",

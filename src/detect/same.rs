@@ -381,20 +381,8 @@ mod tests {
         //! detect_same_2D (§II.H) answers on masks ([`crate::lanes`]) as one edge at a
         //! time.
         use super::*;
-        use crate::lanes::tests::{case, check_cases, Case};
+        use crate::lanes::tests::{case, check_cases, Case, NotSlice};
         use proptest::prelude::*;
-
-        /// Vertices not stored as a slice: detect_same_2D runs its scalar loops.
-        struct NotSlice<'a>(&'a [Vect2]);
-
-        impl VertexSeq for NotSlice<'_> {
-            fn count(&self) -> usize {
-                self.0.len()
-            }
-            fn vertex(&self, i: usize) -> Vect2 {
-                self.0[i]
-            }
-        }
 
         /// detect_same_2D (§II.H) on slices (masks from 16 vertices on) answers as on
         /// vertices that are not a slice (one edge at a time).

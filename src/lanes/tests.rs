@@ -42,6 +42,19 @@ fn point(buff: f64) -> impl Strategy<Value = Vect2> {
 
 /// A case: BUFF, the vertices (3 to 70), the point, its velocity, the common vertex
 /// velocity, T; the point is often the origin, so that the margin ties above are exact.
+/// Vertices not stored as a slice (`as_slice` is `None`): a detector given them runs its
+/// one-edge-at-a-time loops, the reference its masked loops are compared with.
+pub(crate) struct NotSlice<'a>(pub(crate) &'a [Vect2]);
+
+impl crate::polygon::VertexSeq for NotSlice<'_> {
+    fn count(&self) -> usize {
+        self.0.len()
+    }
+    fn vertex(&self, i: usize) -> Vect2 {
+        self.0[i]
+    }
+}
+
 pub(crate) type Case = (f64, Vec<Vect2>, Vect2, Vect2, Vect2, f64);
 
 pub(crate) fn case() -> impl Strategy<Value = Case> {

@@ -557,20 +557,8 @@ mod masks {
     use super::*;
     use crate::detect::filter::lanes::tests::{case, Case};
     use crate::detect::{detect_3d_tri, slab_window_balls};
-    use crate::lanes::tests::check_cases;
+    use crate::lanes::tests::{check_cases, NotSlice};
     use proptest::prelude::*;
-
-    /// Vertices not stored as a slice: detect_diff_2D runs its scalar loop.
-    struct NotSlice<'a>(&'a [Vect2]);
-
-    impl VertexSeq for NotSlice<'_> {
-        fn count(&self) -> usize {
-            self.0.len()
-        }
-        fn vertex(&self, i: usize) -> Vect2 {
-            self.0[i]
-        }
-    }
 
     /// detect_diff_2D on slices (the masked loop) answers as on vertices that are not a
     /// slice (the scalar loop), from 0 over [0, T].

@@ -293,22 +293,22 @@ fn simp_window(
     f: f64,
 ) -> Tri {
     let (one_f, err) = exact::two_sum(1.0, f);
-    let q = simp_quadratics(
-        ww,
-        vv,
-        aa,
-        bb,
-        bb0,
-        Ball {
-            z: one_f,
-            r: err.abs(),
-        },
-        f,
-    );
+    let k1 = Ball {
+        z: one_f,
+        r: err.abs(),
+    };
     let (lo, hi) = (ta.lo().max(0.0), tb.hi());
     if !(lo.is_finite() && hi.is_finite()) {
         return Tri::Unsure;
     }
+    // The inner window: times that lie in [ta, tb] for every exact ta and tb.
+    let (ilo, ihi) = (ta.hi().max(0.0), tb.lo());
+    // Most edges met are met where the point crosses the edge's line: a certain yes
+    // there costs no coefficient radii and no root sets.
+    if crossing_witness(ilo, ihi, ww, vv, aa, bb, k1, f).is_some() {
+        return Tri::Yes;
+    }
+    let q = simp_quadratics(ww, vv, aa, bb, bb0, k1, f);
     let empty = |s: &[Interval; 2]| s[0].is_empty() && s[1].is_empty();
     let outer = |c: &[Ball; 3]| ball_set(c[0], c[1], c[2], lo, hi, true);
     let p_pos = outer(&q[0]);
@@ -319,8 +319,6 @@ fn simp_window(
     if empty(&p_neg) {
         return Tri::No;
     }
-    // The inner window: times that lie in [ta, tb] for every exact ta and tb.
-    let (ilo, ihi) = (ta.hi().max(0.0), tb.lo());
     let yes_at = |t: f64| {
         let t = t.max(ilo).min(ihi);
         // The along conditions first: where the perpendicular ones meet, they are the
@@ -375,6 +373,93 @@ fn simp_window(
     } else {
         Tri::Unsure
     }
+}
+
+/// Paper A §II.I edge_detect_simp at the times the point crosses the edge's line: the
+/// first of them in the inner window [ilo, ihi] at which all four conditions certainly
+/// hold ([`conditions_hold_at`]), a witness of a certain yes.
+///
+/// The candidate times are [`crossing_times`], in plain floats. They need no error
+/// bound: any float time of the inner window is a valid witness, and what decides is
+/// the certified check at that time.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn crossing_witness(
+    ilo: f64,
+    ihi: f64,
+    ww: BallV,
+    vv: BallV,
+    aa: BallV,
+    bb: BallV,
+    k1: Ball,
+    f: f64,
+) -> Option<f64> {
+    let [r1, r2] = crossing_times(ww.v, vv.v, aa.v, bb.v, ilo);
+    let sure = |b: Ball| nonnegative(b) == Tri::Yes;
+    // NaN fails the window test.
+    let holds = |t: f64| ilo <= t && t <= ihi && conditions_hold_at(t, ww, vv, aa, bb, k1, f, sure);
+    if holds(r1) {
+        Some(r1)
+    } else if holds(r2) {
+        Some(r2)
+    } else {
+        None
+    }
+}
+
+/// The times at which w(t) × a(t) = 0 (w = ww + t·vv, a = aa + t·bb: the point on the
+/// edge's line, paper A §II.I), in plain floats, smaller first (NaN where there is
+/// none): the roots of y₂t² + y₁t + y₀ by the cancellation-free pair q / y₂, y₀ / q, or
+/// the vertex −y₁ / 2y₂ where they are complex (the point passes the line's side
+/// without crossing it: where |w × a| is least). Where y₂ = y₁ = 0, w × a is the same
+/// at every time, and the candidate is `t0`. Candidates only: see [`crossing_witness`].
+#[inline(always)]
+fn crossing_times(w: Vect2, v: Vect2, a: Vect2, b: Vect2, t0: f64) -> [f64; 2] {
+    let cross = |x: Vect2, y: Vect2| x.dot(y.perp());
+    let (y2, y1, y0) = (cross(v, b), cross(w, b) + cross(v, a), cross(w, a));
+    if y2 == 0.0 {
+        return [if y1 == 0.0 { t0 } else { -y0 / y1 }, f64::NAN];
+    }
+    let disc = y1 * y1 - 4.0 * y2 * y0;
+    if disc > 0.0 {
+        let q = -0.5 * (y1 + disc.sqrt().copysign(y1));
+        let (p, r) = (q / y2, y0 / q);
+        [p.min(r), p.max(r)]
+    } else {
+        [-0.5 * y1 / y2, f64::NAN]
+    }
+}
+
+/// Paper A §II.I edge_detect_simp's four conditions at one exact time t:
+/// (1 + F)·‖a‖² ∓ w·a ≥ 0 and F·‖a‖² ∓ w × a ≥ 0 (w = ww + t·vv, a = aa + t·bb), each
+/// decided by `sure` on a ball that holds its exact value for every exact input within
+/// ww, vv, aa, bb and k1 ∋ 1 + F: w and a are formed on balls, then ‖a‖², w·a and w × a
+/// ([`BallV::sq`], [`BallV::dot`], [`BallV::cross`]), each step's bound being its ball
+/// operation's. The engine passes [`nonnegative`]`(·) == Yes`; the tests pass a
+/// comparison that ignores the radius, as a canary.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn conditions_hold_at(
+    t: f64,
+    ww: BallV,
+    vv: BallV,
+    aa: BallV,
+    bb: BallV,
+    k1: Ball,
+    f: f64,
+    sure: impl Fn(Ball) -> bool,
+) -> bool {
+    let tt = Ball::exact(t);
+    let (wt, at) = (ww.add(vv.scale(tt)), aa.add(bb.scale(tt)));
+    let (g, x) = (at.sq(), wt.dot(at));
+    let kg = g.mul(k1);
+    // The along conditions first: at a crossing, they are the ones that fail when the
+    // point passes beside the edge.
+    if !(sure(kg.sub(x)) && sure(kg.add(x))) {
+        return false;
+    }
+    let (fg, y) = (g.scale(f), wt.cross(at));
+    sure(fg.sub(y)) && sure(fg.add(y))
 }
 
 /// Paper A §II.I eq (2) edge_detect: does s + t·v meet the moving segment

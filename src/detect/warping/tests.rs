@@ -279,11 +279,11 @@ mod simp_quadratics_contract {
 
     /// One call's arguments.
     #[derive(Clone, Copy, Debug)]
-    struct Args {
+    pub(super) struct Args {
         /// ww, vv, aa, bb.
-        vecs: [BallV; 4],
-        k1: Ball,
-        f: f64,
+        pub(super) vecs: [BallV; 4],
+        pub(super) k1: Ball,
+        pub(super) f: f64,
     }
 
     impl Args {
@@ -320,7 +320,7 @@ mod simp_quadratics_contract {
 
     /// The exact coefficients (t², t, 1) of the four quadratics, in simp_quadratics'
     /// order (F·g + y, F·g − y, k·g + x, k·g − x), at the exact inputs `c` and `k`.
-    fn exact_coefficients(c: &[Q; 8], k: &Q, f: &Q) -> [[Q; 3]; 4] {
+    pub(super) fn exact_coefficients(c: &[Q; 8], k: &Q, f: &Q) -> [[Q; 3]; 4] {
         let g = [dot(c, B, B), dot(c, A, B).twice(), dot(c, A, A)];
         let x = [dot(c, V, B), dot(c, W, B).plus(&dot(c, V, A)), dot(c, W, A)];
         let y = [
@@ -363,7 +363,7 @@ mod simp_quadratics_contract {
 
     /// The gradient of coefficient i of quadratic j at the centres, over the eight
     /// coordinates and k (a guide to the corner that pushes it furthest).
-    fn gradient(args: &Args, j: usize, i: usize) -> [f64; 9] {
+    pub(super) fn gradient(args: &Args, j: usize, i: usize) -> [f64; 9] {
         let c = args.centres();
         let mut g = [0.0; 9];
         let (kappa, sigma, is_cross) = match j {
@@ -394,7 +394,7 @@ mod simp_quadratics_contract {
 
     /// The exact input at a corner: each coordinate (and k) at its centre minus, at,
     /// or plus its radius (sign −1, 0, 1).
-    fn corner(args: &Args, s: &[i8; 9]) -> ([Q; 8], Q) {
+    pub(super) fn corner(args: &Args, s: &[i8; 9]) -> ([Q; 8], Q) {
         let shift = |z: f64, r: f64, s: i8| match s {
             1 => exact(z).plus(&exact(r)),
             -1 => exact(z).minus(&exact(r)),
@@ -465,7 +465,7 @@ mod simp_quadratics_contract {
     }
 
     /// A coordinate: zero one time in four, else ±m·2^e.
-    fn coordinate(e: core::ops::Range<i32>) -> impl Strategy<Value = f64> {
+    pub(super) fn coordinate(e: core::ops::Range<i32>) -> impl Strategy<Value = f64> {
         prop_oneof![
             1 => Just(0.0),
             3 => (any::<bool>(), 1.0..2.0f64, e).prop_map(|(n, m, e)| float(n, m, e)),
@@ -486,7 +486,7 @@ mod simp_quadratics_contract {
     /// F ≥ 0, and k1 either as edge_detect_simp_tri makes it (1 + F and its rounding
     /// error) or any ball of positive centre, whose radius may be as large as half
     /// of it (the contract holds for every ball).
-    fn k_and_f() -> impl Strategy<Value = (Ball, f64)> {
+    pub(super) fn k_and_f() -> impl Strategy<Value = (Ball, f64)> {
         (
             prop_oneof![
                 Just(0.0),
@@ -548,6 +548,202 @@ mod simp_quadratics_contract {
                 prop_assert!(false, "{:?}: {}", args, why);
             }
         }
+    }
+}
+
+/// [`crossing_witness`]'s contract: a time it returns lies in the inner window, and there
+/// each of the four exact quadratics of edge_detect_simp (§II.I) is ≥ 0 for every exact
+/// input within the balls, checked in rationals at the centre and at the corners that
+/// push each quadratic's value down (by the signs of its gradient, as the coefficient
+/// contract above does). The candidates must also find most crossings, or the fast path
+/// would be dead weight; and a check that ignores the radii, on crossings at the edge's
+/// ends and at the F slack's rim, must be caught by the same exact test (the canary).
+mod crossing_witness_contract {
+    use super::simp_quadratics_contract::{
+        coordinate, corner, exact_coefficients, gradient, k_and_f, Args,
+    };
+    use super::*;
+    use crate::detect::tests::exact;
+    use polyguard_oracle::{Arith, ExactField, Q};
+    use proptest::prelude::*;
+    use proptest::strategy::ValueTree;
+    use proptest::test_runner::TestRunner;
+
+    /// The window [0, T] of the crossings generated.
+    const T: f64 = 8.0;
+
+    /// The exact value at t of each of the four quadratics at the corner `s`.
+    fn values_at(args: &Args, s: &[i8; 9], t: &Q) -> [Q; 4] {
+        let (c, k) = corner(args, s);
+        let want = exact_coefficients(&c, &k, &exact(args.f));
+        want.map(|[c2, c1, c0]| c2.times(t).plus(&c1).times(t).plus(&c0))
+    }
+
+    /// Some(reason) when some quadratic is negative at t at the centre or at a corner
+    /// that pushes its value down.
+    fn breach_at(args: &Args, t: f64) -> Option<String> {
+        let tq = exact(t);
+        let mut corners = vec![[0i8; 9], [1; 9], [-1; 9]];
+        for j in 0..4 {
+            // the gradient of the value c₂t² + c₁t + c₀ over the inputs
+            let g: [f64; 9] = {
+                let gs = [0, 1, 2].map(|i| gradient(args, j, i));
+                core::array::from_fn(|m| (gs[0][m] * t + gs[1][m]) * t + gs[2][m])
+            };
+            for zero in [1, -1] {
+                corners.push(core::array::from_fn(|m| {
+                    if g[m] > 0.0 {
+                        -1
+                    } else if g[m] < 0.0 {
+                        1
+                    } else {
+                        zero
+                    }
+                }));
+            }
+        }
+        for s in corners {
+            for (j, val) in values_at(args, &s, &tq).iter().enumerate() {
+                if val.is_neg() {
+                    return Some(format!("quadratic {j} negative at t = {t:e}, corner {s:?}"));
+                }
+            }
+        }
+        None
+    }
+
+    /// A point that crosses the edge's line at about t0, at u along the half-edge from
+    /// its midpoint and e·F off it (both in units of the half-edge), rounded to floats:
+    /// (ww, vv, aa, bb) as exact balls, or with the radius 2^−k·‖·‖∞ (k from `rad`).
+    fn crossing(
+        (a, b, vel): (Vect2, Vect2, Vect2),
+        (t0, u, e, f): (f64, f64, f64, f64),
+        rad: Option<i32>,
+    ) -> [BallV; 4] {
+        let at = a + b.scale(t0);
+        let w = at.scale(u) + at.perp().scale(e * f) - vel.scale(t0);
+        [w, vel, a, b].map(|x| BallV {
+            v: x,
+            r: rad.map_or(0.0, |k| x.x.abs().max(x.y.abs()) * 2f64.powi(-k)),
+        })
+    }
+
+    /// Edges, velocities and the point's velocity: coordinates of 2^−10 … 2^10, the
+    /// edge's velocity zero one time in four (a translating edge: bb = 0).
+    fn motion() -> impl Strategy<Value = (Vect2, Vect2, Vect2)> {
+        let c = || coordinate(-10..10);
+        (
+            (c(), c()).prop_filter("an edge", |&(x, y)| x != 0.0 || y != 0.0),
+            prop_oneof![1 => Just((0.0, 0.0)), 3 => (c(), c())],
+            (c(), c()),
+        )
+            .prop_map(|((ax, ay), (bx, by), (vx, vy))| (v(ax, ay), v(bx, by), v(vx, vy)))
+    }
+
+    /// A point that certainly crosses the edge's inside well within the slack.
+    fn inside_crossing() -> impl Strategy<Value = [BallV; 4]> {
+        (motion(), 0.0..T, -0.9..0.9f64, -0.01..0.01f64)
+            .prop_map(|(m, t0, u, e)| crossing(m, (t0, u, e, 1e-4), None))
+    }
+
+    /// [`crossing_times`]' candidates that [`conditions_hold_at`] accepts with `sure`.
+    fn witnesses(args: &Args, sure: impl Fn(Ball) -> bool + Copy) -> Vec<f64> {
+        let [ww, vv, aa, bb] = args.vecs;
+        crossing_times(ww.v, vv.v, aa.v, bb.v, 0.0)
+            .into_iter()
+            .filter(|&t| {
+                (0.0..=T).contains(&t)
+                    && conditions_hold_at(t, ww, vv, aa, bb, args.k1, args.f, sure)
+            })
+            .collect()
+    }
+
+    /// Draws `n` values of `s` from a fixed seed.
+    fn draw<S: Strategy>(s: S, n: usize) -> Vec<S::Value> {
+        let mut runner = TestRunner::deterministic();
+        (0..n)
+            .map(|_| s.new_tree(&mut runner).expect("a value").current())
+            .collect()
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(256))]
+
+        #[test]
+        fn a_witness_holds_at_every_corner(
+            m in motion(),
+            (t0, u, e) in (0.0..T, -1.2..1.2f64, -3.0..3.0f64),
+            rad in prop_oneof![1 => Just(None), 2 => (20..60i32).prop_map(Some)],
+            (k1, f) in k_and_f(),
+        ) {
+            let vecs = crossing(m, (t0, u, e, f.max(1e-6)), rad);
+            let args = Args { vecs, k1, f };
+            let [ww, vv, aa, bb] = vecs;
+            if let Some(t) = crossing_witness(0.0, T, ww, vv, aa, bb, k1, f) {
+                prop_assert!((0.0..=T).contains(&t), "{t}");
+                if let Some(why) = breach_at(&args, t) {
+                    prop_assert!(false, "{:?}: {}", args, why);
+                }
+            }
+        }
+    }
+
+    /// Nine crossings in ten of an edge's inside, exact inputs and F = 10⁻⁴, get a
+    /// witness: the fast path answers the common hit.
+    #[test]
+    fn most_inside_crossings_are_witnessed() {
+        let cases = draw(inside_crossing(), 2000);
+        let (z, err) = crate::ball::exact::two_sum(1.0, 1e-4);
+        let k1 = Ball { z, r: err.abs() };
+        let found = cases
+            .iter()
+            .filter(|&&[ww, vv, aa, bb]| {
+                crossing_witness(0.0, T, ww, vv, aa, bb, k1, 1e-4).is_some()
+            })
+            .count();
+        assert!(found >= 1800, "{found} of 2000");
+    }
+
+    /// The canary: on crossings at the rim (at an end of the edge, u = ±(1 + F), or at
+    /// the slack's edge, e = ±1, each moved by a few ulps), a check that ignores the
+    /// radii accepts times where an exact quadratic is negative, and the exact test
+    /// above finds them; the engine's check accepts none of those.
+    #[test]
+    fn a_check_without_radii_is_caught() {
+        let f = 1e-4;
+        let (z, err) = crate::ball::exact::two_sum(1.0, f);
+        let k1 = Ball { z, r: err.abs() };
+        let rim = prop_oneof![
+            (any::<bool>(), -4..4i32).prop_map(move |(n, k)| {
+                let u = (1.0 + f) * (1.0 + f64::from(k) * 2f64.powi(-52));
+                (if n { -u } else { u }, 0.0)
+            }),
+            (any::<bool>(), -4..4i32).prop_map(|(n, k)| {
+                let e = 1.0 + f64::from(k) * 2f64.powi(-52);
+                (0.0, if n { -e } else { e })
+            }),
+        ];
+        let cases = draw((motion(), 0.0..T, rim), 3000);
+        let (mut caught, mut engine_breaches) = (0, 0);
+        for (m, t0, (u, e)) in cases {
+            let args = Args {
+                vecs: crossing(m, (t0, u, e, f), None),
+                k1,
+                f,
+            };
+            let loose = |b: Ball| b.z >= 0.0;
+            caught += witnesses(&args, loose)
+                .iter()
+                .filter(|&&t| breach_at(&args, t).is_some())
+                .count();
+            let sure = |b: Ball| nonnegative(b) == Tri::Yes;
+            engine_breaches += witnesses(&args, sure)
+                .iter()
+                .filter(|&&t| breach_at(&args, t).is_some())
+                .count();
+        }
+        assert!(caught > 0, "the canary was not caught");
+        assert_eq!(engine_breaches, 0);
     }
 }
 

@@ -330,10 +330,10 @@ fn simp_window(
     };
     // The perpendicular conditions hold only on the meetings J of their two outer sets,
     // short intervals around the times the point crosses the edge's line. On each J,
-    // either one time (its middle) certainly satisfies all four quadratics — a certain
-    // yes — or an along quadratic is certainly negative all over J ([`below_zero_on`],
-    // on the coefficients' upper ends, which bound the exact quadratic for t ≥ 0): J
-    // holds no solution. Only when some J is settled neither way are the along
+    // either an along quadratic is certainly negative all over J ([`below_zero_on`], on
+    // the coefficients' upper ends, which bound the exact quadratic for t ≥ 0): J holds
+    // no solution; or one time (its middle) certainly satisfies all four quadratics — a
+    // certain yes. Only when some J is settled neither way are the along
     // quadratics' sets formed (below).
     let mut settled = true;
     let below =
@@ -344,12 +344,15 @@ fn simp_window(
             if jl > ju {
                 continue;
             }
+            // The cheap test first: an along quadratic below zero all over J rules out a
+            // certain yes at J's middle, so the order changes no answer.
+            if below(&q[2], jl, ju) || below(&q[3], jl, ju) {
+                continue;
+            }
             if yes_at(0.5 * jl + 0.5 * ju) {
                 return Tri::Yes;
             }
-            if !(below(&q[2], jl, ju) || below(&q[3], jl, ju)) {
-                settled = false;
-            }
+            settled = false;
         }
     }
     if settled {

@@ -171,7 +171,11 @@ pub fn edge_detect_simp(t: f64, ww: Vect2, vv: Vect2, aa: Vect2, bb: Vect2, f: f
 /// serves both signs. Every bound is a sum of products of non-negative floats at most
 /// [`ball::UP_OPS`] roundings deep, raised by [`ball::up`] (which also covers underflow).
 /// When bb is exactly 0 (`bb0`) the t² coefficients are exact zeros.
-#[inline(always)]
+///
+/// The detector forms the two pairs apart ([`SimpTerms::pair`]), the along pair only
+/// when the perpendicular one leaves a chance; this composition of both is what the
+/// contract tests check in exact arithmetic.
+#[cfg_attr(not(test), allow(dead_code))]
 fn simp_quadratics(
     ww: BallV,
     vv: BallV,
@@ -181,32 +185,70 @@ fn simp_quadratics(
     k1: Ball,
     f: f64,
 ) -> [[Ball; 3]; 4] {
-    let n = |x: BallV| x.v.x.abs() + x.v.y.abs();
-    let (nw, nv, na, nb) = (n(ww), n(vv), n(aa), n(bb));
-    let (rw, rv, ra, rb) = (ww.r, vv.r, aa.r, bb.r);
-    let (w, v, a, b) = (ww.v, vv.v, aa.v, bb.v);
-    // Values: ‖a‖² = g2·t² + g1·t + g0, w·a = x2·t² + x1·t + x0, w × a likewise (y).
-    let cross = |x: Vect2, y: Vect2| x.dot(y.perp());
-    let (ab, wb, va) = (a.dot(b), w.dot(b), v.dot(a));
-    let (wbx, vax) = (cross(w, b), cross(v, a));
-    let g = [b.dot(b), 2.0 * ab, a.dot(a)];
-    let x = [v.dot(b), wb + va, w.dot(a)];
-    let y = [cross(v, b), wbx + vax, cross(w, a)];
-    let eg = [
-        pair_err(nb, rb, nb, rb),
-        2.0 * pair_err(na, ra, nb, rb),
-        pair_err(na, ra, na, ra),
-    ];
-    let (e_vb, e_wb, e_va, e_wa) = (
-        pair_err(nv, rv, nb, rb),
-        pair_err(nw, rw, nb, rb),
-        pair_err(nv, rv, na, ra),
-        pair_err(nw, rw, na, ra),
-    );
-    let eh = |h: &[f64; 3]| [e_vb, e_wb + e_va + ball::U * h[1].abs(), e_wa];
-    let (ex, ey) = (eh(&x), eh(&y));
-    // One K·‖a‖² ± h pair: values of both signs and their shared radii.
-    let pair = |k: Ball, h: &[f64; 3], e: &[f64; 3]| {
+    let terms = SimpTerms::new(ww, vv, aa, bb, bb0);
+    let [p_pos, p_neg] = terms.pair(Ball::exact(f), true);
+    let [a_pos, a_neg] = terms.pair(k1, false);
+    [p_pos, p_neg, a_pos, a_neg]
+}
+
+/// What the pairs of [`simp_quadratics`] share: the centres, ‖a‖²'s coefficients g and
+/// their bounds eg, and the four product bounds of h's coefficients.
+#[derive(Clone, Copy)]
+struct SimpTerms {
+    w: Vect2,
+    v: Vect2,
+    a: Vect2,
+    b: Vect2,
+    bb0: bool,
+    g: [f64; 3],
+    eg: [f64; 3],
+    /// [`pair_err`] of v·b, w·b, v·a and w·a (the same for the cross products).
+    e: [f64; 4],
+}
+
+impl SimpTerms {
+    /// Paper A §II.I (edge_detect_simp): the shared terms of [`simp_quadratics`].
+    #[inline(always)]
+    fn new(ww: BallV, vv: BallV, aa: BallV, bb: BallV, bb0: bool) -> SimpTerms {
+        let n = |x: BallV| x.v.x.abs() + x.v.y.abs();
+        let (nw, nv, na, nb) = (n(ww), n(vv), n(aa), n(bb));
+        let (rw, rv, ra, rb) = (ww.r, vv.r, aa.r, bb.r);
+        let (a, b) = (aa.v, bb.v);
+        SimpTerms {
+            w: ww.v,
+            v: vv.v,
+            a,
+            b,
+            bb0,
+            g: [b.dot(b), 2.0 * a.dot(b), a.dot(a)],
+            eg: [
+                pair_err(nb, rb, nb, rb),
+                2.0 * pair_err(na, ra, nb, rb),
+                pair_err(na, ra, na, ra),
+            ],
+            e: [
+                pair_err(nv, rv, nb, rb),
+                pair_err(nw, rw, nb, rb),
+                pair_err(nv, rv, na, ra),
+                pair_err(nw, rw, na, ra),
+            ],
+        }
+    }
+
+    /// Paper A §II.I (edge_detect_simp): one pair of [`simp_quadratics`], k·‖a‖² + h and
+    /// k·‖a‖² − h with h = w × a (`perp`, k = F exactly) or h = w·a (k = k1), by the
+    /// bounds derived there. Formed apart so that the along pair is computed only when
+    /// the perpendicular one leaves a chance.
+    #[inline(always)]
+    fn pair(&self, k: Ball, perp: bool) -> [[Ball; 3]; 2] {
+        let (w, v, a, b) = (self.w, self.v, self.a, self.b);
+        let (g, eg) = (self.g, self.eg);
+        // h = h2·t² + h1·t + h0 of w·a or w × a.
+        let prod = |x: Vect2, y: Vect2| if perp { x.dot(y.perp()) } else { x.dot(y) };
+        let h = [prod(v, b), prod(w, b) + prod(v, a), prod(w, a)];
+        let [e_vb, e_wb, e_va, e_wa] = self.e;
+        let e = [e_vb, e_wb + e_va + ball::U * h[1].abs(), e_wa];
+        // The values of both signs and their shared radii.
         let kg = [k.z * g[0], k.z * g[1], k.z * g[2]];
         let r = |i: usize| {
             ball::up(
@@ -219,7 +261,7 @@ fn simp_quadratics(
         };
         let rs = [r(0), r(1), r(2)];
         let c = |i: usize, sigma: f64| {
-            if bb0 && i == 0 {
+            if self.bb0 && i == 0 {
                 Ball::exact(0.0)
             } else {
                 Ball {
@@ -232,14 +274,11 @@ fn simp_quadratics(
                 }
             }
         };
-        (
+        [
             [c(0, 1.0), c(1, 1.0), c(2, 1.0)],
             [c(0, -1.0), c(1, -1.0), c(2, -1.0)],
-        )
-    };
-    let (p_pos, p_neg) = pair(Ball::exact(f), &y, &ey);
-    let (a_pos, a_neg) = pair(k1, &x, &ex);
-    [p_pos, p_neg, a_pos, a_neg]
+        ]
+    }
 }
 
 /// Paper A §II.I (edge_detect_simp): the bound of [`simp_quadratics`] on |x·y − fl(x̃·ỹ)| (or the cross product) for
@@ -308,17 +347,20 @@ fn simp_window(
     if crossing_witness(ilo, ihi, ww, vv, aa, bb, k1, f).is_some() {
         return Tri::Yes;
     }
-    let q = simp_quadratics(ww, vv, aa, bb, bb0, k1, f);
+    let terms = SimpTerms::new(ww, vv, aa, bb, bb0);
+    let [q0, q1] = terms.pair(Ball::exact(f), true);
     let empty = |s: &[Interval; 2]| s[0].is_empty() && s[1].is_empty();
     let outer = |c: &[Ball; 3]| ball_set(c[0], c[1], c[2], lo, hi, true);
-    let p_pos = outer(&q[0]);
+    let p_pos = outer(&q0);
     if empty(&p_pos) {
         return Tri::No;
     }
-    let p_neg = outer(&q[1]);
+    let p_neg = outer(&q1);
     if empty(&p_neg) {
         return Tri::No;
     }
+    let [q2, q3] = terms.pair(k1, false);
+    let q = [q0, q1, q2, q3];
     let yes_at = |t: f64| {
         let t = t.max(ilo).min(ihi);
         // The along conditions first: where the perpendicular ones meet, they are the

@@ -477,11 +477,16 @@ fn crossing_times(w: Vect2, v: Vect2, a: Vect2, b: Vect2, t0: f64) -> [f64; 2] {
 
 /// Paper A §II.I edge_detect_simp's four conditions at one exact time t:
 /// (1 + F)·‖a‖² ∓ w·a ≥ 0 and F·‖a‖² ∓ w × a ≥ 0 (w = ww + t·vv, a = aa + t·bb), each
-/// decided by `sure` on a ball that holds its exact value for every exact input within
-/// ww, vv, aa, bb and k1 ∋ 1 + F: w and a are formed on balls, then ‖a‖², w·a and w × a
-/// ([`BallV::sq`], [`BallV::dot`], [`BallV::cross`]), each step's bound being its ball
-/// operation's. The engine passes [`nonnegative`]`(·) == Yes`; the tests pass a
-/// comparison that ignores the radius, as a canary.
+/// pair as (1 + F)·‖a‖² − |w·a| ≥ 0 and F·‖a‖² − |w × a| ≥ 0, decided by `sure` on a
+/// ball that holds the exact value for every exact input within ww, vv, aa, bb and
+/// k1 ∋ 1 + F: w and a are formed on balls, then ‖a‖², w·a and w × a ([`BallV::sq`],
+/// [`BallV::dot`], [`BallV::cross`]), each step's bound being its ball operation's; the
+/// exact |x| lies in the ball (|x̃|, r) when x lies in (x̃, r). The one test per pair
+/// answers as the two signs would: k·g − |x̃| is the smaller of k·g ∓ x̃, and the larger
+/// one's radius exceeds it by at most 2u(1 + 16u)·2|x̃| while its centre exceeds it by
+/// 2|x̃| less two roundings (≤ 2u·|centre| each), far more. The engine passes
+/// [`nonnegative`]`(·) == Yes`; the tests pass a comparison that ignores the radius, as
+/// a canary.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
 fn conditions_hold_at(
@@ -494,17 +499,19 @@ fn conditions_hold_at(
     f: f64,
     sure: impl Fn(Ball) -> bool,
 ) -> bool {
+    let abs = |b: Ball| Ball {
+        z: b.z.abs(),
+        r: b.r,
+    };
     let tt = Ball::exact(t);
     let (wt, at) = (ww.add(vv.scale(tt)), aa.add(bb.scale(tt)));
     let (g, x) = (at.sq(), wt.dot(at));
-    let kg = g.mul(k1);
-    // The along conditions first: at a crossing, they are the ones that fail when the
-    // point passes beside the edge.
-    if !(sure(kg.sub(x)) && sure(kg.add(x))) {
+    // The along condition first: at a crossing, it is the one that fails when the point
+    // passes beside the edge.
+    if !sure(g.mul(k1).sub(abs(x))) {
         return false;
     }
-    let (fg, y) = (g.scale(f), wt.cross(at));
-    sure(fg.sub(y)) && sure(fg.add(y))
+    sure(g.scale(f).sub(abs(wt.cross(at))))
 }
 
 /// Paper A §II.I eq (2) edge_detect: does s + t·v meet the moving segment
@@ -766,10 +773,14 @@ fn diff_masked<K: Kernel>(d: DiffMasked<'_>, k: K) -> Tri {
     let mut i = 0;
     while i < n {
         let g = i.min(n.saturating_sub(LANES));
-        let j = if g + LANES >= n {
-            (g + LANES) % n
-        } else {
+        // The vertex after the group: g + LANES ≤ n once n ≥ LANES, so only a polygon of
+        // fewer than LANES vertices needs the remainder (a division).
+        let j = if g + LANES < n {
             g + LANES
+        } else if n >= LANES {
+            0
+        } else {
+            (g + LANES) % n
         };
         let bits = match (
             ps[g..].first_chunk::<LANES>(),

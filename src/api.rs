@@ -20,7 +20,8 @@ use std::vec::Vec;
 
 use crate::ball::Tri;
 use crate::detect::{
-    detect_3d_tri, detect_diff_2d_tri, detect_same_2d_tri, dispatch, statically_shaped, Method,
+    detect_3d_tri, detect_diff_2d_tri, detect_same_2d_tri_shaped, dispatch, statically_shaped,
+    Method,
 };
 use crate::error::CaseError;
 use crate::intervals::{Overflow, Relation, Separation, Span};
@@ -447,9 +448,10 @@ pub(crate) fn decide_pair(
             ),
         ),
         _ => match dispatch(false, vels) {
+            // The dispatch found the velocities equal: detect_same_2D need not look again.
             Method::DetectSame2d => (
                 Method::DetectSame2d,
-                detect_same_2d_tri(t, s, v, p, vels, buff),
+                detect_same_2d_tri_shaped(t, s, v, p, vels, buff, true),
             ),
             _ => (
                 Method::DetectDiff2d,

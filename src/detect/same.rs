@@ -42,19 +42,29 @@ where
     P: VertexSeq + ?Sized,
     V: VertexSeq + ?Sized,
 {
+    detect_same_2d_tri_shaped(t, s, v, p, vels, buff, statically_shaped(vels))
+}
+
+/// Paper A §II.H detect_same_2D, three-valued, with [`statically_shaped`]`(vels)` given
+/// as `stat` by a caller that has it at hand (the dispatch of §II.F checks it first).
+#[inline]
+pub(crate) fn detect_same_2d_tri_shaped<P, V>(
+    t: f64,
+    s: Vect2,
+    v: Vect2,
+    p: &P,
+    vels: &V,
+    buff: f64,
+    stat: bool,
+) -> Tri
+where
+    P: VertexSeq + ?Sized,
+    V: VertexSeq + ?Sized,
+{
     if pr::buff_outside_domain(buff) {
         return Tri::Unsure;
     }
-    same_window(
-        Ball::exact(0.0),
-        Ball::exact(t),
-        s,
-        v,
-        p,
-        vels,
-        buff,
-        statically_shaped(vels),
-    )
+    same_window(Ball::exact(0.0), Ball::exact(t), s, v, p, vels, buff, stat)
 }
 
 /// detect_same_2D over the time window [ta, tb] of the original motion, which is what

@@ -351,12 +351,25 @@ fn simp_window(
     let [q0, q1] = terms.pair(Ball::exact(f), true);
     let empty = |s: &[Interval; 2]| s[0].is_empty() && s[1].is_empty();
     let outer = |c: &[Ball; 3]| ball_set(c[0], c[1], c[2], lo, hi, true);
-    let p_pos = outer(&q0);
-    if empty(&p_pos) {
-        return Tri::No;
-    }
-    let p_neg = outer(&q1);
-    if empty(&p_neg) {
+    // Either set empty is a certain no. Where w × a is positive at the window's middle
+    // (in floats: a guess, which decides nothing) F·‖a‖² − w × a is the likelier to be
+    // negative all along, so its set is formed first; the sets are the same either way.
+    let mid = 0.5 * lo + 0.5 * hi;
+    let y_mid = ((q0[0].z - q1[0].z) * mid + (q0[1].z - q1[1].z)) * mid + (q0[2].z - q1[2].z);
+    let (p_pos, p_neg) = if y_mid > 0.0 {
+        let p_neg = outer(&q1);
+        if empty(&p_neg) {
+            return Tri::No;
+        }
+        (outer(&q0), p_neg)
+    } else {
+        let p_pos = outer(&q0);
+        if empty(&p_pos) {
+            return Tri::No;
+        }
+        (p_pos, outer(&q1))
+    };
+    if empty(&p_pos) || empty(&p_neg) {
         return Tri::No;
     }
     let [q2, q3] = terms.pair(k1, false);

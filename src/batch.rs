@@ -282,13 +282,19 @@ fn run_chunk(ctx: &Ctx<'_>, start: usize, end: usize, scratch: &mut Vec<u32>) ->
     for i in start..end {
         scratch.clear();
         let b = &ctx.point_boxes[i];
-        match ctx.index {
+        let in_order = match ctx.index {
             Index::Grid(g) => g.candidates(b, ctx.prepared, scratch),
-            Index::All => scratch.extend(
-                (0..ctx.prepared.len() as u32).filter(|&j| b.meets(&ctx.prepared[j as usize].bx)),
-            ),
+            Index::All => {
+                scratch.extend(
+                    (0..ctx.prepared.len() as u32)
+                        .filter(|&j| b.meets(&ctx.prepared[j as usize].bx)),
+                );
+                true
+            }
+        };
+        if !in_order {
+            scratch.sort_unstable();
         }
-        scratch.sort_unstable();
         out.candidates += scratch.len() as u64;
         let p = &ctx.points[i];
         for &j in scratch.iter() {

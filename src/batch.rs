@@ -1,7 +1,7 @@
 //! Batch detection: N moving points against M moving polygons in one call (extends paper
 //! A §II.H, §II.I and §III from one pair to many).
 //!
-//! Two phases:
+//! Three phases:
 //!
 //! 1. **Broad phase** (not in the paper): each point gets the box swept by its positions
 //!    over [0, T], each polygon the box swept by its vertices, grown by the polygon's
@@ -13,7 +13,12 @@
 //!    a pair paper A (or the engine) detects. Pairs are found through a uniform grid over
 //!    the polygons' boxes (`Broad::Grid`); `Broad::AllPairs` tests every pair's boxes,
 //!    the reference the grid is measured and tested against.
-//! 2. **Narrow phase**: the certified paper functions on the slices, as
+//! 2. **Mid phase** (not in the paper): a pair is dropped when the polygon's grown box lies
+//!    certainly on one side of the point's path line (the line through s along v), all
+//!    four corners' sides decided with a stated rounding bound: the point is on that line
+//!    at every t, so it never comes within the reach of the polygon, and paper A
+//!    certainly answers "no" (the private `mid` module says why step by step).
+//! 3. **Narrow phase**: the certified paper functions on the slices, as
 //!    [`api::decide`](crate::api::decide) calls them ([`detect_same_2d_tri`](crate::detect::detect_same_2d_tri),
 //!    [`detect_diff_2d_tri`](crate::detect::detect_diff_2d_tri), [`detect_3d_tri`](crate::detect::detect_3d_tri)), with no allocation per pair.
 //!
@@ -49,8 +54,10 @@ use crate::detect::Method;
 use crate::error::CaseError;
 
 mod broad;
+mod mid;
 
 use broad::{point_box, Aabb, Grid, Index, Prepared};
+use mid::PathSide;
 
 /// One detected pair: point `point` (its index in the points given) may enter polygon
 /// `polygon` (its index) within [0, T] (paper A §II.H, §II.I, §III).
@@ -87,6 +94,10 @@ pub struct Options {
     /// broad phase unsound, on purpose, for the tests that must see it drop pairs (the
     /// canary).
     pub reach_offset: f64,
+    /// Added to every polygon's reach in the mid phase only (the broad phase keeps
+    /// `reach_offset`'s boxes). 0 in any real use: a negative value makes the mid phase
+    /// unsound, on purpose, for the tests that must see it drop pairs (its canary).
+    pub mid_offset: f64,
 }
 
 impl Default for Options {
@@ -95,6 +106,7 @@ impl Default for Options {
             broad: Broad::Grid,
             parallel: true,
             reach_offset: 0.0,
+            mid_offset: 0.0,
         }
     }
 }
@@ -104,8 +116,10 @@ impl Default for Options {
 pub struct Batch {
     /// The hits, sorted by (point, polygon).
     pub hits: Vec<Hit>,
-    /// Pairs the broad phase kept, each answered by a paper function.
+    /// Pairs the broad phase kept.
     pub candidates: u64,
+    /// Of those, the pairs the mid phase left to a paper function.
+    pub decided: u64,
     /// Polygons that meet every point's box in the plane (an edge that may shrink to a
     /// point within [0, T]: paper A's edge_detect accepts anywhere then, §II.I).
     pub unbounded_polygons: usize,
@@ -162,6 +176,7 @@ pub fn detect_batch_with(
         return Ok(Batch {
             hits: Vec::new(),
             candidates: 0,
+            decided: 0,
             unbounded_polygons: 0,
         });
     }
@@ -188,7 +203,7 @@ pub fn detect_batch_with(
     let t = lookahead;
     let prepared: Vec<Prepared> = polygons
         .iter()
-        .map(|q| Prepared::new(t, q, params, options.reach_offset))
+        .map(|q| Prepared::new(t, q, params, options.reach_offset, options.mid_offset))
         .collect();
     let point_boxes: Vec<Aabb> = points.iter().map(|p| point_box(t, p)).collect();
     let index = match options.broad {
@@ -206,14 +221,16 @@ pub fn detect_batch_with(
     };
     let chunks = chunk_results(&ctx, options.parallel);
     let mut hits = Vec::with_capacity(chunks.iter().map(|c| c.hits.len()).sum());
-    let mut candidates = 0;
+    let (mut candidates, mut decided) = (0, 0);
     for c in chunks {
         hits.extend_from_slice(&c.hits);
         candidates += c.candidates;
+        decided += c.decided;
     }
     Ok(Batch {
         hits,
         candidates,
+        decided,
         unbounded_polygons: prepared.iter().filter(|p| p.unbounded).count(),
     })
 }
@@ -226,6 +243,7 @@ const CHUNK: usize = 256;
 struct ChunkResult {
     hits: Vec<Hit>,
     candidates: u64,
+    decided: u64,
 }
 
 /// Everything a chunk reads.
@@ -272,12 +290,13 @@ fn chunk_results(ctx: &Ctx<'_>, _parallel: bool) -> Vec<ChunkResult> {
         .collect()
 }
 
-/// Points `start..end`: each one's candidates (into `scratch`, reused), sorted, then
-/// answered by the paper function for the pair (paper A §II.F's dispatch).
+/// Points `start..end`: each one's candidates (into `scratch`, reused), sorted, those the
+/// mid phase keeps answered by the paper function for the pair (paper A §II.F's dispatch).
 fn run_chunk(ctx: &Ctx<'_>, start: usize, end: usize, scratch: &mut Vec<u32>) -> ChunkResult {
     let mut out = ChunkResult {
         hits: Vec::new(),
         candidates: 0,
+        decided: 0,
     };
     for i in start..end {
         scratch.clear();
@@ -297,8 +316,13 @@ fn run_chunk(ctx: &Ctx<'_>, start: usize, end: usize, scratch: &mut Vec<u32>) ->
         }
         out.candidates += scratch.len() as u64;
         let p = &ctx.points[i];
+        let line = PathSide::new(p);
         for &j in scratch.iter() {
             let j = j as usize;
+            if line.apart(&ctx.prepared[j]) {
+                continue;
+            }
+            out.decided += 1;
             let (method, tri) = decide_pair(ctx.t, p, &ctx.polygons[j], ctx.params);
             let kind = match tri {
                 Tri::No => continue,

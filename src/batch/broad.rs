@@ -112,6 +112,9 @@ fn reach(t: f64, q: &MovingPolygon, params: &Params) -> f64 {
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Prepared {
     pub(super) bx: Aabb,
+    /// The grown box in the plane for the mid phase, [lo x, lo y, hi x, hi y]: `bx`'s
+    /// (but for the mid phase's canary).
+    pub(super) mid: [f64; 4],
     pub(super) unbounded: bool,
 }
 
@@ -119,8 +122,15 @@ impl Prepared {
     /// Broad phase (extends paper A §II, §III): the box swept by the vertices over
     /// [0, T] (each vertex moves on a segment, the polygon at every t lies in the convex
     /// hull of its vertices), grown by [`reach`] in x and y (plus `offset`, 0 but for the
-    /// canary), rounded outward; in z the slab's swept range, reach 0.
-    pub(super) fn new(t: f64, q: &MovingPolygon, params: &Params, offset: f64) -> Prepared {
+    /// canary), rounded outward; in z the slab's swept range, reach 0. The mid phase's
+    /// box is the same in the plane, grown by `mid_offset` more (0 but for its canary).
+    pub(super) fn new(
+        t: f64,
+        q: &MovingPolygon,
+        params: &Params,
+        offset: f64,
+        mid_offset: f64,
+    ) -> Prepared {
         let mut lo = [f64::INFINITY; 3];
         let mut hi = [f64::NEG_INFINITY; 3];
         for (p, v) in q.vertices().iter().zip(q.velocities()) {
@@ -150,8 +160,16 @@ impl Prepared {
                 hi[2] = f64::INFINITY;
             }
         }
+        // mid_offset is 0 but for the canary: the same floats then (x − 0 = x)
+        let mid = [
+            lo[0] - mid_offset,
+            lo[1] - mid_offset,
+            hi[0] + mid_offset,
+            hi[1] + mid_offset,
+        ];
         Prepared {
             bx: Aabb { lo, hi },
+            mid,
             unbounded: unbounded
                 || !(lo[0].is_finite() && lo[1].is_finite())
                 || !(hi[0].is_finite() && hi[1].is_finite()),
@@ -419,7 +437,7 @@ mod tests {
             .collect();
         let prepared: Vec<_> = polys
             .iter()
-            .map(|q| Prepared::new(1.0, q, &params, 0.0))
+            .map(|q| Prepared::new(1.0, q, &params, 0.0, 0.0))
             .collect();
         let g = Grid::new(&prepared);
         assert!(g.nx > 1 && g.ny > 1);

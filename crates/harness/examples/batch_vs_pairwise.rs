@@ -82,7 +82,7 @@ fn main() -> ExitCode {
         let same = pairwise == batch.hits;
         failed |= !same;
         println!(
-            "{} {n} x {m} seed {seed}: {} hits ({} conservative), {} candidates; batch {:.1} ms, \
+            "{} {n} x {m} seed {seed}: {} hits ({} conservative), {} candidates, {} decided; batch {:.1} ms, \
              pairwise {:.0} ms; {}",
             name,
             batch.hits.len(),
@@ -92,6 +92,7 @@ fn main() -> ExitCode {
                 .filter(|h| h.kind == Kind::Conservative)
                 .count(),
             batch.candidates,
+            batch.decided,
             batch_time.as_secs_f64() * 1e3,
             start.elapsed().as_secs_f64() * 1e3,
             if same { "the same" } else { "DIFFERENT" }

@@ -57,7 +57,7 @@ mod broad;
 mod mid;
 
 use broad::{point_box, Aabb, Grid, Index, Prepared};
-use mid::PathSide;
+use mid::{Columns, PathSide};
 
 /// One detected pair: point `point` (its index in the points given) may enter polygon
 /// `polygon` (its index) within [0, T] (paper A §II.H, §II.I, §III).
@@ -206,6 +206,7 @@ pub fn detect_batch_with(
         .map(|q| Prepared::new(t, q, params, options.reach_offset, options.mid_offset))
         .collect();
     let point_boxes: Vec<Aabb> = points.iter().map(|p| point_box(t, p)).collect();
+    let columns = Columns::new(&prepared);
     let index = match options.broad {
         Broad::Grid => Index::Grid(Grid::new(&prepared)),
         Broad::AllPairs => Index::All,
@@ -218,6 +219,7 @@ pub fn detect_batch_with(
         prepared: &prepared,
         point_boxes: &point_boxes,
         index: &index,
+        columns: &columns,
     };
     let chunks = chunk_results(&ctx, options.parallel);
     let mut hits = Vec::with_capacity(chunks.iter().map(|c| c.hits.len()).sum());
@@ -255,6 +257,7 @@ struct Ctx<'a> {
     prepared: &'a [Prepared],
     point_boxes: &'a [Aabb],
     index: &'a Index,
+    columns: &'a Columns,
 }
 
 /// The chunks' answers, in order: across rayon's threads with `parallel`, else here.
@@ -301,28 +304,30 @@ fn run_chunk(ctx: &Ctx<'_>, start: usize, end: usize, scratch: &mut Vec<u32>) ->
     for i in start..end {
         scratch.clear();
         let b = &ctx.point_boxes[i];
-        let in_order = match ctx.index {
-            Index::Grid(g) => g.candidates(b, ctx.prepared, scratch),
-            Index::All => {
-                scratch.extend(
-                    (0..ctx.prepared.len() as u32)
-                        .filter(|&j| b.meets(&ctx.prepared[j as usize].bx)),
-                );
-                true
-            }
-        };
-        if !in_order {
-            scratch.sort_unstable();
-        }
-        out.candidates += scratch.len() as u64;
         let p = &ctx.points[i];
         let line = PathSide::new(p);
+        let prepared = ctx.prepared;
+        match ctx.index {
+            Index::Grid(g) if g.spans_most(b, prepared.len()) => {
+                out.candidates += ctx.columns.scan(b, &line, scratch);
+            }
+            Index::Grid(g) => {
+                g.candidates(b, prepared, scratch);
+                scratch.sort_unstable();
+                out.candidates += scratch.len() as u64;
+                scratch.retain(|&j| !line.apart(&prepared[j as usize]));
+            }
+            Index::All => {
+                scratch.extend(
+                    (0..prepared.len() as u32).filter(|&j| b.meets(&prepared[j as usize].bx)),
+                );
+                out.candidates += scratch.len() as u64;
+                scratch.retain(|&j| !line.apart(&prepared[j as usize]));
+            }
+        }
+        out.decided += scratch.len() as u64;
         for &j in scratch.iter() {
             let j = j as usize;
-            if line.apart(&ctx.prepared[j]) {
-                continue;
-            }
-            out.decided += 1;
             let (method, tri) = decide_pair(ctx.t, p, &ctx.polygons[j], ctx.params);
             let kind = match tri {
                 Tri::No => continue,

@@ -160,6 +160,7 @@ fn batch_is_the_pairwise_engine_on_seeded_workloads() {
             let other = detect_batch_with(T, &w.points, &w.polygons, &p, &opts).unwrap();
             assert_eq!(other.hits, got, "{opts:?}");
             assert_eq!(other.candidates, b.candidates, "{opts:?}");
+            assert_eq!(other.decided, b.decided, "{opts:?}");
         }
     }
 }
@@ -208,6 +209,18 @@ fn batch_is_the_pairwise_engine_on_the_dense_workload() {
     assert_eq!(b.candidates, 200 * 150);
     assert!(b.decided < b.candidates / 3, "{} decided", b.decided);
     assert!(want.len() > 200 * 150 / 10, "{} hits", want.len());
+    // the scan of every polygon's columns (each point's box spans the grid) and the
+    // reference loop over every pair's boxes keep and decide the same pairs
+    let all = Options {
+        broad: Broad::AllPairs,
+        parallel: false,
+        ..Options::default()
+    };
+    let other = detect_batch_with(T, &w.points, &w.polygons, &p, &all).unwrap();
+    assert_eq!(
+        (other.hits, other.candidates, other.decided),
+        (b.hits, b.candidates, b.decided)
+    );
 }
 
 /// Unit squares in three rows (still, or drifting along x) and axis-aligned paths along

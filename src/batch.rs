@@ -237,9 +237,22 @@ pub fn detect_batch_with(
     })
 }
 
-/// Points per chunk of work: large enough that a chunk's buffers and rayon's hand-off
-/// cost little per point, small enough to balance two to dozens of threads.
+/// Points per chunk of work at most: large enough that a chunk's buffers and rayon's
+/// hand-off cost little per point.
 const CHUNK: usize = 256;
+
+/// Points per chunk of work at least (see [`chunk_len`]).
+#[cfg(feature = "parallel")]
+const MIN_CHUNK: usize = 16;
+
+/// Points per chunk for `n` points on `threads` threads: [`CHUNK`], or fewer so that
+/// each thread gets about eight chunks (a thread that draws slow points is not left
+/// alone at the end: 1000 points on two threads make 16 chunks, not 4), but no fewer
+/// than [`MIN_CHUNK`].
+#[cfg(feature = "parallel")]
+fn chunk_len(n: usize, threads: usize) -> usize {
+    (n / (8 * threads.max(1))).clamp(MIN_CHUNK, CHUNK)
+}
 
 /// One chunk's answer.
 struct ChunkResult {
@@ -265,19 +278,20 @@ struct Ctx<'a> {
 fn chunk_results(ctx: &Ctx<'_>, parallel: bool) -> Vec<ChunkResult> {
     use rayon::prelude::*;
     let n = ctx.points.len();
-    let starts: Vec<usize> = (0..n).step_by(CHUNK).collect();
     if parallel {
+        let len = chunk_len(n, rayon::current_num_threads());
+        let starts: Vec<usize> = (0..n).step_by(len).collect();
         starts
             .par_iter()
             .map_init(Vec::new, |scratch, &s| {
-                run_chunk(ctx, s, (s + CHUNK).min(n), scratch)
+                run_chunk(ctx, s, (s + len).min(n), scratch)
             })
             .collect()
     } else {
         let mut scratch = Vec::new();
-        starts
-            .iter()
-            .map(|&s| run_chunk(ctx, s, (s + CHUNK).min(n), &mut scratch))
+        (0..n)
+            .step_by(CHUNK)
+            .map(|s| run_chunk(ctx, s, (s + CHUNK).min(n), &mut scratch))
             .collect()
     }
 }
@@ -358,6 +372,16 @@ mod tests {
             Vect2::new(x, y + 1.0),
         ];
         MovingPolygon::new(v, Some(vec![vel; 4])).unwrap()
+    }
+
+    /// Chunks: about eight per thread, between MIN_CHUNK and CHUNK points.
+    #[cfg(feature = "parallel")]
+    #[test]
+    fn chunks_give_every_thread_several() {
+        assert_eq!(chunk_len(1000, 2), 62);
+        assert_eq!(chunk_len(100_000, 2), CHUNK);
+        assert_eq!(chunk_len(100, 8), MIN_CHUNK);
+        assert_eq!(chunk_len(0, 0), MIN_CHUNK);
     }
 
     #[test]

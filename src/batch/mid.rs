@@ -42,12 +42,13 @@ impl PathSide {
     ///
     /// q = fl(c − s) is within 2u·|q| of c − s per coordinate (one rounding; exact when
     /// it underflows); l = fl(v_x·q_y) and r = fl(v_y·q_x) are each within
-    /// 3u(1 + 2u)·|l| (|r|) of v_x·(c_y − s_y) (v_y·(c_x − s_x)), plus 2⁻¹⁰⁷⁵ when the
-    /// product underflows; their difference is rounded once more (u·(|l| + |r|)). The
-    /// exact cross product is then within 4u(1 + 2u)·(|l| + |r|) + 2⁻¹⁰⁷³ of
-    /// fl(l − r). The bound K·(|l| + |r|) + 2⁻¹⁰²² (the smallest normal float, so that
+    /// 3u(1 + 2u)·|l| (|r|) of v_x·(c_y − s_y) (v_y·(c_x − s_x)), plus 2⁻¹⁰⁷⁴ when the
+    /// product underflows (its 2⁻¹⁰⁷⁵ and the rest); their difference is rounded once
+    /// more (u·(|l| + |r|); exact when it underflows). The exact cross product is then
+    /// within 4u(1 + 2u)·(|l| + |r|) + 2⁻¹⁰⁷² of fl(l − r). The bound K·(|l| + |r|) + 2⁻¹⁰²² (the smallest normal float, so that
     /// no operation here meets a subnormal, which many processors slow down for) covers
-    /// that with its own three roundings: K = 6u(1 + 16u) and (1 − u)³ ≥ 1 − 3u. A side
+    /// that with its own three roundings (a product that underflows there errs by
+    /// 2⁻¹⁰⁷⁵, far below the floor): K·(1 − u)³ > 6u > 4u(1 + 2u). A side
     /// is reported when the computed cross product clears the bound: the exact one then
     /// has its sign. A NaN or infinite cross product never clears it (the comparison is
     /// false, or the bound infinite).
@@ -125,9 +126,9 @@ impl Columns {
     /// returns how many boxes meet `b` (the broad phase's count).
     ///
     /// An unbounded polygon needs no test of its own here: its grown box has an infinite
-    /// end in the plane, so two of its corners have an infinite coordinate, whose cross
-    /// product with v is infinite or NaN and never clears [`PathSide::side`]'s bound
-    /// (an infinite or NaN bound, or a NaN comparison): not both sides certain, kept.
+    /// or NaN end in the plane, so two of its corners have such a coordinate, whose
+    /// cross product with v is infinite or NaN and never clears [`PathSide::side`]'s
+    /// bound (an infinite or NaN bound, or a NaN comparison): those sides are 0, kept.
     pub(super) fn scan(&self, b: &Aabb, line: &PathSide, out: &mut Vec<u32>) -> u64 {
         let [lx, ly, lz, hx, hy, hz] = &self.bx;
         let [mlx, mly, mhx, mhy] = &self.mid;
@@ -139,13 +140,13 @@ impl Columns {
             let end = (base + 64).min(m);
             let (mut keep, mut meet) = (0u64, 0u64);
             for (bit, j) in (base..end).enumerate() {
-                // Aabb::meets, with & for || (the same comparisons, no branch)
-                let meets = !(b.hi[0] < lx[j])
-                    & !(hx[j] < b.lo[0])
-                    & !(b.hi[1] < ly[j])
-                    & !(hy[j] < b.lo[1])
-                    & !(b.hi[2] < lz[j])
-                    & !(hz[j] < b.lo[2]);
+                // Aabb::meets, with | for || (the same comparisons, no branch)
+                let meets = !((b.hi[0] < lx[j])
+                    | (hx[j] < b.lo[0])
+                    | (b.hi[1] < ly[j])
+                    | (hy[j] < b.lo[1])
+                    | (b.hi[2] < lz[j])
+                    | (hz[j] < b.lo[2]));
                 let apart = line.apart_box(mlx[j], mly[j], mhx[j], mhy[j]);
                 meet |= (meets as u64) << bit;
                 keep |= ((meets & !apart) as u64) << bit;
@@ -158,5 +159,74 @@ impl Columns {
             base = end;
         }
         met
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::api::{MovingPolygon, Params};
+
+    fn line(s: (f64, f64), v: (f64, f64)) -> PathSide {
+        let p = MovingPoint::new_2d(Vect2::new(s.0, s.1), Vect2::new(v.0, v.1)).unwrap();
+        PathSide::new(&p)
+    }
+
+    /// The side of a corner: certain only beyond the bound, 0 on the line, on a
+    /// difference lost to rounding, for a standing point and for infinite coordinates.
+    #[test]
+    fn a_side_is_reported_only_when_certain() {
+        let east = line((0.0, 0.0), (1.0, 0.0));
+        assert_eq!(east.side(Vect2::new(5.0, 1e-300)), 1);
+        assert_eq!(east.side(Vect2::new(5.0, -1e-300)), -1);
+        assert_eq!(east.side(Vect2::new(5.0, 0.0)), 0);
+        // below the floor 2⁻¹⁰²²: not certain, though the exact side is clear
+        assert_eq!(east.side(Vect2::new(5.0, 1e-310)), 0);
+        // a cross product that cancels: v × q = −ε·10¹⁶ ≈ −2.2, below the bound
+        // 6u·2·10¹⁶ ≈ 13 (r = fl((1 + ε)·10¹⁶) is 10¹⁶ + 2): not certain
+        let diag = line((0.0, 0.0), (1.0, 1.0 + f64::EPSILON));
+        assert_eq!(diag.side(Vect2::new(1e16, 1e16)), 0);
+        assert_eq!(diag.side(Vect2::new(1.0, 1.0)), 0);
+        assert_eq!(diag.side(Vect2::new(1.0, 2.0)), 1);
+        assert_eq!(line((0.0, 0.0), (0.0, 0.0)).side(Vect2::new(1.0, 2.0)), 0);
+        assert_eq!(east.side(Vect2::new(f64::INFINITY, 1.0)), 0);
+        assert_eq!(east.side(Vect2::new(1.0, f64::INFINITY)), 0);
+        assert_eq!(east.side(Vect2::new(f64::NAN, 1.0)), 0);
+    }
+
+    /// A box wholly above or below the path line is apart; one the line touches (a grown
+    /// edge at exactly the line) or crosses is not, nor is an unbounded polygon's.
+    #[test]
+    fn a_box_is_apart_only_wholly_on_one_side() {
+        let params = Params::new(0.5).unwrap();
+        let square = |y: f64| {
+            let v = vec![
+                Vect2::new(0.0, y),
+                Vect2::new(1.0, y),
+                Vect2::new(1.0, y + 1.0),
+                Vect2::new(0.0, y + 1.0),
+            ];
+            MovingPolygon::new(v, None).unwrap()
+        };
+        let prep = |q: &MovingPolygon| Prepared::new(1.0, q, &params, 0.0, 0.0);
+        let east = line((-10.0, 0.0), (1.0, 0.0));
+        // grown by BUFF = 0.5 (rounded outward): from y − 0.5 to y + 1.5
+        assert!(east.apart(&prep(&square(1.0))));
+        assert!(east.apart(&prep(&square(-3.0))));
+        assert!(!east.apart(&prep(&square(0.25))));
+        assert!(!east.apart(&prep(&square(-1.5))));
+        // the line at the grown box's lower edge, y − 0.5 = 0 before the outward rounding
+        assert!(!east.apart(&prep(&square(0.5))));
+        // a collapsing edge: unbounded, never apart
+        let v = vec![
+            Vect2::new(0.0, 5.0),
+            Vect2::new(1.0, 5.0),
+            Vect2::new(1.0, 6.0),
+            Vect2::new(0.0, 6.0),
+        ];
+        let vels = vec![Vect2::ZERO, Vect2::ZERO, Vect2::ZERO, Vect2::new(1.0, 0.0)];
+        let collapsing = MovingPolygon::new(v, Some(vels)).unwrap();
+        let p = prep(&collapsing);
+        assert!(p.unbounded && !east.apart(&p));
     }
 }

@@ -10,12 +10,17 @@
 //! - `all_pairs_parallel`: every pair's boxes tested instead of the grid (10⁷ box tests),
 //!   the broad phase the grid replaces.
 //!
-//! `cargo bench --bench batch --features parallel` measures all three in one run.
+//!
+//! Group `batch_dense`: the dense workload of crates/python/bench/bench_batch.py
+//! (`polyguard_harness::batch::dense_workload`, 10³ points × 10³ polygons, seed 1: every
+//! pair a candidate, 140,203 hits), `dense_parallel` and `dense_sequential`.
+//!
+//! `cargo bench --bench batch --features parallel` measures all five in one run.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use polyguard::api::Params;
 use polyguard::batch::{detect_batch_with, Broad, Options};
-use polyguard_harness::batch::{batch_workload, Mix, BUFF, FAC, T};
+use polyguard_harness::batch::{batch_workload, dense_workload, Mix, BUFF, FAC, T};
 
 fn batch(c: &mut Criterion) {
     let w = batch_workload(10_000, 1_000, 1, Mix::BENCH);
@@ -29,6 +34,22 @@ fn batch(c: &mut Criterion) {
     ] {
         let opts = Options {
             broad,
+            parallel,
+            ..Options::default()
+        };
+        g.bench_function(name, |b| {
+            b.iter(|| {
+                detect_batch_with(T, black_box(&w.points), &w.polygons, &params, &opts)
+                    .map(|r| r.hits.len())
+            })
+        });
+    }
+    g.finish();
+    let w = dense_workload(1_000, 1_000, 1);
+    let mut g = c.benchmark_group("batch_dense");
+    g.sample_size(10);
+    for (name, parallel) in [("dense_parallel", true), ("dense_sequential", false)] {
+        let opts = Options {
             parallel,
             ..Options::default()
         };

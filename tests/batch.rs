@@ -7,8 +7,8 @@
 
 use polyguard::api::{decide, Case, Kind, MovingPoint, MovingPolygon, Params};
 use polyguard::batch::{detect_batch, detect_batch_with, Broad, Hit, Options};
-use polyguard::Tri;
-use polyguard_harness::batch::{batch_workload, Mix, BUFF, T};
+use polyguard::{Tri, Vect2};
+use polyguard_harness::batch::{batch_workload, dense_workload, Mix, BUFF, T};
 use polyguard_harness::case::RawCase;
 use polyguard_harness::classify::Exact;
 use polyguard_oracle::paper_detect;
@@ -160,6 +160,7 @@ fn batch_is_the_pairwise_engine_on_seeded_workloads() {
             let other = detect_batch_with(T, &w.points, &w.polygons, &p, &opts).unwrap();
             assert_eq!(other.hits, got, "{opts:?}");
             assert_eq!(other.candidates, b.candidates, "{opts:?}");
+            assert_eq!(other.decided, b.decided, "{opts:?}");
         }
     }
 }
@@ -193,6 +194,117 @@ fn a_broad_phase_with_boxes_shrunk_by_buff_is_caught() {
             "seed {seed}: shrinking by BUFF/100 went unseen"
         );
     }
+}
+
+/// The dense workload (every pair a candidate; paths across the whole square of polygons,
+/// many of them grazing a polygon): the batch is the pairwise engine, pair for pair, and
+/// the mid phase drops most pairs but leaves every hit.
+#[test]
+fn batch_is_the_pairwise_engine_on_the_dense_workload() {
+    let w = dense_workload(200, 150, 1);
+    let p = params(1e-4);
+    let want = pairwise(&w.points, &w.polygons, &p);
+    let b = detect_batch_with(T, &w.points, &w.polygons, &p, &Options::default()).unwrap();
+    assert_eq!(b.hits, want, "{}", first_difference(&b.hits, &want));
+    assert_eq!(b.candidates, 200 * 150);
+    assert!(b.decided < b.candidates / 3, "{} decided", b.decided);
+    assert!(want.len() > 200 * 150 / 10, "{} hits", want.len());
+    // the scan of every polygon's columns (each point's box spans the grid) and the
+    // reference loop over every pair's boxes keep and decide the same pairs
+    let all = Options {
+        broad: Broad::AllPairs,
+        parallel: false,
+        ..Options::default()
+    };
+    let other = detect_batch_with(T, &w.points, &w.polygons, &p, &all).unwrap();
+    assert_eq!(
+        (other.hits, other.candidates, other.decided),
+        (b.hits, b.candidates, b.decided)
+    );
+}
+
+/// Unit squares in three rows (still, or drifting along x) and axis-aligned paths along
+/// their edges at 0, ½, 1, 1 + 2⁻²⁰ and 2 times BUFF outside them: the paths at BUFF
+/// graze the squares (paper A says yes, at distance BUFF) and run along their grown
+/// boxes' edges, the tightest pairs for the mid phase's side test.
+fn grazing() -> (Vec<MovingPoint>, Vec<MovingPolygon>) {
+    let square = |k: usize| {
+        let (x, y) = (3.0 * k as f64, 3.0 * (k % 3) as f64);
+        let v = vec![
+            Vect2::new(x, y),
+            Vect2::new(x + 1.0, y),
+            Vect2::new(x + 1.0, y + 1.0),
+            Vect2::new(x, y + 1.0),
+        ];
+        let drift = Vect2::new(if k % 2 == 0 { 0.0 } else { 0.3 }, 0.0);
+        MovingPolygon::new(v, Some(vec![drift; 4])).expect("a square")
+    };
+    let polygons: Vec<_> = (0..12).map(square).collect();
+    let mut points = Vec::new();
+    for f in [0.0, 0.5, 1.0, 1.0 + 1.0 / 1048576.0, 2.0] {
+        let d = f * BUFF;
+        for r in 0..3 {
+            let y = 3.0 * r as f64;
+            for y in [y - d, y + 1.0 + d] {
+                let p = MovingPoint::new_2d(Vect2::new(-5.0, y), Vect2::new(4.0, 0.0));
+                points.push(p.expect("a point"));
+            }
+        }
+        // vertical paths beside the still squares only (a drifting one moves across them)
+        for k in (0..12).step_by(2) {
+            let x = 3.0 * k as f64;
+            for x in [x - d, x + 1.0 + d] {
+                let p = MovingPoint::new_2d(Vect2::new(x, -5.0), Vect2::new(0.0, 2.0));
+                points.push(p.expect("a point"));
+            }
+        }
+    }
+    (points, polygons)
+}
+
+/// The grazing pairs: the batch is the pairwise engine, pair for pair.
+#[test]
+fn batch_is_the_pairwise_engine_on_grazing_paths() {
+    let (points, polygons) = grazing();
+    let p = params(1e-4);
+    let want = pairwise(&points, &polygons, &p);
+    let b = detect_batch_with(T, &points, &polygons, &p, &Options::default()).unwrap();
+    let verdict = agrees(&b.hits, &want, &points, &polygons, &p);
+    assert!(
+        verdict.is_ok(),
+        "{verdict:?}; {}",
+        first_difference(&b.hits, &want)
+    );
+    assert!(want.len() > 40, "{} hits", want.len());
+}
+
+/// The mid phase's canary: the comparisons with the mid phase's boxes shrunk by BUFF/100
+/// (`mid_offset`, the broad phase intact) must fail on the grazing paths (whose pairs at
+/// BUFF only the full box keeps), and with them shrunk by 2·BUFF on the dense workload
+/// (the max-norm box reaches farther than paper A's Euclidean BUFF from a polygon, so
+/// only a deeper cut drops hits there): the comparisons can see a mid phase that drops
+/// too much.
+#[test]
+fn a_mid_phase_with_boxes_shrunk_is_caught() {
+    let shrunk = |by: f64| Options {
+        mid_offset: -by,
+        ..Options::default()
+    };
+    let p = params(1e-4);
+    let (points, polygons) = grazing();
+    let want = pairwise(&points, &polygons, &p);
+    let got = detect_batch_with(T, &points, &polygons, &p, &shrunk(0.01 * BUFF)).unwrap();
+    assert!(
+        agrees(&got.hits, &want, &points, &polygons, &p).is_err(),
+        "grazing paths: a mid phase shrunk by BUFF/100 passed the comparison"
+    );
+    let w = dense_workload(200, 150, 1);
+    let want = pairwise(&w.points, &w.polygons, &p);
+    let got = detect_batch_with(T, &w.points, &w.polygons, &p, &shrunk(2.0 * BUFF)).unwrap();
+    assert!(
+        agrees(&got.hits, &want, &w.points, &w.polygons, &p).is_err(),
+        "the dense workload: a mid phase shrunk by 2·BUFF passed the comparison"
+    );
 }
 
 proptest! {

@@ -1,6 +1,7 @@
 //! The batch contract at the bench's scale (batch detection): on the seeded
 //! batch workload (`polyguard_harness::batch`), `detect_batch` against
-//! `api::detected` on every one of the N·M pairs, 2D and 3D. Too slow for a unit test at
+//! `api::detected` on every one of the N·M pairs, 2D and 3D, and on the dense workload
+//! (`dense_workload`: every pair a candidate). Too slow for a unit test at
 //! 10⁴ × 10³ in debug; in release it takes seconds:
 //!
 //! ```text
@@ -16,7 +17,7 @@ use std::time::Instant;
 use polyguard::api::{decide, Case, Kind, Params};
 use polyguard::batch::{detect_batch_with, Hit, Options};
 use polyguard::Tri;
-use polyguard_harness::batch::{batch_workload, Mix, BUFF, FAC, T};
+use polyguard_harness::batch::{batch_workload, dense_workload, Mix, BUFF, FAC, T};
 
 fn main() -> ExitCode {
     let arg = |k: usize, d: u64| {
@@ -34,16 +35,19 @@ fn main() -> ExitCode {
         }
     };
     let mut failed = false;
-    for three_d in [false, true] {
-        let w = batch_workload(
-            n,
-            m,
-            seed,
-            Mix {
-                three_d,
-                ..Mix::BENCH
-            },
-        );
+    for name in ["2D", "3D", "dense"] {
+        let w = match name {
+            "dense" => dense_workload(n, m, seed),
+            _ => batch_workload(
+                n,
+                m,
+                seed,
+                Mix {
+                    three_d: name == "3D",
+                    ..Mix::BENCH
+                },
+            ),
+        };
         let start = Instant::now();
         let batch = match detect_batch_with(T, &w.points, &w.polygons, &params, &Options::default())
         {
@@ -78,9 +82,9 @@ fn main() -> ExitCode {
         let same = pairwise == batch.hits;
         failed |= !same;
         println!(
-            "{} {n} x {m} seed {seed}: {} hits ({} conservative), {} candidates; batch {:.1} ms, \
+            "{} {n} x {m} seed {seed}: {} hits ({} conservative), {} candidates, {} decided; batch {:.1} ms, \
              pairwise {:.0} ms; {}",
-            if three_d { "3D" } else { "2D" },
+            name,
             batch.hits.len(),
             batch
                 .hits
@@ -88,6 +92,7 @@ fn main() -> ExitCode {
                 .filter(|h| h.kind == Kind::Conservative)
                 .count(),
             batch.candidates,
+            batch.decided,
             batch_time.as_secs_f64() * 1e3,
             start.elapsed().as_secs_f64() * 1e3,
             if same { "the same" } else { "DIFFERENT" }

@@ -338,8 +338,8 @@ type Answer<'py> = (
 
 /// Paper A (§II.H, §II.I, §III) for every point against every polygon: exactly the pairs
 /// for which `detect` says detected, sorted by (point, polygon). A certified broad phase
-/// (swept boxes grown by what paper A can reach, rounded outward) skips only pairs paper
-/// A answers no.
+/// (swept boxes grown by what paper A can reach, rounded outward) and mid phase (such a
+/// box wholly on one side of the point's path line) skip only pairs paper A answers no.
 ///
 /// - points_pos, points_vel: (N, 2), or (N, 3) with the height (then every polygon needs
 ///   a slab).

@@ -244,11 +244,13 @@ fn answer<W: Write>(
         let (n, m) = (points.items.len(), polygons.items.len());
         eprintln!(
             "polyguard detect-batch: {n} points × {m} polygons ({} pairs): {} kept by the broad \
-             phase ({} unbounded polygons), {} hits ({conservative} conservative); \
+             phase ({} unbounded polygons), {} by the mid phase, {} hits ({conservative} \
+             conservative); \
              read {:.1} ms, detect {:.1} ms",
             n as u64 * m as u64,
             batch.candidates,
             batch.unbounded_polygons,
+            batch.decided,
             batch.hits.len(),
             read_time.as_secs_f64() * 1e3,
             detect_time.as_secs_f64() * 1e3,

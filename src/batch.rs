@@ -94,10 +94,6 @@ pub struct Options {
     /// broad phase unsound, on purpose, for the tests that must see it drop pairs (the
     /// canary).
     pub reach_offset: f64,
-    /// Added to every polygon's reach in the mid phase only (the broad phase keeps
-    /// `reach_offset`'s boxes). 0 in any real use: a negative value makes the mid phase
-    /// unsound, on purpose, for the tests that must see it drop pairs (its canary).
-    pub mid_offset: f64,
 }
 
 impl Default for Options {
@@ -106,7 +102,6 @@ impl Default for Options {
             broad: Broad::Grid,
             parallel: true,
             reach_offset: 0.0,
-            mid_offset: 0.0,
         }
     }
 }
@@ -118,8 +113,6 @@ pub struct Batch {
     pub hits: Vec<Hit>,
     /// Pairs the broad phase kept.
     pub candidates: u64,
-    /// Of those, the pairs the mid phase left to a paper function.
-    pub decided: u64,
     /// Polygons that meet every point's box in the plane (an edge that may shrink to a
     /// point within [0, T]: paper A's edge_detect accepts anywhere then, §II.I).
     pub unbounded_polygons: usize,
@@ -160,6 +153,35 @@ pub fn detect_batch_with(
     params: &Params,
     options: &Options,
 ) -> Result<Batch, CaseError> {
+    detect_batch_counted(lookahead, points, polygons, params, options).map(|(b, _)| b)
+}
+
+/// [`detect_batch_with`], and how many of the pairs the broad phase kept its mid phase
+/// left to a paper function (the others lie wholly on one side of the point's path
+/// line: paper A certainly says no), for reports.
+pub fn detect_batch_counted(
+    lookahead: f64,
+    points: &[MovingPoint],
+    polygons: &[MovingPolygon],
+    params: &Params,
+    options: &Options,
+) -> Result<(Batch, u64), CaseError> {
+    detect_batch_mid_offset(lookahead, points, polygons, params, options, 0.0)
+}
+
+/// [`detect_batch_counted`] with `mid_offset` added to every polygon's reach in the mid
+/// phase only (the broad phase keeps [`Options::reach_offset`]'s boxes). 0 in any real
+/// use: a negative value makes the mid phase unsound, on purpose, for the tests that
+/// must see it drop pairs (its canary).
+#[doc(hidden)]
+pub fn detect_batch_mid_offset(
+    lookahead: f64,
+    points: &[MovingPoint],
+    polygons: &[MovingPolygon],
+    params: &Params,
+    options: &Options,
+    mid_offset: f64,
+) -> Result<(Batch, u64), CaseError> {
     if !lookahead.is_finite() {
         return Err(CaseError::NotFinite {
             field: "lookahead".into(),
@@ -173,12 +195,14 @@ pub fn detect_batch_with(
         });
     }
     if points.is_empty() || polygons.is_empty() {
-        return Ok(Batch {
-            hits: Vec::new(),
-            candidates: 0,
-            decided: 0,
-            unbounded_polygons: 0,
-        });
+        return Ok((
+            Batch {
+                hits: Vec::new(),
+                candidates: 0,
+                unbounded_polygons: 0,
+            },
+            0,
+        ));
     }
     let three_d = points[0].z.is_some();
     if points.iter().any(|p| p.z.is_some() != three_d) {
@@ -203,7 +227,7 @@ pub fn detect_batch_with(
     let t = lookahead;
     let prepared: Vec<Prepared> = polygons
         .iter()
-        .map(|q| Prepared::new(t, q, params, options.reach_offset, options.mid_offset))
+        .map(|q| Prepared::new(t, q, params, options.reach_offset, mid_offset))
         .collect();
     let point_boxes: Vec<Aabb> = points.iter().map(|p| point_box(t, p)).collect();
     let columns = Columns::new(&prepared);
@@ -229,12 +253,14 @@ pub fn detect_batch_with(
         candidates += c.candidates;
         decided += c.decided;
     }
-    Ok(Batch {
-        hits,
-        candidates,
+    Ok((
+        Batch {
+            hits,
+            candidates,
+            unbounded_polygons: prepared.iter().filter(|p| p.unbounded).count(),
+        },
         decided,
-        unbounded_polygons: prepared.iter().filter(|p| p.unbounded).count(),
-    })
+    ))
 }
 
 /// Points per chunk of work at most: large enough that a chunk's buffers and rayon's

@@ -6,7 +6,10 @@
 //! spare; a broad phase with boxes shrunk by BUFF (the canary) is caught dropping pairs.
 
 use polyguard::api::{decide, Case, Kind, MovingPoint, MovingPolygon, Params};
-use polyguard::batch::{detect_batch, detect_batch_with, Broad, Hit, Options};
+use polyguard::batch::{
+    detect_batch, detect_batch_counted, detect_batch_mid_offset, detect_batch_with, Broad, Hit,
+    Options,
+};
 use polyguard::{Tri, Vect2};
 use polyguard_harness::batch::{batch_workload, dense_workload, Mix, BUFF, T};
 use polyguard_harness::case::RawCase;
@@ -135,7 +138,8 @@ fn batch_is_the_pairwise_engine_on_seeded_workloads() {
         );
         // not trivial: hits, several methods, and far fewer candidates than pairs
         assert!(want.len() > 60, "seed {seed}: {} hits", want.len());
-        let b = detect_batch_with(T, &w.points, &w.polygons, &p, &Options::default()).unwrap();
+        let (b, decided) =
+            detect_batch_counted(T, &w.points, &w.polygons, &p, &Options::default()).unwrap();
         assert!(b.candidates < 600 * 120 / 10, "{} candidates", b.candidates);
         assert!(
             b.unbounded_polygons > 0,
@@ -157,10 +161,11 @@ fn batch_is_the_pairwise_engine_on_seeded_workloads() {
                 ..Options::default()
             },
         ] {
-            let other = detect_batch_with(T, &w.points, &w.polygons, &p, &opts).unwrap();
+            let (other, other_decided) =
+                detect_batch_counted(T, &w.points, &w.polygons, &p, &opts).unwrap();
             assert_eq!(other.hits, got, "{opts:?}");
             assert_eq!(other.candidates, b.candidates, "{opts:?}");
-            assert_eq!(other.decided, b.decided, "{opts:?}");
+            assert_eq!(other_decided, decided, "{opts:?}");
         }
     }
 }
@@ -204,10 +209,11 @@ fn batch_is_the_pairwise_engine_on_the_dense_workload() {
     let w = dense_workload(200, 150, 1);
     let p = params(1e-4);
     let want = pairwise(&w.points, &w.polygons, &p);
-    let b = detect_batch_with(T, &w.points, &w.polygons, &p, &Options::default()).unwrap();
+    let (b, decided) =
+        detect_batch_counted(T, &w.points, &w.polygons, &p, &Options::default()).unwrap();
     assert_eq!(b.hits, want, "{}", first_difference(&b.hits, &want));
     assert_eq!(b.candidates, 200 * 150);
-    assert!(b.decided < b.candidates / 3, "{} decided", b.decided);
+    assert!(decided < b.candidates / 3, "{decided} decided");
     assert!(want.len() > 200 * 150 / 10, "{} hits", want.len());
     // the scan of every polygon's columns (each point's box spans the grid) and the
     // reference loop over every pair's boxes keep and decide the same pairs
@@ -216,10 +222,10 @@ fn batch_is_the_pairwise_engine_on_the_dense_workload() {
         parallel: false,
         ..Options::default()
     };
-    let other = detect_batch_with(T, &w.points, &w.polygons, &p, &all).unwrap();
+    let (other, other_decided) = detect_batch_counted(T, &w.points, &w.polygons, &p, &all).unwrap();
     assert_eq!(
-        (other.hits, other.candidates, other.decided),
-        (b.hits, b.candidates, b.decided)
+        (other.hits, other.candidates, other_decided),
+        (b.hits, b.candidates, decided)
     );
 }
 
@@ -279,28 +285,29 @@ fn batch_is_the_pairwise_engine_on_grazing_paths() {
 }
 
 /// The mid phase's canary: the comparisons with the mid phase's boxes shrunk by BUFF/100
-/// (`mid_offset`, the broad phase intact) must fail on the grazing paths (whose pairs at
+/// (`detect_batch_mid_offset`, the broad phase intact) must fail on the grazing paths (whose pairs at
 /// BUFF only the full box keeps), and with them shrunk by 2·BUFF on the dense workload
 /// (the max-norm box reaches farther than paper A's Euclidean BUFF from a polygon, so
 /// only a deeper cut drops hits there): the comparisons can see a mid phase that drops
 /// too much.
 #[test]
 fn a_mid_phase_with_boxes_shrunk_is_caught() {
-    let shrunk = |by: f64| Options {
-        mid_offset: -by,
-        ..Options::default()
+    let shrunk = |points: &[MovingPoint], polygons: &[MovingPolygon], p: &Params, by: f64| {
+        detect_batch_mid_offset(T, points, polygons, p, &Options::default(), -by)
+            .map(|(b, _)| b)
+            .unwrap()
     };
     let p = params(1e-4);
     let (points, polygons) = grazing();
     let want = pairwise(&points, &polygons, &p);
-    let got = detect_batch_with(T, &points, &polygons, &p, &shrunk(0.01 * BUFF)).unwrap();
+    let got = shrunk(&points, &polygons, &p, 0.01 * BUFF);
     assert!(
         agrees(&got.hits, &want, &points, &polygons, &p).is_err(),
         "grazing paths: a mid phase shrunk by BUFF/100 passed the comparison"
     );
     let w = dense_workload(200, 150, 1);
     let want = pairwise(&w.points, &w.polygons, &p);
-    let got = detect_batch_with(T, &w.points, &w.polygons, &p, &shrunk(2.0 * BUFF)).unwrap();
+    let got = shrunk(&w.points, &w.polygons, &p, 2.0 * BUFF);
     assert!(
         agrees(&got.hits, &want, &w.points, &w.polygons, &p).is_err(),
         "the dense workload: a mid phase shrunk by 2·BUFF passed the comparison"

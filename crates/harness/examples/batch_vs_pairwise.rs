@@ -15,7 +15,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use polyguard::api::{decide, Case, Kind, Params};
-use polyguard::batch::{detect_batch_with, Hit, Options};
+use polyguard::batch::{detect_batch_counted, Hit, Options};
 use polyguard::Tri;
 use polyguard_harness::batch::{batch_workload, dense_workload, Mix, BUFF, FAC, T};
 
@@ -49,14 +49,14 @@ fn main() -> ExitCode {
             ),
         };
         let start = Instant::now();
-        let batch = match detect_batch_with(T, &w.points, &w.polygons, &params, &Options::default())
-        {
-            Ok(b) => b,
-            Err(e) => {
-                eprintln!("batch_vs_pairwise: {e}");
-                return ExitCode::from(2);
-            }
-        };
+        let (batch, decided) =
+            match detect_batch_counted(T, &w.points, &w.polygons, &params, &Options::default()) {
+                Ok(b) => b,
+                Err(e) => {
+                    eprintln!("batch_vs_pairwise: {e}");
+                    return ExitCode::from(2);
+                }
+            };
         let batch_time = start.elapsed();
         let start = Instant::now();
         let mut pairwise = Vec::new();
@@ -92,7 +92,7 @@ fn main() -> ExitCode {
                 .filter(|h| h.kind == Kind::Conservative)
                 .count(),
             batch.candidates,
-            batch.decided,
+            decided,
             batch_time.as_secs_f64() * 1e3,
             start.elapsed().as_secs_f64() * 1e3,
             if same { "the same" } else { "DIFFERENT" }

@@ -10,7 +10,7 @@ use std::time::Instant;
 use serde_json::{json, Value};
 
 use polyguard::api::{Kind, MovingPoint, MovingPolygon, Params};
-use polyguard::batch::{detect_batch_with, Options};
+use polyguard::batch::{detect_batch_counted, Options};
 use polyguard_harness::batch::{batch_workload, Mix, BUFF, FAC, T};
 use polyguard_harness::case::{point_from_line, polygon_from_line, DEFAULT_KAPPA_DEG};
 
@@ -212,7 +212,7 @@ fn answer<W: Write>(
     )?;
     let read_time = start.elapsed();
     let t0 = Instant::now();
-    let batch = match detect_batch_with(
+    let (batch, decided) = match detect_batch_counted(
         lookahead,
         &points.items,
         &polygons.items,
@@ -250,7 +250,7 @@ fn answer<W: Write>(
             n as u64 * m as u64,
             batch.candidates,
             batch.unbounded_polygons,
-            batch.decided,
+            decided,
             batch.hits.len(),
             read_time.as_secs_f64() * 1e3,
             detect_time.as_secs_f64() * 1e3,

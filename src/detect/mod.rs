@@ -22,6 +22,7 @@ mod warping;
 
 #[cfg(feature = "std")]
 pub(crate) use filter::never_collapses;
+#[cfg(feature = "std")]
 pub(crate) use same::detect_same_2d_tri_shaped;
 pub use same::{detect_same_2d, detect_same_2d_tri};
 #[doc(hidden)]

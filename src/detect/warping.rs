@@ -10,7 +10,7 @@ use crate::ball::{self, exact, nonnegative, Ball, BallV, Tri};
 use crate::contain::{definitely_outside_rel, AtTime};
 use crate::polygon::VertexSeq;
 use crate::predicates as pr;
-use crate::vect2::Vect2;
+use crate::vect2::{sqrt, Vect2};
 
 /// Coefficients (t², t, 1) of (ww + t·vv)·(aa + t·bb) as balls. `zero` says which of
 /// ww, vv, aa, bb are known to be exactly 0 (from the inputs): the products they enter
@@ -483,7 +483,7 @@ fn crossing_times(w: Vect2, v: Vect2, a: Vect2, b: Vect2, t0: f64) -> [f64; 2] {
     }
     let disc = y1 * y1 - 4.0 * y2 * y0;
     if disc > 0.0 {
-        let q = -0.5 * (y1 + disc.sqrt().copysign(y1));
+        let q = -0.5 * (y1 + sqrt(disc).copysign(y1));
         let (p, r) = (q / y2, y0 / q);
         [p.min(r), p.max(r)]
     } else {

@@ -134,6 +134,11 @@ pub fn statically_shaped<V: VertexSeq + ?Sized>(vels: &V) -> bool {
         return true;
     }
     let v0 = vels.vertex(0);
+    // On a slice, every comparison is made and the results ANDed, without an exit per
+    // vertex: the compiler takes several vertices at a time, and the answer is the same.
+    if let Some(vs) = vels.as_slice() {
+        return vs.iter().fold(true, |ok, &w| ok & pr::same_velocity(w, v0));
+    }
     (1..n).all(|i| pr::same_velocity(vels.vertex(i), v0))
 }
 

@@ -96,27 +96,30 @@ where
     if n == 0 {
         return Tri::No;
     }
-    // Steps 2, 3 and 1, in that order: the answer is their disjunction (`Yes` from any,
-    // else `Unsure` from any, else `No`) whatever the order, and this one settles the
-    // common hits soonest, a point that ends inside by step 2 and one that crosses an
-    // edge by step 3, without the start's containment test.
-    let acc = match end_inside(tb, s, v, p, vels, buff, stat) {
+    // Steps 3, 2 and 1, in that order: the answer is their disjunction (`Yes` from any,
+    // else `Unsure` from any, else `No`) whatever the order. Step 3's side filter is
+    // cheaper than a containment test at T, a miss pays all three anyway, and a point
+    // that crosses an edge (the common hit) is settled without either containment test
+    // (measured against the order 2, 3, 1: docs/performance.md, "Per-call overhead").
+    let acc = match edges_close(ta, tb, s, v, p, vels, buff, stat) {
         Tri::Yes => return Tri::Yes,
         other => other,
     };
-    match edges_close(ta, tb, s, v, p, vels, buff, stat, acc) {
+    let acc = match end_inside(tb, s, v, p, vels, buff, stat) {
+        Tri::Yes => return Tri::Yes,
+        Tri::Unsure => Tri::Unsure,
+        Tri::No => acc,
+    };
+    match end_inside(ta, s, v, p, vels, buff, stat) {
         Tri::Yes => Tri::Yes,
-        acc => match end_inside(ta, s, v, p, vels, buff, stat) {
-            Tri::Yes => Tri::Yes,
-            Tri::Unsure => Tri::Unsure,
-            Tri::No => acc,
-        },
+        Tri::Unsure => Tri::Unsure,
+        Tri::No => acc,
     }
 }
 
 /// Paper A §II.H step 3 over the window [ta, tb] (see [`same_window`]): `Yes` at the
-/// first edge whose segments_close certainly holds, else `acc` (step 2's answer) made
-/// `Unsure` by any undecided edge.
+/// first edge whose segments_close certainly holds, else `Unsure` if some edge is
+/// undecided, else `No`.
 #[inline(always)]
 fn edges_close<P, V>(
     ta: Ball,
@@ -127,7 +130,6 @@ fn edges_close<P, V>(
     vels: &V,
     buff: f64,
     stat: bool,
-    mut acc: Tri,
 ) -> Tri
 where
     P: VertexSeq + ?Sized,
@@ -135,6 +137,7 @@ where
 {
     let n = p.count();
     let v0 = vels.vertex(0);
+    let mut acc = Tri::No;
     // Each vertex's side of the relative path's line of the common velocity v_0, computed
     // once and carried to the next edge: an edge with both ends certainly beyond BUFF on
     // one side is not close, the same certain test segments_close starts with.
@@ -154,7 +157,6 @@ where
                 buff,
                 path0,
                 line: sides.line,
-                acc,
             };
             return lanes::with_kernel(masked);
         }
@@ -194,8 +196,6 @@ struct SameMasked<'a, V: ?Sized> {
     buff: f64,
     path0: (BallV, BallV),
     line: PathLine,
-    /// Steps 1 and 2's answer (`No` or `Unsure`).
-    acc: Tri,
 }
 
 impl<V: VertexSeq + ?Sized> KernelFn<Tri> for SameMasked<'_, V> {
@@ -214,7 +214,7 @@ impl<V: VertexSeq + ?Sized> KernelFn<Tri> for SameMasked<'_, V> {
 fn same_masked<V: VertexSeq + ?Sized, K: Kernel>(w: SameMasked<'_, V>, k: K) -> Tri {
     let n = w.verts.len();
     const C: usize = lanes::SIDE_CHUNK;
-    let mut acc = w.acc;
+    let mut acc = Tri::No;
     let mut lo = 0;
     while lo < n {
         let hi = (lo + C).min(n);

@@ -42,7 +42,7 @@ const KERNEL_PARAM: &str = "k";
 
 /// Engine modules with no oracle counterpart, each for its reason. Each must exist in
 /// the engine and not in the oracle (a stale entry fails the test).
-const ENGINE_ONLY_MODULES: [(&str, &str); 11] = [
+const ENGINE_ONLY_MODULES: [(&str, &str); 12] = [
     (
         "offset::raw",
         "the f64 construction region (strips and circumscribed fans); the oracle checks a \
@@ -77,6 +77,11 @@ const ENGINE_ONLY_MODULES: [(&str, &str); 11] = [
         "detect::filter::lanes",
         "the sweep filter's f64 tests four edges at a time, the same bits as the scalar \
          filter; the oracle decides edge_detect exactly and needs no filter",
+    ),
+    (
+        "detect::warping::crossing",
+        "edge_detect_simp's certain yes at float crossing times, checked on balls; the \
+         oracle decides the four conditions exactly and needs no witness",
     ),
     (
         "detect::roots",

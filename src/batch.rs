@@ -390,7 +390,9 @@ mod tests {
     use super::*;
     use crate::vect2::Vect2;
 
-    fn square(x: f64, y: f64, vel: Vect2) -> MovingPolygon {
+    /// The unit square with its lower-left corner at (x, y), translating at `vel` (also
+    /// the broad phase's tests' polygon).
+    pub(super) fn square(x: f64, y: f64, vel: Vect2) -> MovingPolygon {
         let v = vec![
             Vect2::new(x, y),
             Vect2::new(x + 1.0, y),

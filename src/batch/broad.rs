@@ -369,17 +369,8 @@ impl Grid {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::batch::tests::square;
     use crate::vect2::Vect2;
-
-    fn square(x: f64, y: f64, vel: Vect2) -> MovingPolygon {
-        let v = vec![
-            Vect2::new(x, y),
-            Vect2::new(x + 1.0, y),
-            Vect2::new(x + 1.0, y + 1.0),
-            Vect2::new(x, y + 1.0),
-        ];
-        MovingPolygon::new(v, Some(vec![vel; 4])).unwrap()
-    }
 
     /// The swept range encloses the exact c + T·w at both ends, also where the product
     /// and the sum round (1e16 + 0.3·3 is not a float).

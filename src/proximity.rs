@@ -61,9 +61,36 @@ pub fn segments_close_rel(
     buff: f64,
     terms: impl Fn() -> Option<[Terms; 4]>,
 ) -> Tri {
+    segments_close_ordered(c, d, e, f, buff, terms, false)
+}
+
+/// [`segments_close_rel`], with step 4's crossing test before the two filters when
+/// `cross_first`. A certain crossing and a certain filter cannot both hold, and the
+/// answer is the same disjunction in either order. The crossing goes first where the
+/// filters seldom fire and crossings are common: detect_same_2D's edges (§II.H step 3)
+/// come here only past the side test of the path's line. Elsewhere (well_formed's pairs
+/// of edges, mostly far apart) the filters go first.
+#[inline]
+pub(crate) fn segments_close_ordered(
+    c: BallV,
+    d: BallV,
+    e: BallV,
+    f: BallV,
+    buff: f64,
+    terms: impl Fn() -> Option<[Terms; 4]>,
+    cross_first: bool,
+) -> Tri {
     if pr::buff_outside_domain(buff) {
         return Tri::Unsure;
     }
+    let early = if cross_first {
+        match pr::segments_cross(c, d, e, f, &terms) {
+            Tri::Yes => return Tri::Yes,
+            other => Some(other),
+        }
+    } else {
+        None
+    };
     let r = mx(mx(c.r, d.r), mx(e.r, f.r));
     let gap = crate::ball::up(2.0 * (buff + 2.0 * r));
     let apart = |a1: f64, a2: f64, b1: f64, b2: f64| {
@@ -80,9 +107,13 @@ pub fn segments_close_rel(
     if lines_separate(c, d, e, f, buff) || lines_separate(e, f, c, d, buff) {
         return Tri::No;
     }
-    // Step 4's crossing first: the disjunction is the same, and a path through an edge
-    // (the common hit) is settled by four orientations instead of four near_edge tests.
-    let cross = pr::segments_cross(c, d, e, f, &terms);
+    // Step 4's crossing before steps 1–2: the disjunction is the same, and a path through
+    // an edge (the common hit) is settled by four orientations instead of four near_edge
+    // tests.
+    let cross = match early {
+        Some(cross) => cross,
+        None => pr::segments_cross(c, d, e, f, &terms),
+    };
     if cross == Tri::Yes {
         return Tri::Yes;
     }
@@ -114,8 +145,56 @@ fn lines_separate(c: BallV, d: BallV, e: BallV, f: BallV, dist: f64) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use proptest::prelude::*;
+    use proptest::strategy::ValueTree;
+    use proptest::test_runner::TestRunner;
+
     fn v(x: f64, y: f64) -> Vect2 {
         Vect2::new(x, y)
+    }
+
+    /// Ends on a coarse grid (crossings, shared ends, touching and collinear segments)
+    /// or anywhere in a small square, with BUFF from 0 to 1.
+    fn pieces() -> impl Strategy<Value = ([Vect2; 4], f64)> {
+        let coord = prop_oneof![(-4i8..=4).prop_map(|k| 0.5 * f64::from(k)), -2.0..2.0f64];
+        let pt = (coord.clone(), coord).prop_map(|(x, y)| v(x, y));
+        (
+            prop::array::uniform4(pt),
+            prop_oneof![Just(0.0), 0.0..1.0f64],
+        )
+    }
+
+    /// segments_close with the crossing test first answers as with the filters first
+    /// (a certain crossing and a certain filter cannot both hold). Liveness: the cases
+    /// reach certain crossings and both certain answers, so the comparison compares
+    /// something.
+    #[test]
+    fn the_crossing_first_changes_no_answer() {
+        let mut runner = TestRunner::deterministic();
+        let (mut crossings, mut yes, mut no) = (0, 0, 0);
+        for _ in 0..20_000 {
+            let ([c, d, e, f], buff) = pieces().new_tree(&mut runner).expect("a case").current();
+            let (dc, ec, fc) = (BallV::diff(d, c), BallV::diff(e, c), BallV::diff(f, c));
+            let terms = || {
+                Some([
+                    Terms::ZERO,
+                    Terms::diff(d, c),
+                    Terms::diff(e, c),
+                    Terms::diff(f, c),
+                ])
+            };
+            let first = segments_close_ordered(BallV::ZERO, dc, ec, fc, buff, terms, true);
+            let last = segments_close_ordered(BallV::ZERO, dc, ec, fc, buff, terms, false);
+            assert_eq!(first, last, "{c:?} {d:?} {e:?} {f:?} BUFF {buff}");
+            crossings +=
+                usize::from(pr::segments_cross(BallV::ZERO, dc, ec, fc, terms) == Tri::Yes);
+            yes += usize::from(first == Tri::Yes);
+            no += usize::from(first == Tri::No);
+        }
+        assert!(
+            crossings > 1_000 && yes > 2_000 && no > 2_000,
+            "{crossings} {yes} {no}"
+        );
     }
 
     #[test]

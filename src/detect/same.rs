@@ -7,7 +7,7 @@ use crate::contain::{definitely_outside_rel, AtTime, Shifted};
 use crate::lanes::{self, Kernel, KernelFn};
 use crate::polygon::VertexSeq;
 use crate::predicates::{self as pr, PathLine, Terms};
-use crate::proximity::segments_close_rel;
+use crate::proximity::segments_close_ordered;
 use crate::vect2::Vect2;
 
 /// Paper A §II.H detect_same_2D: does s + t·v come within BUFF of the statically shaped
@@ -321,7 +321,7 @@ fn edge_close(
         };
         Some([path(ta.z)?, path(tb.z)?, Terms::diff(pi, s), ej])
     };
-    segments_close_rel(pa, pb, qi, edge_j, buff, terms)
+    segments_close_ordered(pa, pb, qi, edge_j, buff, terms, true)
 }
 
 /// Paper A §II.H step 3 (segments_close's filter): same_window's side test of a vertex

@@ -100,7 +100,8 @@ where
     // else `Unsure` from any, else `No`) whatever the order. Step 3's side filter is
     // cheaper than a containment test at T, a miss pays all three anyway, and a point
     // that crosses an edge (the common hit) is settled without either containment test
-    // (measured against the order 2, 3, 1: docs/performance.md, "Per-call overhead").
+    // (measured against the order 2, 3, 1: docs/performance.md, "The certified engine
+    // against the plain transcription").
     let acc = match edges_close(ta, tb, s, v, p, vels, buff, stat) {
         Tri::Yes => return Tri::Yes,
         other => other,

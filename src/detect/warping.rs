@@ -362,26 +362,15 @@ fn simp_window(
     // Either set empty is a certain no. Where w × a is positive at the window's middle
     // (in floats: a guess, which decides nothing) F·‖a‖² − w × a is the likelier to be
     // negative all along, so its set is formed first; the sets are the same either way.
-    // Before its roots, [`below_zero_on`] on the coefficients' upper ends (which bound the
-    // exact quadratic for t ≥ 0) may find it certainly negative over the whole window:
-    // then its set is empty without them.
     let mid = 0.5 * lo + 0.5 * hi;
     let y_mid = ((q0[0].z - q1[0].z) * mid + (q0[1].z - q1[1].z)) * mid + (q0[2].z - q1[2].z);
-    let below =
-        |c: &[Ball; 3], l: f64, h: f64| below_zero_on(c[0].hi(), c[1].hi(), c[2].hi(), l, h);
     let (p_pos, p_neg) = if y_mid > 0.0 {
-        if below(&q1, lo, hi) {
-            return Tri::No;
-        }
         let p_neg = outer(&q1);
         if empty(&p_neg) {
             return Tri::No;
         }
         (outer(&q0), p_neg)
     } else {
-        if below(&q0, lo, hi) {
-            return Tri::No;
-        }
         let p_pos = outer(&q0);
         if empty(&p_pos) {
             return Tri::No;
@@ -410,6 +399,8 @@ fn simp_window(
     // certain yes. Only when some J is settled neither way are the along
     // quadratics' sets formed (below).
     let mut settled = true;
+    let below =
+        |c: &[Ball; 3], l: f64, h: f64| below_zero_on(c[0].hi(), c[1].hi(), c[2].hi(), l, h);
     for i1 in &p_pos {
         for i2 in &p_neg {
             let (jl, ju) = (i1.lb.max(i2.lb), i1.ub.min(i2.ub));

@@ -134,10 +134,12 @@ pub fn statically_shaped<V: VertexSeq + ?Sized>(vels: &V) -> bool {
         return true;
     }
     let v0 = vels.vertex(0);
-    // On a slice, every comparison is made and the results ANDed, without an exit per
-    // vertex: the compiler takes several vertices at a time, and the answer is the same.
+    // On a slice: the second vertex first (a warping polygon's velocities usually differ
+    // there already), then every comparison made and the results ANDed, without an exit
+    // per vertex, which the compiler takes several vertices at a time. The same answer.
     if let Some(vs) = vels.as_slice() {
-        return vs.iter().fold(true, |ok, &w| ok & pr::same_velocity(w, v0));
+        return vs.get(1).map_or(true, |&w| pr::same_velocity(w, v0))
+            && vs.iter().fold(true, |ok, &w| ok & pr::same_velocity(w, v0));
     }
     (1..n).all(|i| pr::same_velocity(vels.vertex(i), v0))
 }

@@ -4,7 +4,7 @@
 //! [`simp_window`](super::simp_window); the oracle decides the same conditions exactly and
 //! needs no witness.
 
-use crate::ball::{nonnegative, Ball, BallV, Tri};
+use crate::ball::{self, mx, nonnegative, up, Ball, BallV, Tri};
 use crate::vect2::{sqrt, Vect2};
 
 /// Paper A §II.I edge_detect_simp at the times the point crosses the edge's line: the
@@ -65,15 +65,26 @@ pub(super) fn crossing_times(w: Vect2, v: Vect2, a: Vect2, b: Vect2, t0: f64) ->
 /// Paper A §II.I edge_detect_simp's four conditions at one exact time t:
 /// (1 + F)·‖a‖² ∓ w·a ≥ 0 and F·‖a‖² ∓ w × a ≥ 0 (w = ww + t·vv, a = aa + t·bb), each
 /// pair as (1 + F)·‖a‖² − |w·a| ≥ 0 and F·‖a‖² − |w × a| ≥ 0, decided by `sure` on a
-/// ball that holds the exact value for every exact input within ww, vv, aa, bb and
-/// k1 ∋ 1 + F: w and a are formed on balls, then ‖a‖², w·a and w × a ([`BallV::sq`],
-/// [`BallV::dot`], [`BallV::cross`]), each step's bound being its ball operation's; the
-/// exact |x| lies in the ball (|x̃|, r) when x lies in (x̃, r). The one test per pair
-/// answers as the two signs would: k·g − |x̃| is the smaller of k·g ∓ x̃, and the larger
-/// one's radius exceeds it by at most 2u(1 + 16u)·2|x̃| while its centre exceeds it by
-/// 2|x̃| less two roundings (≤ 2u·|centre| each), far more. The engine passes
-/// [`nonnegative`]`(·) == Yes`; the tests pass a comparison that ignores the radius, as
-/// a canary.
+/// ball that holds the exact value for every exact input within ww, vv, aa, bb (radii
+/// per coordinate) and k1 ∋ 1 + F. One static bound per step, in floats (u the unit
+/// roundoff; each sum of non-negative terms raised by [`up`], which absorbs its own
+/// roundings and an underflow):
+///
+/// - w̃ = fl(ww̃ + fl(t·vṽ)) is within ρ_w = r_ww + |t|·r_vv + u·(‖fl(t·vṽ)‖∞ + ‖w̃‖∞) of
+///   the exact w in each coordinate (each rounding errs by at most u times its result);
+///   ã within ρ_a likewise;
+/// - ‖a‖², w·a and w × a from the rounded vectors are within e_g = 2ρ_a‖ã‖₁ + 2ρ_a² +
+///   3u‖ã‖₁² and e_x = ‖w̃‖₁ρ_a + ‖ã‖₁ρ_w + 2ρ_wρ_a + 3u‖w̃‖₁‖ã‖₁ of the exact ones (the
+///   products' differences, then two products and a sum rounded, ≤ 2u(1 + 2u) of the sum
+///   of their magnitudes);
+/// - with k = 1 + F known within r_k, k ≥ r_k and F ≥ 0 (else no witness is claimed),
+///   K·‖a‖² − |w·a| ≥ k·g̃ − |x̃| − (k·e_g + r_k·(g̃ + e_g) + e_x); its computed value
+///   p − |x̃|, p = fl(k·g̃), errs by at most u·(p + |result|). F·‖a‖² − |w × a| likewise.
+///
+/// The one test per pair answers as the two signs would: the exact k·g − |x| is the
+/// smaller of k·g ∓ x. The engine passes [`nonnegative`]`(·) == Yes` (an infinite radius,
+/// as after an overflow, is never sure); the tests pass a comparison that ignores the
+/// radius, as a canary.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
 pub(super) fn conditions_hold_at(
@@ -86,17 +97,36 @@ pub(super) fn conditions_hold_at(
     f: f64,
     sure: impl Fn(Ball) -> bool,
 ) -> bool {
-    let abs = |b: Ball| Ball {
-        z: b.z.abs(),
-        r: b.r,
-    };
-    let tt = Ball::exact(t);
-    let (wt, at) = (ww.add(vv.scale(tt)), aa.add(bb.scale(tt)));
-    let (g, x) = (at.sq(), wt.dot(at));
-    // The along condition first: at a crossing, it is the one that fails when the point
-    // passes beside the edge.
-    if !sure(g.mul(k1).sub(abs(x))) {
+    if !(k1.z >= k1.r && f >= 0.0) {
         return false;
     }
-    sure(g.scale(f).sub(abs(wt.cross(at))))
+    let u = ball::U;
+    let n1 = |v: Vect2| v.x.abs() + v.y.abs();
+    let big = |v: Vect2| mx(v.x.abs(), v.y.abs());
+    let ta = t.abs();
+    let (tv, tb) = (vv.v.scale(t), bb.v.scale(t));
+    let (w, a) = (ww.v + tv, aa.v + tb);
+    let rho_w = up(ww.r + ta * vv.r + u * (big(tv) + big(w)));
+    let rho_a = up(aa.r + ta * bb.r + u * (big(tb) + big(a)));
+    let (nw, na) = (n1(w), n1(a));
+    let g = a.dot(a);
+    let eg = up(2.0 * rho_a * na + 2.0 * rho_a * rho_a + 3.0 * u * na * na);
+    let ex = up(nw * rho_a + na * rho_w + 2.0 * rho_w * rho_a + 3.0 * u * nw * na);
+    // The along condition first: at a crossing, it is the one that fails when the point
+    // passes beside the edge.
+    let p = k1.z * g;
+    let along = p - w.dot(a).abs();
+    let r_along = up(k1.z * eg + k1.r * (g + eg) + ex + u * (p + along.abs()));
+    if !sure(Ball {
+        z: along,
+        r: r_along,
+    }) {
+        return false;
+    }
+    let q = f * g;
+    let perp = q - w.dot(a.perp()).abs();
+    sure(Ball {
+        z: perp,
+        r: up(f * eg + ex + u * (q + perp.abs())),
+    })
 }

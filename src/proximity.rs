@@ -167,11 +167,12 @@ mod tests {
     /// segments_close with the crossing test first answers as with the filters first
     /// (a certain crossing and a certain filter cannot both hold). Liveness: the cases
     /// reach certain crossings and both certain answers, so the comparison compares
-    /// something.
+    /// something. Canary: a crossing-first that answered every certain non-crossing with
+    /// no (skipping the ends' near_edge tests) would differ on more than 100 cases.
     #[test]
     fn the_crossing_first_changes_no_answer() {
         let mut runner = TestRunner::deterministic();
-        let (mut crossings, mut yes, mut no) = (0, 0, 0);
+        let (mut crossings, mut yes, mut no, mut caught) = (0, 0, 0, 0);
         for _ in 0..20_000 {
             let ([c, d, e, f], buff) = pieces().new_tree(&mut runner).expect("a case").current();
             let (dc, ec, fc) = (BallV::diff(d, c), BallV::diff(e, c), BallV::diff(f, c));
@@ -186,8 +187,11 @@ mod tests {
             let first = segments_close_ordered(BallV::ZERO, dc, ec, fc, buff, terms, true);
             let last = segments_close_ordered(BallV::ZERO, dc, ec, fc, buff, terms, false);
             assert_eq!(first, last, "{c:?} {d:?} {e:?} {f:?} BUFF {buff}");
-            crossings +=
-                usize::from(pr::segments_cross(BallV::ZERO, dc, ec, fc, terms) == Tri::Yes);
+            let cross = pr::segments_cross(BallV::ZERO, dc, ec, fc, terms);
+            crossings += usize::from(cross == Tri::Yes);
+            // Canary: a crossing-first that answered a certain non-crossing with no,
+            // skipping steps 1–2, differs from the filters-first answer here.
+            caught += usize::from(cross == Tri::No && last != Tri::No);
             yes += usize::from(first == Tri::Yes);
             no += usize::from(first == Tri::No);
         }
@@ -195,6 +199,7 @@ mod tests {
             crossings > 1_000 && yes > 2_000 && no > 2_000,
             "{crossings} {yes} {no}"
         );
+        assert!(caught > 100, "the canary was caught {caught} times");
     }
 
     #[test]

@@ -277,12 +277,11 @@ impl Leg {
     }
 
     /// Latitude offsets of the two steps of vertex `k`: `(a, a + b)` with
-    /// `a = d1 cos ψ1 / R`, `b = d2 cos ψ2 / R` (eq 30), independent of time.
+    /// `a = d1 cos ψ1 / R`, `b = d2 cos ψ2 / R` (eq 30), independent of time: the stored
+    /// `step_consts`, formed by the same expressions.
     fn lat_offsets(&self, k: usize) -> (f64, f64) {
-        let [(d1, p1), (d2, p2)] = self.steps[k];
-        let r = self.radius();
-        let a = d1 * p1.cos() / r;
-        (a, a + d2 * p2.cos() / r)
+        let [a, b, _, _] = self.step_consts[k];
+        (a, a + b)
     }
 
     /// Largest |latitude| reached by the reference point, the step points and the vertices

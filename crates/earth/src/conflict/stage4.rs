@@ -184,14 +184,18 @@ pub fn linear_window(
     Some(Some((start, end)))
 }
 
+/// An object's velocity envelope ([`Object::velocity_envelope`]): `(e, σ_lo, σ_hi, deform)`.
+type Envelope = (Merc, f64, f64, f64);
+
 /// Bound on how fast the gap between the two polygons can shrink, measured along the
 /// unit direction `n`, or in any direction when `n` is `None`. Every vertex velocity is
-/// `σ e + w` (see [`Object::velocity_envelope`]); the common part cancels in the gap, so
-/// the bound is `max_{σ_a, σ_b ∈ ends} |n·(σ_b e_b − σ_a e_a)| + deform_a + deform_b`
+/// `σ e + w` (see [`Object::velocity_envelope`], here `a` and `b` for the two objects);
+/// the common part cancels in the gap, so the bound is
+/// `max_{σ_a, σ_b ∈ ends} |n·(σ_b e_b − σ_a e_a)| + deform_a + deform_b`
 /// (a convex function of `(σ_a, σ_b)`, maximal at a corner of their box).
-fn closing_rate(a: &Object, b: &Object, n: Option<Merc>) -> f64 {
-    let (ea, la, ha, wa) = a.velocity_envelope();
-    let (eb, lb, hb, wb) = b.velocity_envelope();
+fn closing_rate(a: &Envelope, b: &Envelope, n: Option<Merc>) -> f64 {
+    let &(ea, la, ha, wa) = a;
+    let &(eb, lb, hb, wb) = b;
     let mut m: f64 = 0.0;
     for sa in [la, ha] {
         for sb in [lb, hb] {
@@ -213,7 +217,9 @@ fn closing_rate(a: &Object, b: &Object, n: Option<Merc>) -> f64 {
 /// the skip would be shorter than `tol` (the polygons then meet or are within
 /// `rate · tol`), or `None` when `to` is reached first.
 fn advance(a: &Object, b: &Object, from: f64, to: f64, tol: f64) -> Option<f64> {
-    let rate_any = closing_rate(a, b, None);
+    // the envelopes are constants of the objects: formed once, not at every step
+    let (env_a, env_b) = (a.velocity_envelope(), b.velocity_envelope());
+    let rate_any = closing_rate(&env_a, &env_b, None);
     let convex = a.is_convex() && b.is_convex();
     let dir = if to >= from { 1.0 } else { -1.0 };
     let (mut va, mut vb) = (Vec::with_capacity(16), Vec::with_capacity(16));
@@ -235,7 +241,7 @@ fn advance(a: &Object, b: &Object, from: f64, to: f64, tol: f64) -> Option<f64> 
             .fold(f64::INFINITY, f64::min);
         let g = bmin - amax;
         if g > 0.0 {
-            step = step.max(g / closing_rate(a, b, Some(n)));
+            step = step.max(g / closing_rate(&env_a, &env_b, Some(n)));
         }
         if step < tol {
             return Some(t);

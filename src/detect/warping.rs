@@ -510,7 +510,8 @@ fn edge_detect_window(
 }
 
 /// edge_detect over the window [ta, tb] past its filter (see [`edge_detect_window`]):
-/// edge_detect_simp on the edge's ww, vv, aa, bb.
+/// edge_detect_simp on the edge's ww, vv, aa, bb, each formed with one static error bound
+/// ([`BallV::mid_offset`], [`BallV::half_diff`]) rather than a ball per operation.
 #[inline(always)]
 fn edge_detect_simp_window(
     ta: Ball,
@@ -523,12 +524,10 @@ fn edge_detect_simp_window(
     vj: Vect2,
     f: f64,
 ) -> Tri {
-    let (qi, qj) = (BallV::diff(pi, s), BallV::diff(pj, s));
-    let (ui, uj) = (BallV::diff(vi, v), BallV::diff(vj, v));
-    let ww = qi.add(qj).half().neg();
-    let vv = ui.add(uj).half().neg();
-    let aa = BallV::diff(pj, pi).half();
-    let bb = BallV::diff(vj, vi).half();
+    let ww = BallV::mid_offset(pi, pj, s);
+    let vv = BallV::mid_offset(vi, vj, v);
+    let aa = BallV::half_diff(pj, pi);
+    let bb = BallV::half_diff(vj, vi);
     simp_window(ta, tb, ww, vv, aa, bb, vi == vj, f)
 }
 

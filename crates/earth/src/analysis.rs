@@ -8,6 +8,9 @@ use crate::sphere::Merc;
 use serde_json::{json, Value};
 use std::fmt::Write as _;
 use std::time::Instant;
+use text::{num, ring_lonlat, string, units};
+
+mod text;
 
 /// Told when the four stages start and end, which can take long on large scenarios; the
 /// command-line tool draws a spinner. `()` ignores both.
@@ -21,86 +24,6 @@ pub trait Progress {
 }
 
 impl Progress for () {}
-
-/// A JSON number, or `null` for the unbounded ends of always-present areas.
-fn num(out: &mut String, x: f64) {
-    if x.is_finite() {
-        let _ = write!(out, "{x}");
-    } else {
-        out.push_str("null");
-    }
-}
-
-/// A JSON string literal with JSON's escapes (RFC 8259 §7) as `serde_json` writes them: `"` and `\\` escaped, the
-/// control characters below U+0020 by their short escape or `\u00xx`, all else as it
-/// is (a `Value` per id cost a tenth of writing a large answer).
-fn string(out: &mut String, s: &str) {
-    out.push('"');
-    let mut start = 0;
-    for (i, b) in s.bytes().enumerate() {
-        let esc: &str = match b {
-            b'"' => "\\\"",
-            b'\\' => "\\\\",
-            b'\n' => "\\n",
-            b'\r' => "\\r",
-            b'\t' => "\\t",
-            0x08 => "\\b",
-            0x0c => "\\f",
-            0..=0x1f => "",
-            _ => continue,
-        };
-        out.push_str(&s[start..i]);
-        if esc.is_empty() {
-            const HEX: &[u8; 16] = b"0123456789abcdef";
-            out.push_str("\\u00");
-            out.push(char::from(HEX[usize::from(b >> 4)]));
-            out.push(char::from(HEX[usize::from(b & 15)]));
-        } else {
-            out.push_str(esc);
-        }
-        start = i + 1;
-    }
-    out.push_str(&s[start..]);
-    out.push('"');
-}
-
-/// Region coordinates are written with this many decimals of a degree: 1e-7° ≈ 1.1 cm,
-/// far below the stage tolerances, and a fixed-point writer is several times faster than
-/// shortest round-trip formatting on the megabytes of a large answer.
-const REGION_DECIMALS: u32 = 7;
-
-/// A coordinate in units of the last printed decimal.
-fn units(x: f64) -> i64 {
-    (x * 10i64.pow(REGION_DECIMALS) as f64).round() as i64
-}
-
-fn coord_units(out: &mut String, v: i64) {
-    let scale = 10i64.pow(REGION_DECIMALS);
-    if v < 0 {
-        out.push('-');
-    }
-    let a = v.unsigned_abs();
-    let (int, frac) = (a / scale as u64, a % scale as u64);
-    push_digits(out, int, 1);
-    out.push('.');
-    push_digits(out, frac, REGION_DECIMALS as usize);
-}
-
-/// n in decimal, left-padded with zeros to at least `width` digits (core::fmt's padding
-/// machinery was a tenth of a large answer's run time).
-fn push_digits(out: &mut String, mut n: u64, width: usize) {
-    let mut buf = [b'0'; 20];
-    let mut k = buf.len();
-    while n > 0 {
-        k -= 1;
-        buf[k] = b'0' + (n % 10) as u8;
-        n /= 10;
-    }
-    let start = k.min(buf.len() - width.min(buf.len()));
-    for &d in &buf[start..] {
-        out.push(char::from(d));
-    }
-}
 
 /// A region's ring as printed: longitude and latitude in units of the last decimal,
 /// with what rounding made of it repaired: repeated positions merged and spikes (a step
@@ -142,21 +65,6 @@ fn printed_ring(ring: &[Merc], geo: Geodesy) -> Vec<[i64; 2]> {
 /// A printed polygon: its exterior ring and its holes ([`printed_ring`]).
 type PrintedPolygon = (Vec<[i64; 2]>, Vec<Vec<[i64; 2]>>);
 
-fn ring_lonlat(out: &mut String, ring: &[[i64; 2]]) {
-    out.push('[');
-    for (k, p) in ring.iter().chain(ring.first()).enumerate() {
-        if k > 0 {
-            out.push(',');
-        }
-        out.push('[');
-        coord_units(out, p[0]);
-        out.push(',');
-        coord_units(out, p[1]);
-        out.push(']');
-    }
-    out.push(']');
-}
-
 /// The answer JSON of the spec for a pipeline result, written directly (the answer of a
 /// large scenario holds megabytes of region coordinates; building a `serde_json::Value`
 /// first costs more than the four stages).
@@ -170,11 +78,11 @@ pub fn answer(
     regions: bool,
 ) -> String {
     let per = if regions { 640 } else { 200 };
-    let mut out = String::with_capacity(1024 + conflicts.len() * per);
-    out.push_str(ANSWER_HEAD);
+    let mut out = Vec::with_capacity(1024 + conflicts.len() * per);
+    out.extend_from_slice(ANSWER_HEAD.as_bytes());
     for (k, c) in conflicts.iter().enumerate() {
         if k > 0 {
-            out.push(',');
+            out.push(b',');
         }
         conflict_json(
             &mut out,
@@ -184,8 +92,9 @@ pub fn answer(
             scenario.geodesy,
         );
     }
+    let mut tail = String::new();
     answer_tail(
-        &mut out,
+        &mut tail,
         scenario.features.len(),
         conflicts.len(),
         stats,
@@ -194,7 +103,9 @@ pub fn answer(
         extra_ms,
         scenario.geodesy,
     );
-    out
+    out.extend_from_slice(tail.as_bytes());
+    // every byte written is ASCII or comes from a &str (an id): UTF-8 throughout
+    String::from_utf8(out).unwrap_or_else(|e| String::from_utf8_lossy(e.as_bytes()).into_owned())
 }
 
 /// How the answer starts.
@@ -202,7 +113,7 @@ const ANSWER_HEAD: &str = "{\"conflicts\":[";
 
 /// One conflict of the answer, on a line of its own (the comma before it is the caller's).
 fn conflict_json<'a>(
-    out: &mut String,
+    out: &mut Vec<u8>,
     id: &dyn Fn(usize) -> &'a str,
     c: &pipeline::Conflict,
     regions: bool,
@@ -213,50 +124,50 @@ fn conflict_json<'a>(
         Method::Linear => ("time_of_intersection", "exact_linear"),
         Method::Advancement => ("time_of_intersection", "certified_advancement"),
     };
-    out.push_str("\n{\"a\":");
+    out.extend_from_slice(b"\n{\"a\":");
     string(out, id(c.a as usize));
-    out.push_str(",\"b\":");
+    out.extend_from_slice(b",\"b\":");
     string(out, id(c.b as usize));
-    out.push_str(",\"t_start\":");
+    out.extend_from_slice(b",\"t_start\":");
     num(out, c.t_start);
-    out.push_str(",\"t_end\":");
+    out.extend_from_slice(b",\"t_end\":");
     num(out, c.t_end);
-    out.push_str(",\"decided_by\":\"");
-    out.push_str(decided_by);
-    out.push_str("\",\"method\":\"");
-    out.push_str(method);
-    out.push_str("\",\"projection_windows\":");
+    out.extend_from_slice(b",\"decided_by\":\"");
+    out.extend_from_slice(decided_by.as_bytes());
+    out.extend_from_slice(b"\",\"method\":\"");
+    out.extend_from_slice(method.as_bytes());
+    out.extend_from_slice(b"\",\"projection_windows\":");
     // not computed with --no-regions: null, not a pair of "no window"s
     if !regions {
-        out.push_str("null");
+        out.extend_from_slice(b"null");
     } else {
-        out.push('[');
+        out.push(b'[');
     }
     for (i, w) in c.paper.iter().enumerate().filter(|_| regions) {
         if i > 0 {
-            out.push(',');
+            out.push(b',');
         }
         match w {
             Some((a, b)) => {
-                out.push('[');
+                out.push(b'[');
                 num(out, *a);
-                out.push(',');
+                out.push(b',');
                 num(out, *b);
-                out.push(']');
+                out.push(b']');
             }
-            None => out.push_str("null"),
+            None => out.extend_from_slice(b"null"),
         }
     }
     if regions {
-        out.push(']');
+        out.push(b']');
     }
     // --no-regions: no region member at all (the answer of a dense scenario is
     // gigabytes of `"region": null` otherwise)
     if !regions {
-        out.push('}');
+        out.push(b'}');
         return;
     }
-    out.push_str(",\"region\":");
+    out.extend_from_slice(b",\"region\":");
     // each counterclockwise ring starts a polygon, the clockwise ones after it are
     // its holes (crate::conflict::geom::region)
     let polys: Vec<PrintedPolygon> = crate::conflict::geom::polygons(&c.rings)
@@ -270,34 +181,34 @@ fn conflict_json<'a>(
         })
         .filter(|(ext, _)| !ext.is_empty())
         .collect();
-    let polygon = |out: &mut String, (ext, holes): &PrintedPolygon| {
-        out.push('[');
+    let polygon = |out: &mut Vec<u8>, (ext, holes): &PrintedPolygon| {
+        out.push(b'[');
         ring_lonlat(out, ext);
         for h in holes {
-            out.push(',');
+            out.push(b',');
             ring_lonlat(out, h);
         }
-        out.push(']');
+        out.push(b']');
     };
     match polys.as_slice() {
-        [] => out.push_str("null"),
+        [] => out.extend_from_slice(b"null"),
         [one] => {
-            out.push_str("{\"type\":\"Polygon\",\"coordinates\":");
+            out.extend_from_slice(b"{\"type\":\"Polygon\",\"coordinates\":");
             polygon(out, one);
-            out.push('}');
+            out.push(b'}');
         }
         many => {
-            out.push_str("{\"type\":\"MultiPolygon\",\"coordinates\":[");
+            out.extend_from_slice(b"{\"type\":\"MultiPolygon\",\"coordinates\":[");
             for (i, p) in many.iter().enumerate() {
                 if i > 0 {
-                    out.push(',');
+                    out.push(b',');
                 }
                 polygon(out, p);
             }
-            out.push_str("]}");
+            out.extend_from_slice(b"]}");
         }
     }
-    out.push('}');
+    out.push(b'}');
 }
 
 /// The answer after its conflicts: stats, errors, warnings.
@@ -426,14 +337,14 @@ pub fn analyse_into(
             // the conflicts' text in parallel, a chunk per task (with regions, writing the
             // coordinates costs as much as a stage), written in order
             use rayon::prelude::*;
-            let texts: Vec<String> = block
+            let texts: Vec<Vec<u8>> = block
                 .par_chunks(OUTPUT_CHUNK)
                 .map(|chunk| {
                     // room for a conflict with a region of a dozen vertices: few regrowths
-                    let mut s = String::with_capacity(chunk.len() * CONFLICT_BYTES);
+                    let mut s = Vec::with_capacity(chunk.len() * CONFLICT_BYTES);
                     for (k, c) in chunk.iter().enumerate() {
                         if k > 0 {
-                            s.push(',');
+                            s.push(b',');
                         }
                         conflict_json(&mut s, &|k| &ids[k], c, regions, geo);
                     }
@@ -442,10 +353,7 @@ pub fn analyse_into(
                 .collect();
             for (i, t) in texts.iter().enumerate() {
                 let sep: &[u8] = if count > 0 || i > 0 { b"," } else { b"" };
-                if let Err(e) = out
-                    .write_all(sep)
-                    .and_then(|()| out.write_all(t.as_bytes()))
-                {
+                if let Err(e) = out.write_all(sep).and_then(|()| out.write_all(t)) {
                     failed = Some(e);
                     return;
                 }
@@ -551,53 +459,4 @@ pub fn analyse_with(
         objects,
         conflicts,
     })
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Ids are written as serde_json writes them: every control character, quotes,
-    /// backslashes, non-ASCII text.
-    #[test]
-    fn strings_are_escaped_as_serde_json_escapes_them() {
-        let mut cases: Vec<String> = (0u8..0x20)
-            .map(|b| format!("a{}b", char::from(b)))
-            .collect();
-        cases.extend(
-            [
-                "",
-                "plain",
-                "q\"uote",
-                "back\\slash",
-                "\u{7f}",
-                "é – ü 飛",
-                "\"\\\n",
-            ]
-            .map(String::from),
-        );
-        for c in &cases {
-            let mut s = String::new();
-            string(&mut s, c);
-            assert_eq!(s, Value::from(c.as_str()).to_string(), "{c:?}");
-        }
-    }
-
-    #[test]
-    fn coord_is_fixed_point_with_seven_decimals() {
-        for &(x, want) in &[
-            (0.0, "0.0000000"),
-            (-0.0, "0.0000000"),
-            (39.5, "39.5000000"),
-            (-45.123456789, "-45.1234568"),
-            (179.99999999, "180.0000000"),
-            (-0.00000004, "0.0000000"),
-            (-0.00000006, "-0.0000001"),
-            (1.0000001, "1.0000001"),
-        ] {
-            let mut s = String::new();
-            coord_units(&mut s, units(x));
-            assert_eq!(s, want, "{x}");
-        }
-    }
 }

@@ -1,6 +1,5 @@
 //! The fast path: clean files deserialize straight into typed structures (no tree), and
-//! anything else goes to the general path. The collection is split into its features'
-//! raw text in one pass, and the features are read on every core.
+//! anything else goes to the general path.
 
 use super::errors::{Ctx, ScenarioError};
 use super::rules::{area_from, checked, lay_out, track_from};
@@ -14,14 +13,12 @@ use serde_json::Map;
 /// goes to the general path, which names fields and lines.
 mod typed {
     use serde::de::IgnoredAny;
-    use serde_json::value::RawValue;
     #[derive(serde::Deserialize)]
     #[serde(deny_unknown_fields)]
-    pub struct Collection<'a> {
+    pub struct Collection {
         #[serde(rename = "type")]
         pub ty: String,
-        #[serde(borrow)]
-        pub features: Vec<&'a RawValue>,
+        pub features: Vec<Feature>,
         #[allow(dead_code)]
         pub bbox: Option<IgnoredAny>,
         #[allow(dead_code)]
@@ -60,10 +57,6 @@ mod typed {
     }
 }
 
-/// Features read by one task: a small collection (the assurance hunt's two-feature
-/// scenarios) is read on one core, without handing work between threads.
-const FEATURES_PER_TASK: usize = 16;
-
 /// The fast path: `Some` only for a file with nothing to report (no error, no warning),
 /// which then reads exactly as the general path reads it (public for the differential
 /// fuzz target; [`parse`](crate::scenario::parse) is the reader to use).
@@ -77,58 +70,27 @@ pub fn fast_parse(text: &str) -> Option<Read> {
         Some("unrolled") => Longitudes::Unrolled,
         Some(_) => return None,
     };
-    let features: Vec<typed::Feature> = {
-        use rayon::prelude::*;
-        fc.features
-            .par_iter()
-            .with_min_len(FEATURES_PER_TASK)
-            .map(|raw| serde_json::from_str::<typed::Feature>(raw.get()).ok())
-            .collect::<Option<Vec<_>>>()?
-    };
-    // ids are unique: a repeated one is the general path's to report
-    let mut seen = std::collections::HashSet::with_capacity(features.len());
-    if !features
-        .iter()
-        .all(|f| seen.insert(f.properties.id.as_str()))
-    {
-        return None;
-    }
-    drop(seen);
-    let features: Vec<Feature> = {
-        use rayon::prelude::*;
-        features
-            .into_par_iter()
-            .with_min_len(FEATURES_PER_TASK)
-            .enumerate()
-            .map(|(index, f)| feature(index, f, longitudes))
-            .collect::<Option<Vec<_>>>()?
-    };
-    let out = Scenario {
-        features,
+    let mut out = Scenario {
+        features: Vec::new(),
         longitudes,
         geodesy: Default::default(),
     };
-    Some(Read {
-        scenario: out,
-        ..Read::default()
-    })
-}
-
-/// One feature of a clean file, read by the format's rules: `None` (to the general path)
-/// for anything to report, a warning included.
-fn feature(index: usize, f: typed::Feature, longitudes: Longitudes) -> Option<Feature> {
-    let p = f.properties;
-    if f.ty != "Feature" {
-        return None;
-    }
-    let ctx = Ctx {
-        index,
-        id: Some(&p.id),
-        line: None,
-    };
-    // None (to the general path) for a warning: a longitude wrapped
-    let pts =
-        |field: &str, v: &[[f64; 2]], ring: bool| -> Option<Result<Vec<LonLat>, ScenarioError>> {
+    let mut seen = std::collections::HashSet::with_capacity(fc.features.len());
+    for (index, f) in fc.features.into_iter().enumerate() {
+        let p = f.properties;
+        if f.ty != "Feature" || !seen.insert(p.id.clone()) {
+            return None;
+        }
+        let ctx = Ctx {
+            index,
+            id: Some(&p.id),
+            line: None,
+        };
+        // None (to the general path) for a warning: a longitude wrapped
+        let pts = |field: &str,
+                   v: &[[f64; 2]],
+                   ring: bool|
+         -> Option<Result<Vec<LonLat>, ScenarioError>> {
             for (k, q) in v.iter().enumerate() {
                 if let Err(e) = checked(&ctx, field, k, q[0], q[1]) {
                     return Some(Err(e));
@@ -143,38 +105,42 @@ fn feature(index: usize, f: typed::Feature, longitudes: Longitudes) -> Option<Fe
                 Err(e) => Some(Err(e)),
             }
         };
-    let kind = match (p.kind.as_str(), &f.geometry) {
-        ("area", typed::Geometry::Polygon(rings))
-            if rings.len() == 1
-                && p.speed_kn.is_none()
-                && p.front_nm.is_none()
-                && p.back_nm.is_none()
-                && p.side_nm.is_none() =>
-        {
-            let r = rings.first()?;
-            pts("geometry.coordinates[0]", r, true)?
-                .and_then(|ring| area_from(&ctx, ring, p.t0, p.tf))
-                .map(Kind::Area)
-        }
-        ("track", typed::Geometry::LineString(line)) if p.tf.is_none() => {
-            pts("geometry.coordinates", line, false)?
-                .and_then(|w| {
-                    track_from(
-                        &ctx,
-                        w,
-                        p.speed_kn,
-                        [p.front_nm, p.back_nm, p.side_nm],
-                        p.t0,
-                    )
-                })
-                .map(Kind::Track)
-        }
-        _ => return None,
-    };
-    let kind = kind.ok()?;
-    Some(Feature {
-        id: p.id,
-        kind,
-        extra: Map::new(),
+        let kind = match (p.kind.as_str(), &f.geometry) {
+            ("area", typed::Geometry::Polygon(rings))
+                if rings.len() == 1
+                    && p.speed_kn.is_none()
+                    && p.front_nm.is_none()
+                    && p.back_nm.is_none()
+                    && p.side_nm.is_none() =>
+            {
+                let r = rings.first()?;
+                pts("geometry.coordinates[0]", r, true)?
+                    .and_then(|ring| area_from(&ctx, ring, p.t0, p.tf))
+                    .map(Kind::Area)
+            }
+            ("track", typed::Geometry::LineString(line)) if p.tf.is_none() => {
+                pts("geometry.coordinates", line, false)?
+                    .and_then(|w| {
+                        track_from(
+                            &ctx,
+                            w,
+                            p.speed_kn,
+                            [p.front_nm, p.back_nm, p.side_nm],
+                            p.t0,
+                        )
+                    })
+                    .map(Kind::Track)
+            }
+            _ => return None,
+        };
+        out.features.push(Feature {
+            id: p.id,
+            kind: kind.ok()?,
+            extra: Map::new(),
+        });
+    }
+    Some(Read {
+        scenario: out,
+        ..Read::default()
     })
 }

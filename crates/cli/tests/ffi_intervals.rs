@@ -1,13 +1,14 @@
 //! `pg_intervals` and `pg_detect_exit` give the command-line tool's answers bit for bit
 //! (docs/cases.md, "Separation and fences"): `polyguard detect --intervals --fence
 //! keep-in` on examples/intervals.jsonl (each line with its own `sep`, `sep_v`) and on
-//! the uniform workload of the benches (crates/harness, `--example uniform_workload`),
-//! with no separation and with --sep 25 --sep-v 20. Each case line is read here into the
+//! the uniform workload of the benches (`polyguard_harness::workload::write_cases`), with
+//! no separation and with --sep 25 --sep-v 20. Each case line is read here into the
 //! C structs, so the numbers go the C caller's way: every span's four floats are
 //! compared by their bits, and `certain`, `loss_of_separation`, `exits`, `exit_kind`.
 //!
-//! The CLI is `$POLYGUARD_BIN` when set, else `cargo run -p polyguard-cli`; the workload
-//! is written by `cargo run -p polyguard-harness --example uniform_workload`.
+//! The CLI is the binary this package builds for its tests, the C interface the
+//! polyguard-ffi library linked in: both as the workspace builds them, with nothing built
+//! again inside the test.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -50,24 +51,11 @@ fn stdout_of(cmd: &mut Command) -> String {
     String::from_utf8(out.stdout).expect("UTF-8 output")
 }
 
-/// `cargo run` in the repository's workspace, with these arguments.
-fn cargo_run(args: &[&str]) -> Command {
-    let mut cmd = Command::new(env!("CARGO"));
-    cmd.args(["run", "-q", "--manifest-path"])
-        .arg(root().join("Cargo.toml"))
-        .args(args);
-    cmd
-}
-
-/// The polyguard binary: `$POLYGUARD_BIN`, else the CLI through `cargo run`.
+/// The polyguard binary of this package.
 fn cli() -> Command {
-    match std::env::var_os("POLYGUARD_BIN") {
-        Some(bin) if !bin.is_empty() => Command::new(bin),
-        _ => cargo_run(&["-p", "polyguard-cli", "--bin", "polyguard", "--"]),
-    }
+    Command::new(env!("CARGO_BIN_EXE_polyguard"))
 }
 
-/// The JSON lines of a text.
 fn lines(text: &str) -> Vec<Value> {
     text.lines()
         .filter(|l| !l.trim().is_empty())
@@ -322,14 +310,8 @@ fn the_examples_match_the_cli() {
 #[test]
 fn the_uniform_workload_matches_the_cli() {
     let file = scratch().join("uniform.jsonl");
-    let text = stdout_of(&mut cargo_run(&[
-        "-p",
-        "polyguard-harness",
-        "--example",
-        "uniform_workload",
-        "--",
-        "16",
-    ]));
+    let mut text = Vec::new();
+    polyguard_harness::workload::write_cases(&mut text, 16, false).expect("the workload writes");
     std::fs::write(&file, text).expect("the workload writes");
     let none = compare_with_cli(&file, &[], 0.0, 0.0);
     let sep = compare_with_cli(&file, &["--sep", "25", "--sep-v", "20"], 25.0, 20.0);

@@ -26,7 +26,10 @@ fi
 triple=$(printf '%s\n' "$rustc_vv" | sed -n 's/^host: //p')
 target_dir="${CARGO_TARGET_DIR:-$repo/fuzz/target}"
 
-"${fuzz[@]}" build -O
+# Optimised, with debug assertions and overflow checks (an overflow in the engine is a bug
+# the fuzzer should report): the flags of a plain `cargo fuzz build`, so fuzz/ci.sh's runs
+# reuse these binaries.
+"${fuzz[@]}" build -O --debug-assertions
 targets=$(sed -n '/^\[\[bin\]\]/,/^$/ s/^name *= *"\(.*\)"/\1/p' Cargo.toml)
 for t in $targets; do
   bin="$target_dir/$triple/release/$t"

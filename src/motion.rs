@@ -224,6 +224,7 @@ impl Edge {
 
     /// g, h₁, h₂ as Taylor forms at m, from q(m), e(m), w(m) (§II.C's quadratics).
     #[inline]
+    #[cfg(feature = "std")]
     pub(crate) fn taylor3(&self, q: BallV, e: BallV, w: BallV) -> [Taylor; 3] {
         [self.g(q, e), self.h1(q, e), self.h2(w, e)]
     }
@@ -326,6 +327,7 @@ impl Edge {
 
     /// g(t) as a ball and g′(t) as a float estimate (for Newton's method).
     #[inline]
+    #[cfg(feature = "std")]
     pub(crate) fn g_with_slope(&self, t: f64) -> (Ball, f64) {
         let (q, e, w) = self.at(t);
         let [g, ..] = self.taylor3(q, e, w);

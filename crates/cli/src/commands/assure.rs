@@ -593,13 +593,9 @@ fn run_intervals(args: &AssureArgs) -> ExitCode {
         }
     };
     let campaign = super::assure_intervals::IntervalCampaign {
-        seed: args.seed,
-        shard: args.shard.unwrap_or((0, 1)),
-        cases: args.cases,
+        run: hunt_run(args),
         space: args.aim.unwrap_or_default(),
         engine,
-        threads: threads(args),
-        quiet: args.quiet,
     };
     super::assure_intervals::run(&campaign, &args.out)
 }
@@ -612,9 +608,7 @@ fn run_moving(args: &AssureArgs) -> ExitCode {
         return ExitCode::from(2);
     }
     let campaign = super::assure_moving::MovingCampaign {
-        seed: args.seed,
-        shard: args.shard.unwrap_or((0, 1)),
-        cases: args.cases,
+        run: hunt_run(args),
         engine: match args.canary {
             None => MovingEngine::Certified,
             Some(CanaryArg::FixesOnly) => MovingEngine::FixesOnly,
@@ -623,8 +617,6 @@ fn run_moving(args: &AssureArgs) -> ExitCode {
                 return ExitCode::from(2);
             }
         },
-        threads: threads(args),
-        quiet: args.quiet,
     };
     super::assure_moving::run(&campaign, &args.out)
 }
@@ -649,14 +641,18 @@ fn run_wayout(args: &AssureArgs) -> ExitCode {
         seed: args.seed,
         engine,
     };
-    let run = super::assure_common::HuntRun {
+    super::assure_wayout::run(&hunt, &hunt_run(args), &args.out)
+}
+
+/// The seed, shard, size, threads and progress of a hunt, from the command line.
+fn hunt_run(args: &AssureArgs) -> super::assure_common::HuntRun {
+    super::assure_common::HuntRun {
         seed: args.seed,
         shard: args.shard.unwrap_or((0, 1)),
         cases: args.cases,
         threads: threads(args),
         quiet: args.quiet,
-    };
-    super::assure_wayout::run(&hunt, &run, &args.out)
+    }
 }
 
 /// `assure --paper b`.

@@ -157,6 +157,134 @@ pub fn keep_lowest<T, C: PartialEq>(
     }
 }
 
+/// A campaign report with a shape of its own (the interval and moving hunts): what
+/// [`run_shard`] needs of it.
+pub trait ShardReport: Default + Send {
+    /// A kept failing case, as the report lists it.
+    type Kept;
+    /// Adds another thread's counts.
+    fn absorb(&mut self, other: &Self);
+    /// Counts a case that the engine or the oracle rejected.
+    fn reject(&mut self);
+    /// The shard's label (`i/N`), the campaign's size, the wall time and the kept cases.
+    fn stamp(
+        &mut self,
+        shard: String,
+        campaign_cases: u64,
+        wall_seconds: f64,
+        kept: Vec<Self::Kept>,
+    );
+}
+
+/// [`ShardReport`] for a report type with the fields `rejected`, `shards`,
+/// `campaign_cases`, `wall_seconds` and `kept` (of `$kept`), and `absorb`.
+macro_rules! shard_report {
+    ($report:ty, $kept:ty) => {
+        impl ShardReport for $report {
+            type Kept = $kept;
+            fn absorb(&mut self, other: &Self) {
+                <$report>::absorb(self, other);
+            }
+            fn reject(&mut self) {
+                self.rejected += 1;
+            }
+            fn stamp(&mut self, shard: String, cases: u64, wall: f64, kept: Vec<$kept>) {
+                (self.shards, self.campaign_cases) = (vec![shard], cases);
+                (self.wall_seconds, self.kept) = (wall, kept);
+            }
+        }
+    };
+}
+
+shard_report!(
+    polyguard_harness::intervals::report::IntervalReport,
+    polyguard_harness::intervals::report::KeptInterval
+);
+shard_report!(
+    polyguard_harness::moving::report::MovingReport,
+    polyguard_harness::moving::report::KeptMoving
+);
+
+/// How [`run_shard`] judges and keeps the cases of a campaign.
+pub struct ShardJudge<J, C, W> {
+    /// `judge(k, report)` draws and judges case k and adds it to the thread's report;
+    /// it returns the failure to keep if the case failed, or why the case was rejected.
+    pub judge: J,
+    /// A failure's class.
+    pub class: C,
+    /// Writes a kept failure's file (case k) and returns the report's entry for it.
+    pub write: W,
+}
+
+/// Runs a shard of a campaign whose report has a shape of its own ([`ShardReport`]) over
+/// the shard's threads into `out`. The shard's j-th case is case k = j·N + i of the
+/// campaign. Of each failing class, the `keep` failures of the lowest indices are kept
+/// and written, whatever the threads' order (see [`keep_lowest`]); a rejected case is
+/// reported on standard error and counted. Returns the stamped report.
+pub fn run_shard<R, F, C>(
+    report: R,
+    s: &HuntRun,
+    keep: usize,
+    how: ShardJudge<
+        impl Fn(u64, &mut R) -> Result<Option<F>, String> + Sync,
+        impl Fn(&F) -> C + Sync,
+        impl Fn(u64, &F) -> std::io::Result<R::Kept>,
+    >,
+) -> R
+where
+    R: ShardReport,
+    F: Send,
+    C: PartialEq,
+{
+    let (shard_i, shard_n) = s.shard;
+    let mine = polyguard_harness::report::shard_size(s.cases, shard_i, shard_n);
+    let progress = CampaignProgress::new(mine, s.quiet);
+    let start = Instant::now();
+    let next = AtomicU64::new(0);
+    let report = Mutex::new(report);
+    let found: Mutex<Vec<(u64, F)>> = Mutex::new(Vec::new());
+    std::thread::scope(|scope| {
+        for _ in 0..s.threads.max(1) {
+            scope.spawn(|| {
+                let mut local = R::default();
+                loop {
+                    let j = next.fetch_add(1, Ordering::Relaxed);
+                    if j >= mine {
+                        break;
+                    }
+                    let k = j * shard_n + shard_i;
+                    let failure = (how.judge)(k, &mut local).unwrap_or_else(|why| {
+                        eprintln!("polyguard assure: {why}");
+                        local.reject();
+                        None
+                    });
+                    progress.inc(failure.is_some());
+                    if let (Some(f), Ok(mut g)) = (failure, found.lock()) {
+                        keep_lowest(&mut g, (k, f), keep, |x| x.0, |x| (how.class)(&x.1));
+                    }
+                }
+                if let Ok(mut r) = report.lock() {
+                    r.absorb(&local);
+                }
+            });
+        }
+    });
+    progress.finish();
+    let mut found = found.into_inner().unwrap_or_default();
+    found.sort_by_key(|f| f.0);
+    let mut kept = Vec::with_capacity(found.len());
+    for (k, f) in &found {
+        match (how.write)(*k, f) {
+            Ok(entry) => kept.push(entry),
+            Err(e) => eprintln!("polyguard assure: cannot write counterexample {k}: {e}"),
+        }
+    }
+    let mut report = report.into_inner().unwrap_or_default();
+    let wall = start.elapsed().as_secs_f64();
+    report.stamp(format!("{shard_i}/{shard_n}"), s.cases, wall, kept);
+    report
+}
+
 /// Writes `DIR/report.json` (either paper's report); exit 2 when it cannot.
 pub fn write_report<T: serde::Serialize>(report: &T, out: &Path) -> Result<(), ExitCode> {
     let path = out.join("report.json");

@@ -5,36 +5,25 @@
 use std::fs;
 use std::path::Path;
 use std::process::ExitCode;
-use std::sync::atomic::{AtomicU64, Ordering};
-use std::sync::Mutex;
-use std::time::Instant;
 
 use polyguard_harness::gen::{Space, SplitMix};
 use polyguard_harness::intervals::gen::{interval_case, IntervalCase};
 use polyguard_harness::intervals::judge::{judge, IntervalEngine, IntervalVerdict};
 use polyguard_harness::intervals::report::{IntervalReport, KeptInterval};
 
-use super::assure_common::{keep_lowest, write_report, CampaignProgress};
+use super::assure_common::{run_shard, write_report, HuntRun, ShardJudge};
 
 /// How many cases of each failing class a run keeps.
 pub const KEEP_PER_CLASS: usize = 5;
 
 /// What one interval hunt draws and judges.
 pub struct IntervalCampaign {
-    /// The seed.
-    pub seed: u64,
-    /// Shard i of N.
-    pub shard: (u64, u64),
-    /// The campaign's size (all shards).
-    pub cases: u64,
+    /// Seed, shard, size, threads and progress.
+    pub run: HuntRun,
     /// The threshold half's scale space.
     pub space: Space,
     /// The engine judged.
     pub engine: IntervalEngine,
-    /// Worker threads.
-    pub threads: usize,
-    /// No progress lines.
-    pub quiet: bool,
 }
 
 /// Case k of an interval campaign.
@@ -44,8 +33,8 @@ pub fn campaign_interval_case(seed: u64, k: u64, space: &Space) -> IntervalCase 
     interval_case(&mut SplitMix(s), space)
 }
 
-/// A kept failing case: index, verdict, case.
-type Found = (u64, IntervalVerdict, IntervalCase);
+/// A failing case as kept: its verdict and the case.
+type Found = (IntervalVerdict, IntervalCase);
 
 /// Runs the campaign into `out` (report.json, summary.txt, counterexamples/).
 pub fn run(c: &IntervalCampaign, out: &Path) -> ExitCode {
@@ -53,73 +42,22 @@ pub fn run(c: &IntervalCampaign, out: &Path) -> ExitCode {
         eprintln!("polyguard assure: cannot create {}: {e}", out.display());
         return ExitCode::from(2);
     }
-    let (shard_i, shard_n) = c.shard;
-    let mine = polyguard_harness::report::shard_size(c.cases, shard_i, shard_n);
-    let progress = CampaignProgress::new(mine, c.quiet);
-    let start = Instant::now();
-    let next = AtomicU64::new(0);
-    let report = Mutex::new(IntervalReport::new(
-        c.seed,
-        c.engine.name(),
-        c.space.label(),
-    ));
-    let found: Mutex<Vec<Found>> = Mutex::new(Vec::new());
-    std::thread::scope(|scope| {
-        for _ in 0..c.threads {
-            scope.spawn(|| {
-                let mut local = IntervalReport::default();
-                loop {
-                    let j = next.fetch_add(1, Ordering::Relaxed);
-                    if j >= mine {
-                        break;
-                    }
-                    let k = j * shard_n + shard_i;
-                    let ic = campaign_interval_case(c.seed, k, &c.space);
-                    let failed = match judge(&ic, c.engine) {
-                        Ok(v) => {
-                            local.add(&v, ic.mode);
-                            let failed = v.class.is_failure();
-                            if failed {
-                                if let Ok(mut g) = found.lock() {
-                                    keep_lowest(
-                                        &mut g,
-                                        (k, v, ic),
-                                        KEEP_PER_CLASS,
-                                        |f| f.0,
-                                        |f| f.1.class,
-                                    );
-                                }
-                            }
-                            failed
-                        }
-                        Err(e) => {
-                            eprintln!("polyguard assure: case {k} rejected: {e:?}");
-                            local.rejected += 1;
-                            false
-                        }
-                    };
-                    progress.inc(failed);
-                }
-                if let Ok(mut r) = report.lock() {
-                    r.absorb(&local);
-                }
-            });
-        }
-    });
-    progress.finish();
-    let mut report = report.into_inner().unwrap_or_default();
-    report.shards = vec![format!("{shard_i}/{shard_n}")];
-    report.campaign_cases = c.cases;
-    report.wall_seconds = start.elapsed().as_secs_f64();
-    let mut found = found.into_inner().unwrap_or_default();
-    found.sort_by_key(|f| f.0);
-    report.kept.clear();
-    for (k, v, ic) in &found {
-        match write_kept(out, *k, v, ic) {
-            Ok(kept) => report.kept.push(kept),
-            Err(e) => eprintln!("polyguard assure: cannot write counterexample {k}: {e}"),
-        }
-    }
+    let how = ShardJudge {
+        judge: |k, local: &mut IntervalReport| {
+            let ic = campaign_interval_case(c.run.seed, k, &c.space);
+            let v = judge(&ic, c.engine).map_err(|e| format!("case {k} rejected: {e:?}"))?;
+            local.add(&v, ic.mode);
+            Ok(v.class.is_failure().then_some((v, ic)))
+        },
+        class: |(v, _): &Found| v.class,
+        write: |k, (v, ic): &Found| write_kept(out, k, v, ic),
+    };
+    let report = run_shard(
+        IntervalReport::new(c.run.seed, c.engine.name(), c.space.label()),
+        &c.run,
+        KEEP_PER_CLASS,
+        how,
+    );
     finish(&report, out)
 }
 

@@ -5,9 +5,6 @@
 use std::fs;
 use std::path::Path;
 use std::process::ExitCode;
-use std::sync::atomic::{AtomicU64, Ordering};
-use std::sync::Mutex;
-use std::time::Instant;
 
 use polyguard_earth::moving::plane::{PlaneArea, PlaneFix, TimeSpan};
 use polyguard_harness::gen::SplitMix;
@@ -16,25 +13,17 @@ use polyguard_harness::moving::judge::{judge, MovingEngine, MovingVerdict};
 use polyguard_harness::moving::report::{KeptMoving, MovingReport};
 use serde_json::{json, Value};
 
-use super::assure_common::{keep_lowest, write_report, CampaignProgress};
+use super::assure_common::{run_shard, write_report, HuntRun, ShardJudge};
 
 /// How many scenarios of each failing class a run keeps.
 pub const KEEP_PER_CLASS: usize = 5;
 
 /// What one moving hunt draws and judges.
 pub struct MovingCampaign {
-    /// The seed.
-    pub seed: u64,
-    /// Shard i of N.
-    pub shard: (u64, u64),
-    /// The campaign's size (all shards).
-    pub cases: u64,
+    /// Seed, shard, size, threads and progress.
+    pub run: HuntRun,
     /// The engine judged.
     pub engine: MovingEngine,
-    /// Worker threads.
-    pub threads: usize,
-    /// No progress lines.
-    pub quiet: bool,
 }
 
 /// Scenario k of a moving campaign.
@@ -44,8 +33,8 @@ pub fn campaign_scenario(seed: u64, k: u64) -> MovingScenario {
     moving_scenario(&mut SplitMix(s))
 }
 
-/// A kept failing scenario: index, verdict, scenario.
-type Found = (u64, MovingVerdict, MovingScenario);
+/// A failing scenario as kept: its verdict and the scenario.
+type Found = (MovingVerdict, MovingScenario);
 
 /// Runs the campaign into `out` (report.json, summary.txt, counterexamples/).
 pub fn run(c: &MovingCampaign, out: &Path) -> ExitCode {
@@ -53,69 +42,22 @@ pub fn run(c: &MovingCampaign, out: &Path) -> ExitCode {
         eprintln!("polyguard assure: cannot create {}: {e}", out.display());
         return ExitCode::from(2);
     }
-    let (shard_i, shard_n) = c.shard;
-    let mine = polyguard_harness::report::shard_size(c.cases, shard_i, shard_n);
-    let progress = CampaignProgress::new(mine, c.quiet);
-    let start = Instant::now();
-    let next = AtomicU64::new(0);
-    let report = Mutex::new(MovingReport::new(c.seed, c.engine.name()));
-    let found: Mutex<Vec<Found>> = Mutex::new(Vec::new());
-    std::thread::scope(|scope| {
-        for _ in 0..c.threads {
-            scope.spawn(|| {
-                let mut local = MovingReport::default();
-                loop {
-                    let j = next.fetch_add(1, Ordering::Relaxed);
-                    if j >= mine {
-                        break;
-                    }
-                    let k = j * shard_n + shard_i;
-                    let s = campaign_scenario(c.seed, k);
-                    let failed = match judge(&s, c.engine) {
-                        Ok(v) => {
-                            local.add(&v, s.mode);
-                            let failed = v.class.is_failure();
-                            if failed {
-                                if let Ok(mut g) = found.lock() {
-                                    keep_lowest(
-                                        &mut g,
-                                        (k, v, s),
-                                        KEEP_PER_CLASS,
-                                        |f| f.0,
-                                        |f| f.1.class,
-                                    );
-                                }
-                            }
-                            failed
-                        }
-                        Err(e) => {
-                            eprintln!("polyguard assure: scenario {k} rejected: {e}");
-                            local.rejected += 1;
-                            false
-                        }
-                    };
-                    progress.inc(failed);
-                }
-                if let Ok(mut r) = report.lock() {
-                    r.absorb(&local);
-                }
-            });
-        }
-    });
-    progress.finish();
-    let mut report = report.into_inner().unwrap_or_default();
-    report.shards = vec![format!("{shard_i}/{shard_n}")];
-    report.campaign_cases = c.cases;
-    report.wall_seconds = start.elapsed().as_secs_f64();
-    let mut found = found.into_inner().unwrap_or_default();
-    found.sort_by_key(|f| f.0);
-    report.kept.clear();
-    for (k, v, s) in &found {
-        match write_kept(out, *k, v, s) {
-            Ok(kept) => report.kept.push(kept),
-            Err(e) => eprintln!("polyguard assure: cannot write counterexample {k}: {e}"),
-        }
-    }
+    let how = ShardJudge {
+        judge: |k, local: &mut MovingReport| {
+            let s = campaign_scenario(c.run.seed, k);
+            let v = judge(&s, c.engine).map_err(|e| format!("scenario {k} rejected: {e}"))?;
+            local.add(&v, s.mode);
+            Ok(v.class.is_failure().then_some((v, s)))
+        },
+        class: |(v, _): &Found| v.class,
+        write: |k, (v, s): &Found| write_kept(out, k, v, s),
+    };
+    let report = run_shard(
+        MovingReport::new(c.run.seed, c.engine.name()),
+        &c.run,
+        KEEP_PER_CLASS,
+        how,
+    );
     finish(&report, out)
 }
 

@@ -310,6 +310,61 @@ impl<C: HuntClass> HuntReport<C> {
     }
 }
 
+/// The widths of end enclosures, in a unit of the hunt's choosing (the lookahead T for
+/// the interval hunt, a second for the moving hunt), as log₂(width / unit) rounded up,
+/// counted: bucket k holds the widths in (2^(k−1), 2^k] units; a width of 0 is bucket
+/// −1075 (an exact end).
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Widths {
+    /// Count per bucket.
+    pub buckets: BTreeMap<i32, u64>,
+    /// The widest enclosure seen, in units.
+    pub widest: f64,
+}
+
+impl Widths {
+    /// Counts one enclosure of width `w`, in units of `unit`.
+    pub fn add(&mut self, w: f64, unit: f64) {
+        let r = w / unit;
+        let k = if r > 0.0 && r.is_finite() {
+            r.log2().ceil() as i32
+        } else {
+            -1075
+        };
+        *self.buckets.entry(k).or_default() += 1;
+        if r.is_finite() && r > self.widest {
+            self.widest = r;
+        }
+    }
+
+    /// The total count.
+    pub fn count(&self) -> u64 {
+        self.buckets.values().sum()
+    }
+
+    /// The smallest bucket below which at least `q` of the counts lie (q in (0, 1]).
+    pub fn quantile(&self, q: f64) -> Option<i32> {
+        let total = self.count();
+        let mut seen = 0;
+        for (&k, &n) in &self.buckets {
+            seen += n;
+            if seen as f64 >= q * total as f64 {
+                return Some(k);
+            }
+        }
+        None
+    }
+
+    /// Adds another shard's or thread's counts.
+    pub fn absorb(&mut self, o: &Widths) {
+        for (&k, &n) in &o.buckets {
+            *self.buckets.entry(k).or_default() += n;
+        }
+        self.widest = self.widest.max(o.widest);
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

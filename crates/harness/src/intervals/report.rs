@@ -25,57 +25,8 @@ pub struct KeptInterval {
     pub case_file: String,
 }
 
-/// The widths of end enclosures, as log₂(width / T) rounded up, counted: bucket k holds
-/// the widths in (2^(k−1)·T, 2^k·T]; a width of 0 is bucket −1075 (the exact ends).
-#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Widths {
-    /// Count per bucket.
-    pub buckets: BTreeMap<i32, u64>,
-    /// The widest enclosure seen, over T.
-    pub widest: f64,
-}
-
-impl Widths {
-    /// Counts one enclosure of width `w` in a case of lookahead `t`.
-    pub fn add(&mut self, w: f64, t: f64) {
-        let r = w / t;
-        let k = if r > 0.0 && r.is_finite() {
-            r.log2().ceil() as i32
-        } else {
-            -1075
-        };
-        *self.buckets.entry(k).or_default() += 1;
-        if r.is_finite() && r > self.widest {
-            self.widest = r;
-        }
-    }
-
-    /// The total count.
-    pub fn count(&self) -> u64 {
-        self.buckets.values().sum()
-    }
-
-    /// The smallest bucket below which at least `q` of the counts lie (q in (0, 1]).
-    pub fn quantile(&self, q: f64) -> Option<i32> {
-        let total = self.count();
-        let mut seen = 0;
-        for (&k, &n) in &self.buckets {
-            seen += n;
-            if seen as f64 >= q * total as f64 {
-                return Some(k);
-            }
-        }
-        None
-    }
-
-    fn absorb(&mut self, o: &Widths) {
-        for (&k, &n) in &o.buckets {
-            *self.buckets.entry(k).or_default() += n;
-        }
-        self.widest = self.widest.max(o.widest);
-    }
-}
+/// The widths of end enclosures, in units of the case's lookahead T.
+pub use crate::hunt::Widths;
 
 /// The spans of one relation over a campaign.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]

@@ -25,51 +25,8 @@ pub struct KeptMoving {
     pub case_file: String,
 }
 
-/// The widths of end enclosures in seconds, as log₂(width) rounded up, counted: bucket k
-/// holds the widths in (2^(k−1), 2^k] s; a width of 0 is bucket −1075 (an exact end).
-#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Widths {
-    /// Count per bucket.
-    pub buckets: BTreeMap<i32, u64>,
-    /// The widest enclosure seen (s).
-    pub widest: f64,
-}
-
-impl Widths {
-    /// Counts one enclosure of width `w` seconds.
-    pub fn add(&mut self, w: f64) {
-        let k = if w > 0.0 && w.is_finite() {
-            w.log2().ceil() as i32
-        } else {
-            -1075
-        };
-        *self.buckets.entry(k).or_default() += 1;
-        if w.is_finite() && w > self.widest {
-            self.widest = w;
-        }
-    }
-
-    /// The smallest bucket below which at least `q` of the counts lie (q in (0, 1]).
-    pub fn quantile(&self, q: f64) -> Option<i32> {
-        let total: u64 = self.buckets.values().sum();
-        let mut seen = 0;
-        for (&k, &n) in &self.buckets {
-            seen += n;
-            if seen as f64 >= q * total as f64 {
-                return Some(k);
-            }
-        }
-        None
-    }
-
-    fn absorb(&mut self, o: &Widths) {
-        for (&k, &n) in &o.buckets {
-            *self.buckets.entry(k).or_default() += n;
-        }
-        self.widest = self.widest.max(o.widest);
-    }
-}
+/// The widths of end enclosures, in seconds.
+pub use crate::hunt::Widths;
 
 /// One relation over a campaign.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
@@ -165,7 +122,7 @@ impl MovingReport {
             c.components += r.components as u64;
             for s in &r.spans {
                 for e in [s.start, s.end] {
-                    c.widths.add(e[1] - e[0]);
+                    c.widths.add(e[1] - e[0], 1.0);
                 }
             }
         }

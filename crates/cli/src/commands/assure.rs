@@ -17,7 +17,10 @@ use polyguard_harness::minimise::minimise;
 use polyguard_harness::report::{Kept, Report};
 use polyguard_harness::svg::{picture, Picture};
 
-use super::assure_common::{keep_lowest, write_report, CampaignProgress};
+use polyguard_harness::intervals::report::IntervalReport;
+use polyguard_harness::moving::report::MovingReport;
+
+use super::assure_common::{keep_lowest, merge_reports, write_report, CampaignProgress};
 
 pub use polyguard_harness::report::KEEP_PER_CLASS;
 
@@ -850,8 +853,8 @@ fn merge(paths: &[PathBuf], out: &Path, partial: bool) -> ExitCode {
     }
     match hunt_of(&texts) {
         Err(e) => return fail(e),
-        Ok(Hunt::Intervals) => return super::assure_intervals::merge(paths, &texts, out, partial),
-        Ok(Hunt::Moving) => return super::assure_moving::merge(paths, &texts, out, partial),
+        Ok(Hunt::Intervals) => return merge_reports::<IntervalReport>(paths, &texts, out, partial),
+        Ok(Hunt::Moving) => return merge_reports::<MovingReport>(paths, &texts, out, partial),
         Ok(Hunt::Wayout) => {
             return super::assure_common::merge_hunt::<polyguard_harness::wayout::judge::WayoutClass>(
                 paths, &texts, out, partial,

@@ -158,10 +158,14 @@ pub fn keep_lowest<T, C: PartialEq>(
 }
 
 /// A campaign report with a shape of its own (the interval and moving hunts): what
-/// [`run_shard`] needs of it.
-pub trait ShardReport: Default + Send {
+/// [`run_shard`], [`finish_report`] and [`merge_reports`] need of it.
+pub trait ShardReport: Default + Send + serde::Serialize + Sized {
     /// A kept failing case, as the report lists it.
     type Kept;
+    /// What the report is, for errors ("an interval report").
+    const WHAT: &'static str;
+    /// What the summary says after the count of rejected cases.
+    const REJECTED: &'static str;
     /// Adds another thread's counts.
     fn absorb(&mut self, other: &Self);
     /// Counts a case that the engine or the oracle rejected.
@@ -174,14 +178,27 @@ pub trait ShardReport: Default + Send {
         wall_seconds: f64,
         kept: Vec<Self::Kept>,
     );
+    /// The report read back from its JSON.
+    fn from_json(text: &str) -> Result<Self, String>;
+    /// The shards of one campaign joined (`partial`: some may be missing).
+    fn merge(reports: &[Self], partial: bool) -> Result<Self, String>;
+    /// The summary's text, the counts of failures and of rejected cases.
+    fn counts(&self) -> (String, u64, u64);
+    /// Per kept case: its class, mode and file.
+    fn kept(&self) -> Vec<(&'static str, &str, &str)>;
+    /// A line for standard error when the campaign failed.
+    fn failure_note(&self) -> Option<String>;
 }
 
 /// [`ShardReport`] for a report type with the fields `rejected`, `shards`,
-/// `campaign_cases`, `wall_seconds` and `kept` (of `$kept`), and `absorb`.
+/// `campaign_cases`, `wall_seconds` and `kept` (of `$kept`), and the methods `absorb`,
+/// `from_json`, `merge_campaign`, `summary` and `failures`.
 macro_rules! shard_report {
-    ($report:ty, $kept:ty) => {
+    ($report:ty, $kept:ty, $what:expr, $rejected:expr, $note:expr) => {
         impl ShardReport for $report {
             type Kept = $kept;
+            const WHAT: &'static str = $what;
+            const REJECTED: &'static str = $rejected;
             fn absorb(&mut self, other: &Self) {
                 <$report>::absorb(self, other);
             }
@@ -192,18 +209,134 @@ macro_rules! shard_report {
                 (self.shards, self.campaign_cases) = (vec![shard], cases);
                 (self.wall_seconds, self.kept) = (wall, kept);
             }
+            fn from_json(text: &str) -> Result<Self, String> {
+                <$report>::from_json(text)
+            }
+            fn merge(reports: &[Self], partial: bool) -> Result<Self, String> {
+                <$report>::merge_campaign(reports, partial)
+            }
+            fn counts(&self) -> (String, u64, u64) {
+                (self.summary(), self.failures(), self.rejected)
+            }
+            fn kept(&self) -> Vec<(&'static str, &str, &str)> {
+                let k = self.kept.iter();
+                k.map(|k| (k.class.name(), k.mode.as_str(), k.case_file.as_str()))
+                    .collect()
+            }
+            fn failure_note(&self) -> Option<String> {
+                let note: fn(&Self) -> Option<String> = $note;
+                note(self)
+            }
         }
     };
 }
 
 shard_report!(
     polyguard_harness::intervals::report::IntervalReport,
-    polyguard_harness::intervals::report::KeptInterval
+    polyguard_harness::intervals::report::KeptInterval,
+    "an interval report",
+    "generated cases were rejected by the engine or the oracle",
+    |_| None
 );
 shard_report!(
     polyguard_harness::moving::report::MovingReport,
-    polyguard_harness::moving::report::KeptMoving
+    polyguard_harness::moving::report::KeptMoving,
+    "a moving report",
+    "generated scenarios were rejected by the engine",
+    |r| Some(format!(
+        "polyguard assure: the moving engine ({}) failed the exact truth in {} scenarios",
+        r.engine,
+        r.failures()
+    ))
 );
+
+/// Writes a [`ShardReport`]'s report.json and summary.txt and prints the summary; exit 1
+/// on a failure or a rejected case.
+pub fn finish_report<R: ShardReport>(report: &R, out: &Path) -> ExitCode {
+    if let Err(code) = write_report(report, out) {
+        return code;
+    }
+    let (mut text, failures, rejected) = report.counts();
+    if rejected > 0 {
+        text += &format!("{rejected} {}\n", R::REJECTED);
+    }
+    for (class, mode, file) in report.kept() {
+        text += &format!("kept {class} ({mode}): {file}\n");
+    }
+    text += &format!("report: {}\n", out.join("report.json").display());
+    let _ = fs::write(out.join("summary.txt"), &text);
+    print!("{text}");
+    if failures > 0 || rejected > 0 {
+        if let Some(note) = report.failure_note() {
+            eprintln!("{note}");
+        }
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    }
+}
+
+/// `assure merge` of [`ShardReport`]s: joins the shards and copies their kept cases.
+pub fn merge_reports<R: ShardReport>(
+    paths: &[std::path::PathBuf],
+    texts: &[String],
+    out: &Path,
+    partial: bool,
+) -> ExitCode {
+    let merged = read_reports(paths, texts, R::from_json, R::WHAT).and_then(|reports| {
+        let merged = R::merge(&reports, partial).map_err(merge_failed)?;
+        copy_kept(paths, &reports, out, |r| {
+            r.kept()
+                .into_iter()
+                .map(|(_, _, f)| f.to_string())
+                .collect()
+        })?;
+        Ok(merged)
+    });
+    match merged {
+        Ok(m) => finish_report(&m, out),
+        Err(code) => code,
+    }
+}
+
+/// `assure merge`'s failure: the message on standard error, exit 2.
+fn merge_failed(msg: String) -> ExitCode {
+    eprintln!("polyguard assure merge: {msg}");
+    ExitCode::from(2)
+}
+
+/// The shards' reports read from their texts (`what`: "an interval report").
+fn read_reports<R>(
+    paths: &[std::path::PathBuf],
+    texts: &[String],
+    parse: impl Fn(&str) -> Result<R, String>,
+    what: &str,
+) -> Result<Vec<R>, ExitCode> {
+    let read = |(p, t): (&std::path::PathBuf, &String)| {
+        parse(t).map_err(|e| merge_failed(format!("{} is not {what}: {e}", p.display())))
+    };
+    paths.iter().zip(texts).map(read).collect()
+}
+
+/// Copies into `out` the files (`files`, relative to each report's directory) that the
+/// merged report keeps.
+fn copy_kept<R>(
+    paths: &[std::path::PathBuf],
+    reports: &[R],
+    out: &Path,
+    files: impl Fn(&R) -> Vec<String>,
+) -> Result<(), ExitCode> {
+    fs::create_dir_all(out.join("counterexamples"))
+        .map_err(|e| merge_failed(format!("cannot create {}: {e}", out.display())))?;
+    for (p, r) in paths.iter().zip(reports) {
+        let dir = p.parent().unwrap_or_else(|| Path::new("."));
+        for file in files(r) {
+            fs::copy(dir.join(&file), out.join(&file))
+                .map_err(|e| merge_failed(format!("cannot copy {file}: {e}")))?;
+        }
+    }
+    Ok(())
+}
 
 /// How [`run_shard`] judges and keeps the cases of a campaign.
 pub struct ShardJudge<J, C, W> {
@@ -450,33 +583,19 @@ pub fn merge_hunt<C: HuntClass>(
     out: &Path,
     partial: bool,
 ) -> ExitCode {
-    let fail = |msg: String| {
-        eprintln!("polyguard assure merge: {msg}");
-        ExitCode::from(2)
-    };
-    let mut reports = Vec::with_capacity(texts.len());
-    for (p, t) in paths.iter().zip(texts) {
-        match HuntReport::<C>::from_json(t) {
-            Ok(r) => reports.push(r),
-            Err(e) => return fail(format!("{} is not a report of this hunt: {e}", p.display())),
-        }
+    let what = "a report of this hunt";
+    let merged = read_reports(paths, texts, HuntReport::<C>::from_json, what).and_then(|reports| {
+        let merged = HuntReport::merge_campaign(&reports, partial).map_err(merge_failed)?;
+        copy_kept(paths, &reports, out, |r| {
+            let kept = r.kept.iter().filter(|k| merged.kept.contains(k));
+            kept.map(|k| k.case_file.clone()).collect()
+        })?;
+        Ok(merged)
+    });
+    match merged {
+        Ok(m) => finish_hunt(&m, out),
+        Err(code) => code,
     }
-    let merged = match HuntReport::merge_campaign(&reports, partial) {
-        Ok(m) => m,
-        Err(e) => return fail(e),
-    };
-    if let Err(e) = fs::create_dir_all(out.join("counterexamples")) {
-        return fail(format!("cannot create {}: {e}", out.display()));
-    }
-    for (p, r) in paths.iter().zip(&reports) {
-        let dir = p.parent().unwrap_or_else(|| Path::new("."));
-        for k in r.kept.iter().filter(|k| merged.kept.contains(k)) {
-            if let Err(e) = fs::copy(dir.join(&k.case_file), out.join(&k.case_file)) {
-                return fail(format!("cannot copy {}: {e}", k.case_file));
-            }
-        }
-    }
-    finish_hunt(&merged, out)
 }
 
 #[cfg(test)]

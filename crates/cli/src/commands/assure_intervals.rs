@@ -11,7 +11,7 @@ use polyguard_harness::intervals::gen::{interval_case, IntervalCase};
 use polyguard_harness::intervals::judge::{judge, IntervalEngine, IntervalVerdict};
 use polyguard_harness::intervals::report::{IntervalReport, KeptInterval};
 
-use super::assure_common::{run_shard, write_report, HuntRun, ShardJudge};
+use super::assure_common::{finish_report, run_shard, HuntRun, ShardJudge};
 
 /// How many cases of each failing class a run keeps.
 pub const KEEP_PER_CLASS: usize = 5;
@@ -58,7 +58,7 @@ pub fn run(c: &IntervalCampaign, out: &Path) -> ExitCode {
         KEEP_PER_CLASS,
         how,
     );
-    finish(&report, out)
+    finish_report(&report, out)
 }
 
 /// The spans of a verdict as JSON (the meta of a kept case).
@@ -114,65 +114,4 @@ fn write_kept(
         mode: ic.mode.into(),
         case_file,
     })
-}
-
-/// Writes report.json and summary.txt and prints the summary; exit 1 on a failure.
-pub fn finish(report: &IntervalReport, out: &Path) -> ExitCode {
-    if let Err(code) = write_report(report, out) {
-        return code;
-    }
-    let mut text = report.summary();
-    if report.rejected > 0 {
-        text += &format!(
-            "{} generated cases were rejected by the engine or the oracle\n",
-            report.rejected
-        );
-    }
-    for k in &report.kept {
-        text += &format!("kept {} ({}): {}\n", k.class.name(), k.mode, k.case_file);
-    }
-    text += &format!("report: {}\n", out.join("report.json").display());
-    let _ = fs::write(out.join("summary.txt"), &text);
-    print!("{text}");
-    if report.failures() > 0 || report.rejected > 0 {
-        ExitCode::from(1)
-    } else {
-        ExitCode::SUCCESS
-    }
-}
-
-/// `assure merge` of interval reports: joins the shards and copies their kept cases.
-pub fn merge(
-    paths: &[std::path::PathBuf],
-    texts: &[String],
-    out: &Path,
-    partial: bool,
-) -> ExitCode {
-    let fail = |msg: String| {
-        eprintln!("polyguard assure merge: {msg}");
-        ExitCode::from(2)
-    };
-    let mut reports = Vec::with_capacity(texts.len());
-    for (p, t) in paths.iter().zip(texts) {
-        match IntervalReport::from_json(t) {
-            Ok(r) => reports.push(r),
-            Err(e) => return fail(format!("{} is not an interval report: {e}", p.display())),
-        }
-    }
-    let merged = match IntervalReport::merge_campaign(&reports, partial) {
-        Ok(m) => m,
-        Err(e) => return fail(e),
-    };
-    if let Err(e) = fs::create_dir_all(out.join("counterexamples")) {
-        return fail(format!("cannot create {}: {e}", out.display()));
-    }
-    for (p, r) in paths.iter().zip(&reports) {
-        let dir = p.parent().unwrap_or_else(|| Path::new("."));
-        for k in &r.kept {
-            if let Err(e) = fs::copy(dir.join(&k.case_file), out.join(&k.case_file)) {
-                return fail(format!("cannot copy {}: {e}", k.case_file));
-            }
-        }
-    }
-    finish(&merged, out)
 }
